@@ -1,0 +1,22 @@
+// The reference solver: every one of the 2^m first order triangulations,
+// measured directly on the triangulation (not through any solver's model).
+#pragma once
+#include <functional>
+#include <vector>
+
+#include "hodt/solution.hpp"
+
+namespace hodt {
+
+constexpr uint32_t kBruteForceMaxQuads = 24;
+
+// Optimum over all 2^m choices (Gray code order: one flip per step). Among optimal
+// choices it returns one with the fewest flips, the first in Gray code order.
+// Throws LimitError if m > kBruteForceMaxQuads.
+Solution brute_force(const FirstOrder& fo, Objective objective);
+
+// The value of every objective for every choice (index = choice bits, quad 0 the
+// lowest bit): the teaching view's "all 2^m triangulations".
+std::vector<std::array<double, kNumObjectives>> enumerate_all(const FirstOrder& fo);
+
+}  // namespace hodt

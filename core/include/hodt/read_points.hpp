@@ -1,0 +1,22 @@
+// Reading point files: CSV / TSV / whitespace "x y z" (optional header), JSON
+// [[x, y, z], ...] and ESRI ASCII grids (.asc, NODATA cells skipped).
+#pragma once
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hodt {
+
+enum class PointFormat { Auto, Text, Json, AsciiGrid };
+
+struct ParsedPoints {
+  std::vector<double> xyz;  // x, y, z per point
+  std::vector<int> lines;   // 1-based source line of each point, for messages
+};
+
+// Throws InputError "<name>: line L: <what is wrong>". Auto picks the format from
+// the content: '[' starts JSON, an "ncols" header an ASCII grid, anything else text.
+ParsedPoints read_points(std::string_view text, const std::string& name,
+                         PointFormat format = PointFormat::Auto);
+
+}  // namespace hodt

@@ -1,0 +1,16 @@
+// JSON documents of the CLI contract.
+#pragma once
+#include <string>
+
+#include "hodt/solution.hpp"
+#include "hodt/terrain.hpp"
+
+namespace hodt {
+
+// {"points", "triangles", "edges", "flippable", "hullVertices", "delaunay": {id: value}}
+std::string stats_json(const Terrain& terrain);
+// {"objective", "sense", "method", "value", "delaunayValue", "optimal", "bound",
+//  "flipped", "timeMs"[, "triangles"]}
+std::string solution_json(const Terrain& terrain, const Solution& s, bool with_triangles);
+
+}  // namespace hodt

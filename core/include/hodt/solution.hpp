@@ -1,0 +1,22 @@
+// What every solver returns.
+#pragma once
+#include <optional>
+#include <string>
+
+#include "hodt/first_order.hpp"
+#include "hodt/objectives.hpp"
+
+namespace hodt {
+
+struct Solution {
+  Objective objective;
+  std::string method;            // the method that ran: "brute-force", "exact", ...
+  Choice choice;                 // one byte per quad
+  double value = 0;              // objective value of the returned triangulation
+  double delaunay_value = 0;     // value of the base (Delaunay) triangulation
+  bool optimal = false;          // value is proven optimal
+  std::optional<double> bound;   // proven bound on the optimum, when not optimal
+  double time_ms = 0;
+};
+
+}  // namespace hodt

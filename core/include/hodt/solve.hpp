@@ -1,0 +1,25 @@
+// One entry point for every objective and method.
+#pragma once
+#include <string>
+
+#include "hodt/solution.hpp"
+
+namespace hodt {
+
+enum class Method : uint8_t { BruteForce, Exact, Approx, Auto };
+
+struct SolveOptions {
+  Method method = Method::Auto;
+  double epsilon = 0.25;  // approximation schemes: value within (1 - epsilon) of optimal
+};
+
+const char* method_id(Method m);
+std::optional<Method> parse_method(std::string_view id);
+std::string method_ids();  // "brute-force, exact, approx, auto"
+
+// Solves objective over the first order triangulations of fo. Throws LimitError
+// when the method cannot handle the instance (with the reason) and InputError for
+// bad options. The delaunay_value of the result is filled in.
+Solution solve(const FirstOrder& fo, Objective objective, const SolveOptions& options);
+
+}  // namespace hodt

@@ -1,0 +1,44 @@
+// A terrain and its first order structure: the object every front end (native
+// CLI, wasm bindings) holds. Indices inside are those of the kept points; the
+// *_input functions translate to the caller's input indices.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hodt/first_order.hpp"
+#include "hodt/objectives.hpp"
+#include "hodt/points.hpp"
+#include "hodt/solution.hpp"
+
+namespace hodt {
+
+class Terrain {
+ public:
+  // Validates the points (throws InputError) and builds Delaunay + first order structure.
+  static Terrain from_points(const std::vector<double>& xyz, Dedupe dedupe = Dedupe::Error,
+                             const PointLabels& labels = {});
+  // A singly-flippable triangulation given by the user (see first_order.hpp).
+  static Terrain from_triangulation(const std::vector<double>& xyz, const std::vector<uint32_t>& triangles,
+                                    const std::vector<uint32_t>& flippable_edges);
+
+  const FirstOrder& structure() const { return fo_; }
+  uint32_t num_input_points() const { return num_input_; }
+  uint32_t to_input(uint32_t v) const { return input_index_.empty() ? v : input_index_[v]; }
+  std::vector<uint32_t> to_input(std::vector<uint32_t> indices) const;
+  const std::vector<uint32_t>& input_index() const { return input_index_; }
+
+  // Checks a choice from outside (length m, bytes 0/1); throws InputError.
+  void check_choice(const Choice& choice) const;
+  const std::array<double, kNumObjectives>& delaunay_values() const;
+
+ private:
+  FirstOrder fo_;
+  std::vector<uint32_t> input_index_;  // empty: identity
+  uint32_t num_input_ = 0;
+  mutable std::array<double, kNumObjectives> delaunay_values_{};
+  mutable bool have_delaunay_values_ = false;
+};
+
+}  // namespace hodt

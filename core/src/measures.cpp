@@ -1,0 +1,174 @@
+#include "hodt/measures.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "hodt/kernel.hpp"
+#include "hodt/predicates.hpp"
+
+namespace hodt {
+
+EdgeShape edge_shape(const double* u, const double* v, const double* w, const double* x) {
+  const int o = orient3d(u, v, w, x);
+  return o < 0 ? kConvexEdge : o > 0 ? kReflexEdge : kFlatEdge;
+}
+
+VertexClass vertex_class(const double* p, const double* const* nb, uint32_t d) {
+  // orient2d(p, nb[i], nb[j]) for all pairs, reused by every triple below.
+  std::vector<int8_t> o(size_t(d) * d);
+  for (uint32_t i = 0; i < d; ++i)
+    for (uint32_t j = i + 1; j < d; ++j) {
+      const int s = orient2d(p, nb[i], nb[j]);
+      o[i * d + j] = static_cast<int8_t>(s);
+      o[j * d + i] = static_cast<int8_t>(-s);
+    }
+  // Flat: all neighbours on one plane through p.
+  uint32_t fi = d, fj = d;
+  for (uint32_t i = 0; i < d && fi == d; ++i)
+    for (uint32_t j = i + 1; j < d; ++j)
+      if (o[i * d + j] != 0) { fi = i, fj = j; break; }
+  if (fi == d) return kFlat;  // cannot happen for an interior vertex
+  bool flat = true;
+  for (uint32_t k = 0; k < d && flat; ++k) flat = orient3d(p, nb[fi], nb[fj], nb[k]) == 0;
+  if (flat) return kFlat;
+  // p is strictly below (above) the upper (lower) hull of its neighbours iff some
+  // triangle of neighbours contains p in the plane and has p strictly below (above) it.
+  bool below = false, above = false;
+  for (uint32_t i = 0; i < d && !(below && above); ++i)
+    for (uint32_t j = i + 1; j < d && !(below && above); ++j)
+      for (uint32_t k = j + 1; k < d; ++k) {
+        const int s = orient2d(nb[i], nb[j], nb[k]);
+        if (s == 0) continue;
+        // p in the closed triangle i, j, k: orient(i, j, p) = orient(p, i, j) etc.
+        if (o[i * d + j] * s < 0 || o[j * d + k] * s < 0 || o[k * d + i] * s < 0) continue;
+        const int h = orient3d(nb[i], nb[j], nb[k], p) * s;  // > 0: p above the plane
+        if (h < 0) below = true;
+        if (h > 0) above = true;
+        if (below && above) break;
+      }
+  if (below && above) return kMixed;
+  return below ? kConcave : kConvex;
+}
+
+Extremum extremum(const double* p, const double* const* nb, uint32_t d) {
+  bool all_higher = true, all_lower = true;
+  for (uint32_t i = 0; i < d; ++i) {
+    all_higher = all_higher && nb[i][2] > p[2];
+    all_lower = all_lower && nb[i][2] < p[2];
+  }
+  return all_higher ? kLocalMinimum : all_lower ? kLocalMaximum : kNotExtremum;
+}
+
+double triangle_area(const double* a, const double* b, const double* c) {
+  return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+}
+
+double area_ratio(double a1, double a2) { return a1 > a2 ? a1 / a2 : a2 / a1; }
+
+namespace {
+void normal(const double* const t[3], double n[3]) {
+  const double u[3] = {t[1][0] - t[0][0], t[1][1] - t[0][1], t[1][2] - t[0][2]};
+  const double v[3] = {t[2][0] - t[0][0], t[2][1] - t[0][1], t[2][2] - t[0][2]};
+  n[0] = u[1] * v[2] - u[2] * v[1];
+  n[1] = u[2] * v[0] - u[0] * v[2];
+  n[2] = u[0] * v[1] - u[1] * v[0];
+}
+}  // namespace
+
+double normal_angle(const double* const t1[3], const double* const t2[3]) {
+  double n[3], m[3];
+  normal(t1, n);
+  normal(t2, m);
+  const double cx = n[1] * m[2] - n[2] * m[1], cy = n[2] * m[0] - n[0] * m[2],
+               cz = n[0] * m[1] - n[1] * m[0];
+  const double dot = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
+  return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), dot);
+}
+
+double edge_length(const double* a, const double* b) {
+  return std::hypot(b[0] - a[0], b[1] - a[1]);
+}
+
+double enclosing_circle(const double* a, const double* b, const double* c, const double* d) {
+  const Point2 p[4] = {Point2(a[0], a[1]), Point2(b[0], b[1]), Point2(c[0], c[1]), Point2(d[0], d[1])};
+  // The smallest enclosing circle has two or three of the points on its boundary:
+  // the smallest candidate that contains all four (decided exactly) is the answer.
+  double best = INFINITY;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      bool ok = true;
+      for (int k = 0; k < 4 && ok; ++k)
+        if (k != i && k != j) ok = CGAL::side_of_bounded_circle(p[i], p[j], p[k]) != CGAL::ON_UNBOUNDED_SIDE;
+      if (ok) best = std::min(best, 0.5 * std::sqrt(CGAL::squared_distance(p[i], p[j])));
+    }
+  for (int skip = 0; skip < 4; ++skip) {
+    int t[3], n = 0;
+    for (int k = 0; k < 4; ++k)
+      if (k != skip) t[n++] = k;
+    if (CGAL::orientation(p[t[0]], p[t[1]], p[t[2]]) == CGAL::COLLINEAR) continue;
+    if (CGAL::side_of_bounded_circle(p[t[0]], p[t[1]], p[t[2]], p[skip]) == CGAL::ON_UNBOUNDED_SIDE) continue;
+    best = std::min(best, std::sqrt(CGAL::squared_radius(p[t[0]], p[t[1]], p[t[2]])));
+  }
+  return best;
+}
+
+Stars build_stars(const Mesh& m) {
+  const uint32_t n = m.num_vertices();
+  const std::vector<int32_t> start = vertex_halfedges(m);
+  Stars s;
+  s.offset.assign(n + 1, 0);
+  s.tri_offset.assign(n + 1, 0);
+  s.on_hull.assign(n, 0);
+  s.neighbor.reserve(m.triangles.size() + m.hull.size());
+  s.triangle.reserve(m.triangles.size());
+  for (uint32_t v = 0; v < n; ++v) {
+    s.offset[v] = static_cast<uint32_t>(s.neighbor.size());
+    s.tri_offset[v] = static_cast<uint32_t>(s.triangle.size());
+    if (start[v] < 0) continue;
+    uint32_t e = static_cast<uint32_t>(start[v]);
+    s.on_hull[v] = m.halfedges[e] < 0;
+    for (;;) {
+      s.neighbor.push_back(m.target(e));
+      s.triangle.push_back(e / 3);
+      const int32_t t = m.halfedges[prev_halfedge(e)];
+      if (t < 0) {
+        s.neighbor.push_back(m.apex(e));
+        break;
+      }
+      e = static_cast<uint32_t>(t);
+      if (e == static_cast<uint32_t>(start[v])) break;
+    }
+  }
+  s.offset[n] = static_cast<uint32_t>(s.neighbor.size());
+  s.tri_offset[n] = static_cast<uint32_t>(s.triangle.size());
+  return s;
+}
+
+Measures measure(const Mesh& m) {
+  Measures r;
+  const uint32_t n = m.num_vertices();
+  r.edge_shape.assign(m.triangles.size(), kHullEdge);
+  for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
+    const int32_t f = m.halfedges[e];
+    if (f < 0) continue;
+    r.edge_shape[e] = edge_shape(m.point(m.origin(e)), m.point(m.target(e)), m.point(m.apex(e)),
+                                 m.point(m.apex(static_cast<uint32_t>(f))));
+  }
+  const Stars s = build_stars(m);
+  r.vertex_class.assign(n, kBoundary);
+  r.extremum.assign(n, kNotExtremum);
+  r.degree.assign(n, 0);
+  std::vector<const double*> nb;
+  for (uint32_t v = 0; v < n; ++v) {
+    const uint32_t d = s.degree(v);
+    r.degree[v] = d;
+    if (s.on_hull[v]) continue;
+    nb.resize(d);
+    for (uint32_t k = 0; k < d; ++k) nb[k] = m.point(s.neighbor[s.offset[v] + k]);
+    r.vertex_class[v] = vertex_class(m.point(v), nb.data(), d);
+    r.extremum[v] = extremum(m.point(v), nb.data(), d);
+  }
+  return r;
+}
+
+}  // namespace hodt

@@ -1,0 +1,148 @@
+#include "hodt/mesh.hpp"
+
+#include <algorithm>
+
+#include "hodt/predicates.hpp"
+
+namespace hodt {
+namespace {
+void link(Mesh& m, uint32_t x, int32_t y) {
+  m.halfedges[x] = y;
+  if (y >= 0) m.halfedges[static_cast<uint32_t>(y)] = static_cast<int32_t>(x);
+}
+}  // namespace
+
+// Triangle (A, B, C) holds a: A -> B; triangle (B, A, D) holds b: B -> A. The quad
+// is A, D, B, C counterclockwise; the new triangles are (D, C, A) and (C, D, B) with
+// the new diagonal D -> C in a's slot and C -> D in b's slot.
+void flip_edge(Mesh& m, uint32_t a) {
+  const uint32_t b = static_cast<uint32_t>(m.halfedges[a]);
+  const uint32_t an = next_halfedge(a), ap = prev_halfedge(a);
+  const uint32_t bn = next_halfedge(b), bp = prev_halfedge(b);
+  const uint32_t A = m.triangles[a], B = m.triangles[an], C = m.triangles[ap], D = m.triangles[bp];
+  const int32_t h_an = m.halfedges[an], h_ap = m.halfedges[ap];
+  const int32_t h_bn = m.halfedges[bn], h_bp = m.halfedges[bp];
+  m.triangles[a] = D, m.triangles[an] = C, m.triangles[ap] = A;
+  m.triangles[b] = C, m.triangles[bn] = D, m.triangles[bp] = B;
+  link(m, a, static_cast<int32_t>(b));
+  link(m, an, h_ap);  // C -> A
+  link(m, ap, h_bn);  // A -> D
+  link(m, bn, h_bp);  // D -> B
+  link(m, bp, h_an);  // B -> C
+}
+
+std::string link_halfedges(Mesh& m) {
+  const uint32_t nv = m.num_vertices();
+  const size_t ne = m.triangles.size();
+  m.halfedges.assign(ne, -1);
+  // Bucket halfedges by origin (counting sort), then find each twin among the
+  // halfedges leaving its target: O(sum of degrees squared) = O(n) for bounded stars.
+  std::vector<uint32_t> start(nv + 1, 0), out(ne);
+  for (size_t e = 0; e < ne; ++e) ++start[m.triangles[e] + 1];
+  for (uint32_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+  for (size_t e = 0; e < ne; ++e) out[fill[m.triangles[e]]++] = static_cast<uint32_t>(e);
+  for (size_t e = 0; e < ne; ++e) {
+    const uint32_t u = m.triangles[e], v = m.triangles[next_halfedge(static_cast<uint32_t>(e))];
+    for (uint32_t k = start[v]; k < start[v + 1]; ++k) {
+      const uint32_t f = out[k];
+      if (m.triangles[next_halfedge(f)] != u) continue;
+      if (f < e) continue;  // linked when f was visited
+      if (m.halfedges[e] >= 0 || m.halfedges[f] >= 0)
+        return "edge " + std::to_string(u) + "-" + std::to_string(v) + " is shared by more than two triangles";
+      m.halfedges[e] = static_cast<int32_t>(f);
+      m.halfedges[f] = static_cast<int32_t>(e);
+    }
+    for (uint32_t k = start[u]; k < start[u + 1]; ++k) {
+      const uint32_t f = out[k];
+      if (f != e && m.triangles[next_halfedge(f)] == v)
+        return "two triangles use edge " + std::to_string(u) + "->" + std::to_string(v) +
+               " in the same direction (triangles " + std::to_string(e / 3) + " and " +
+               std::to_string(f / 3) + ": overlapping or inconsistently oriented)";
+    }
+  }
+  // Hull: the twinless halfedges form the boundary; follow them from the smallest vertex.
+  m.hull.clear();
+  std::vector<int32_t> hull_next(nv, -1);
+  uint32_t first = nv;
+  size_t count = 0;
+  for (size_t e = 0; e < ne; ++e) {
+    if (m.halfedges[e] >= 0) continue;
+    const uint32_t u = m.triangles[e];
+    if (hull_next[u] >= 0) return "vertex " + std::to_string(u) + " is on the boundary twice";
+    hull_next[u] = static_cast<int32_t>(m.triangles[next_halfedge(static_cast<uint32_t>(e))]);
+    first = std::min(first, u);
+    ++count;
+  }
+  if (count == 0) return "the triangulation has no boundary";
+  uint32_t v = first;
+  do {
+    m.hull.push_back(v);
+    v = static_cast<uint32_t>(hull_next[v]);
+  } while (v != first && m.hull.size() <= count);
+  if (m.hull.size() != count) return "the boundary is not a single cycle";
+  return {};
+}
+
+void canonicalize(Mesh& m) {
+  const uint32_t nt = m.num_triangles(), nv = m.num_vertices();
+  for (uint32_t t = 0; t < nt; ++t) {
+    uint32_t* v = &m.triangles[3 * t];
+    while (v[0] > v[1] || v[0] > v[2]) std::rotate(v, v + 1, v + 3);
+  }
+  // Counting sort by first vertex, then by second within each bucket.
+  std::vector<uint32_t> start(nv + 1, 0);
+  for (uint32_t t = 0; t < nt; ++t) ++start[m.triangles[3 * t] + 1];
+  for (uint32_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<uint32_t> order(nt), fill(start.begin(), start.end() - 1);
+  for (uint32_t t = 0; t < nt; ++t) order[fill[m.triangles[3 * t]]++] = t;
+  for (uint32_t v = 0; v < nv; ++v)
+    std::sort(order.begin() + start[v], order.begin() + start[v + 1],
+              [&](uint32_t s, uint32_t t) { return m.triangles[3 * s + 1] < m.triangles[3 * t + 1]; });
+  std::vector<uint32_t> sorted(m.triangles.size());
+  for (uint32_t k = 0; k < nt; ++k)
+    std::copy_n(&m.triangles[3 * order[k]], 3, &sorted[3 * k]);
+  m.triangles.swap(sorted);
+  link_halfedges(m);
+}
+
+std::vector<int32_t> vertex_halfedges(const Mesh& m) {
+  std::vector<int32_t> out(m.num_vertices(), -1);
+  for (uint32_t e = 0; e < m.triangles.size(); ++e) {
+    const uint32_t v = m.triangles[e];
+    if (out[v] < 0 || m.halfedges[e] < 0) out[v] = static_cast<int32_t>(e);
+  }
+  return out;
+}
+
+std::string validate(const Mesh& m) {
+  const uint32_t nv = m.num_vertices();
+  if (m.triangles.size() % 3 != 0) return "triangle array length is not a multiple of 3";
+  if (m.halfedges.size() != m.triangles.size()) return "halfedges and triangles differ in length";
+  for (uint32_t e = 0; e < m.triangles.size(); ++e)
+    if (m.triangles[e] >= nv) return "triangle " + std::to_string(e / 3) + " has a vertex out of range";
+  for (uint32_t t = 0; t < m.num_triangles(); ++t) {
+    const uint32_t* v = &m.triangles[3 * t];
+    if (orient2d(m.point(v[0]), m.point(v[1]), m.point(v[2])) <= 0)
+      return "triangle " + std::to_string(t) + " is not counterclockwise";
+  }
+  size_t boundary = 0;
+  for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
+    const int32_t f = m.halfedges[e];
+    if (f < 0) { ++boundary; continue; }
+    if (static_cast<size_t>(f) >= m.halfedges.size() || m.halfedges[f] != static_cast<int32_t>(e))
+      return "halfedge " + std::to_string(e) + " and its twin do not point at each other";
+    if (m.origin(e) != m.target(f) || m.target(e) != m.origin(f))
+      return "halfedge " + std::to_string(e) + " and its twin do not join the same vertices";
+  }
+  if (m.hull.size() != boundary) return "hull length differs from the number of boundary halfedges";
+  for (size_t k = 0; k < m.hull.size(); ++k) {
+    const double* a = m.point(m.hull[k]);
+    const double* b = m.point(m.hull[(k + 1) % m.hull.size()]);
+    const double* c = m.point(m.hull[(k + 2) % m.hull.size()]);
+    if (orient2d(a, b, c) < 0) return "hull is not convex and counterclockwise";
+  }
+  return {};
+}
+
+}  // namespace hodt

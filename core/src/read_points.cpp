@@ -1,0 +1,322 @@
+#include "hodt/read_points.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+
+#include "hodt/error.hpp"
+
+namespace hodt {
+namespace {
+
+struct Reader {
+  const std::string& name;
+  [[noreturn]] void fail(int line, const std::string& what) const {
+    throw InputError(name + ": line " + std::to_string(line) + ": " + what);
+  }
+};
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+std::string shorten(std::string_view s) {
+  std::string t(s.substr(0, 40));
+  if (s.size() > 40) t += "...";
+  return "'" + t + "'";
+}
+
+// Parses the whole token as a finite double; false if it is not a number.
+bool parse_double(std::string_view tok, double& out) {
+  if (tok.empty() || tok.size() > 64) return false;
+  char buf[72];
+  std::copy(tok.begin(), tok.end(), buf);
+  buf[tok.size()] = 0;
+  char* end = nullptr;
+  out = std::strtod(buf, &end);
+  return end == buf + tok.size();
+}
+
+std::vector<std::string_view> split_fields(std::string_view line) {
+  std::vector<std::string_view> out;
+  size_t i = 0;
+  const auto sep = [](char c) { return c == ',' || c == ';' || c == '\t' || c == ' ' || c == '\r'; };
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    if (i >= line.size()) break;
+    size_t j = i;
+    while (j < line.size() && !sep(line[j])) ++j;
+    std::string_view f = line.substr(i, j - i);
+    if (f.size() >= 2 && (f.front() == '"' || f.front() == '\'') && f.back() == f.front())
+      f = f.substr(1, f.size() - 2);
+    out.push_back(f);
+    i = j;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    if (i < line.size() && (line[i] == ',' || line[i] == ';')) {
+      ++i;
+      // an empty field between two separators
+      size_t k = i;
+      while (k < line.size() && (line[k] == ' ' || line[k] == '\t' || line[k] == '\r')) ++k;
+      if (k >= line.size() || line[k] == ',' || line[k] == ';') out.push_back(std::string_view());
+    }
+  }
+  return out;
+}
+
+template <class F>
+void for_each_line(std::string_view text, F f) {
+  int line = 0;
+  size_t i = 0;
+  while (i <= text.size()) {
+    size_t j = text.find('\n', i);
+    if (j == std::string_view::npos) j = text.size();
+    ++line;
+    std::string_view s = text.substr(i, j - i);
+    if (!s.empty() && s.back() == '\r') s.remove_suffix(1);
+    f(line, s);
+    if (j == text.size()) break;
+    i = j + 1;
+  }
+}
+
+bool blank_or_comment(std::string_view s) {
+  size_t k = s.find_first_not_of(" \t\r");
+  return k == std::string_view::npos || s[k] == '#';
+}
+
+void check_finite(const Reader& r, int line, const char* axis, double v, std::string_view tok) {
+  if (!std::isfinite(v))
+    r.fail(line, std::string(axis) + " is " + shorten(tok) + ", expected a finite number");
+}
+
+ParsedPoints read_text(std::string_view text, const Reader& r) {
+  ParsedPoints out;
+  int cols[3] = {0, 1, 2};
+  bool header_seen = false, data_seen = false;
+  size_t want = 3;
+  for_each_line(text, [&](int line, std::string_view s) {
+    if (blank_or_comment(s)) return;
+    const auto fields = split_fields(s);
+    double v0;
+    if (!data_seen && !header_seen && !fields.empty() && !parse_double(fields[0], v0)) {
+      // A header: use columns named x, y and z (or elevation/height) if present.
+      header_seen = true;
+      std::map<std::string, int> at;
+      for (size_t k = 0; k < fields.size(); ++k) at.emplace(lower(fields[k]), static_cast<int>(k));
+      const char* names[3][5] = {{"x", "lon", "longitude", "easting", "east"},
+                                 {"y", "lat", "latitude", "northing", "north"},
+                                 {"z", "elevation", "height", "elev", "h"}};
+      bool named = true;
+      int found[3];
+      for (int a = 0; a < 3 && named; ++a) {
+        found[a] = -1;
+        for (const char* nm : names[a])
+          if (at.count(nm)) { found[a] = at[nm]; break; }
+        named = found[a] >= 0;
+      }
+      if (named) {
+        std::copy(found, found + 3, cols);
+        want = static_cast<size_t>(*std::max_element(found, found + 3)) + 1;
+      }
+      return;
+    }
+    data_seen = true;
+    if (fields.size() < want)
+      r.fail(line, "expected 3 numbers x y z, got " + std::to_string(fields.size()) +
+                       " field" + (fields.size() == 1 ? "" : "s") + " " + shorten(s));
+    static const char* axis[3] = {"x", "y", "z"};
+    for (int a = 0; a < 3; ++a) {
+      double v;
+      const std::string_view tok = fields[cols[a]];
+      if (!parse_double(tok, v)) r.fail(line, std::string(axis[a]) + " is " + shorten(tok) + ", not a number");
+      check_finite(r, line, axis[a], v, tok);
+      out.xyz.push_back(v);
+    }
+    out.lines.push_back(line);
+  });
+  return out;
+}
+
+// A small JSON reader for [[x, y, z], ...] and [{"x":..,"y":..,"z":..}, ...].
+struct JsonReader {
+  std::string_view s;
+  const Reader& r;
+  size_t i = 0;
+  int line = 1;
+  void ws() {
+    while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) {
+      if (s[i] == '\n') ++line;
+      ++i;
+    }
+  }
+  [[noreturn]] void fail(const std::string& what) { r.fail(line, what); }
+  char peek() { ws(); return i < s.size() ? s[i] : '\0'; }
+  void expect(char c, const char* what) {
+    if (peek() != c) fail(std::string("expected ") + what + ", found " + near());
+    ++i;
+  }
+  std::string near() {
+    if (i >= s.size()) return "end of file";
+    return shorten(s.substr(i, std::min<size_t>(20, s.size() - i)));
+  }
+  double number(const char* axis) {
+    ws();
+    size_t j = i;
+    while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '-' ||
+                            s[j] == '+' || s[j] == '.'))
+      ++j;
+    double v;
+    const std::string_view tok = s.substr(i, j - i);
+    if (!parse_double(tok, v) || tok.empty())
+      fail(std::string(axis) + " is " + (tok.empty() ? near() : shorten(tok)) + ", not a number");
+    check_finite(r, line, axis, v, tok);
+    i = j;
+    return v;
+  }
+  std::string key() {
+    expect('"', "a quoted key");
+    size_t j = s.find('"', i);
+    if (j == std::string_view::npos) fail("unterminated string");
+    std::string k(s.substr(i, j - i));
+    i = j + 1;
+    return lower(k);
+  }
+};
+
+ParsedPoints read_json(std::string_view text, const Reader& r) {
+  ParsedPoints out;
+  JsonReader j{text, r};
+  j.expect('[', "'[' starting the list of points");
+  static const char* axis[3] = {"x", "y", "z"};
+  if (j.peek() == ']') { ++j.i; }
+  else for (;;) {
+    j.peek();  // skip to the point so that its line is the one recorded
+    const int line = j.line;
+    const size_t index = out.lines.size();
+    const std::string where = "point " + std::to_string(index) + ": ";
+    if (j.peek() == '[') {
+      ++j.i;
+      for (int a = 0; a < 3; ++a) {
+        if (a) {
+          if (j.peek() != ',') j.fail(where + "expected [x, y, z] with 3 numbers, found " + j.near());
+          ++j.i;
+        }
+        out.xyz.push_back(j.number(axis[a]));
+      }
+      if (j.peek() != ']') j.fail(where + "expected [x, y, z] with 3 numbers, found " + j.near());
+      ++j.i;
+    } else if (j.peek() == '{') {
+      ++j.i;
+      double v[3];
+      bool have[3] = {false, false, false};
+      if (j.peek() != '}') for (;;) {
+        const std::string k = j.key();
+        j.expect(':', "':'");
+        const int a = k == "x" ? 0 : k == "y" ? 1 : k == "z" ? 2 : -1;
+        if (a < 0) j.fail(where + "unexpected key \"" + k + "\", expected x, y, z");
+        v[a] = j.number(axis[a]);
+        have[a] = true;
+        if (j.peek() == ',') { ++j.i; continue; }
+        break;
+      }
+      j.expect('}', "'}'");
+      for (int a = 0; a < 3; ++a)
+        if (!have[a]) j.fail(where + "missing " + axis[a]);
+      out.xyz.insert(out.xyz.end(), v, v + 3);
+    } else {
+      j.fail(where + "expected [x, y, z], found " + j.near());
+    }
+    out.lines.push_back(line);
+    if (j.peek() == ',') { ++j.i; continue; }
+    j.expect(']', "',' or ']'");
+    break;
+  }
+  if (j.peek() != '\0') j.fail("unexpected text after the list of points: " + j.near());
+  return out;
+}
+
+ParsedPoints read_ascii_grid(std::string_view text, const Reader& r) {
+  std::map<std::string, double> header;
+  std::map<std::string, std::string> raw;
+  ParsedPoints out;
+  long ncols = -1, nrows = -1;
+  double x0 = 0, y0 = 0, cell = 0, nodata = std::nan("");
+  bool has_nodata = false;
+  long row = 0;
+  int last_line = 0;
+  for_each_line(text, [&](int line, std::string_view s) {
+    if (blank_or_comment(s)) return;
+    last_line = line;
+    const auto fields = split_fields(s);
+    double v;
+    if (row == 0 && out.lines.empty() && !parse_double(fields[0], v)) {
+      if (fields.size() != 2) r.fail(line, "expected 'key value' in the grid header, got " + shorten(s));
+      const std::string k = lower(fields[0]);
+      if (!parse_double(fields[1], v) || !std::isfinite(v))
+        r.fail(line, k + " is " + shorten(fields[1]) + ", not a number");
+      header[k] = v;
+      return;
+    }
+    if (ncols < 0) {
+      for (const char* k : {"ncols", "nrows", "cellsize"})
+        if (!header.count(k)) r.fail(line, std::string("grid header is missing ") + k);
+      if (!(header.count("xllcorner") || header.count("xllcenter")) ||
+          !(header.count("yllcorner") || header.count("yllcenter")))
+        r.fail(line, "grid header needs xllcorner/xllcenter and yllcorner/yllcenter");
+      const double nc = header["ncols"], nr = header["nrows"];
+      if (nc < 1 || nr < 1 || nc != std::floor(nc) || nr != std::floor(nr) || nc * nr > 5e7)
+        r.fail(line, "ncols and nrows must be positive integers (at most 5e7 cells)");
+      ncols = static_cast<long>(nc);
+      nrows = static_cast<long>(nr);
+      cell = header["cellsize"];
+      if (!(cell > 0)) r.fail(line, "cellsize must be positive");
+      const bool corner = header.count("xllcorner") > 0;
+      x0 = (corner ? header["xllcorner"] : header["xllcenter"]) + (corner ? cell / 2 : 0);
+      y0 = (header.count("yllcorner") ? header["yllcorner"] + cell / 2 : header["yllcenter"]);
+      if (header.count("nodata_value")) { nodata = header["nodata_value"]; has_nodata = true; }
+    }
+    if (row >= nrows) r.fail(line, "more than nrows = " + std::to_string(nrows) + " rows of values");
+    if (static_cast<long>(fields.size()) != ncols)
+      r.fail(line, "expected ncols = " + std::to_string(ncols) + " values, got " +
+                       std::to_string(fields.size()));
+    for (long c = 0; c < ncols; ++c) {
+      if (!parse_double(fields[c], v))
+        r.fail(line, "value " + std::to_string(c + 1) + " is " + shorten(fields[c]) + ", not a number");
+      if (has_nodata && v == nodata) continue;
+      check_finite(r, line, "z", v, fields[c]);
+      out.xyz.push_back(x0 + c * cell);
+      out.xyz.push_back(y0 + (nrows - 1 - row) * cell);  // the first row is the northernmost
+      out.xyz.push_back(v);
+      out.lines.push_back(line);
+    }
+    ++row;
+  });
+  if (ncols < 0) r.fail(last_line, "grid has a header but no values");
+  if (row != nrows)
+    r.fail(last_line, "expected nrows = " + std::to_string(nrows) + " rows of values, got " + std::to_string(row));
+  return out;
+}
+
+}  // namespace
+
+ParsedPoints read_points(std::string_view text, const std::string& name, PointFormat format) {
+  const Reader r{name};
+  if (format == PointFormat::Auto) {
+    const size_t k = text.find_first_not_of(" \t\r\n");
+    if (k == std::string_view::npos) throw InputError(name + ": the file is empty");
+    if (text[k] == '[') format = PointFormat::Json;
+    else if (lower(text.substr(k, 5)) == "ncols") format = PointFormat::AsciiGrid;
+    else format = PointFormat::Text;
+  }
+  ParsedPoints out = format == PointFormat::Json        ? read_json(text, r)
+                     : format == PointFormat::AsciiGrid ? read_ascii_grid(text, r)
+                                                        : read_text(text, r);
+  if (out.lines.empty()) throw InputError(name + ": no points found");
+  return out;
+}
+
+}  // namespace hodt

@@ -1,0 +1,43 @@
+#include "hodt/report.hpp"
+
+#include "hodt/format.hpp"
+
+namespace hodt {
+
+std::string stats_json(const Terrain& t) {
+  const Mesh& m = t.structure().base;
+  const size_t hull_edges = m.hull.size();
+  const size_t edges = (m.triangles.size() + hull_edges) / 2;
+  std::string s = "{\"points\": " + std::to_string(m.num_vertices()) +
+                  ", \"triangles\": " + std::to_string(m.num_triangles()) +
+                  ", \"edges\": " + std::to_string(edges) +
+                  ", \"flippable\": " + std::to_string(t.structure().num_quads()) +
+                  ", \"hullVertices\": " + std::to_string(m.hull.size()) + ", \"delaunay\": {";
+  const auto& v = t.delaunay_values();
+  for (size_t k = 0; k < kNumObjectives; ++k)
+    s += (k ? ", \"" : "\"") + std::string(objectives()[k].id) + "\": " + format_number(v[k]);
+  return s + "}}";
+}
+
+std::string solution_json(const Terrain& t, const Solution& r, bool with_triangles) {
+  const ObjectiveInfo& oi = info(r.objective);
+  std::string s = "{\"objective\": \"" + std::string(oi.id) + "\", \"sense\": \"" +
+                  (oi.sense == Sense::Min ? "min" : "max") + "\", \"method\": \"" + r.method +
+                  "\", \"value\": " + format_number(r.value) +
+                  ", \"delaunayValue\": " + format_number(r.delaunay_value) +
+                  ", \"optimal\": " + (r.optimal ? "true" : "false") +
+                  ", \"bound\": " + (r.bound ? format_number(*r.bound) : "null") +
+                  ", \"flipped\": " + std::to_string(count_flipped(r.choice)) +
+                  ", \"timeMs\": " + format_number(r.time_ms);
+  if (with_triangles) {
+    const std::vector<uint32_t> tris = t.to_input(triangulate(t.structure(), r.choice).triangles);
+    s += ", \"triangles\": [";
+    for (size_t k = 0; k < tris.size(); k += 3)
+      s += (k ? ", [" : "[") + std::to_string(tris[k]) + ", " + std::to_string(tris[k + 1]) + ", " +
+           std::to_string(tris[k + 2]) + "]";
+    s += "]";
+  }
+  return s + "}";
+}
+
+}  // namespace hodt

@@ -1,0 +1,49 @@
+#include "hodt/terrain.hpp"
+
+#include "hodt/delaunay.hpp"
+#include "hodt/error.hpp"
+
+namespace hodt {
+
+Terrain Terrain::from_points(const std::vector<double>& xyz, Dedupe dedupe, const PointLabels& labels) {
+  TerrainPoints pts = validate_points(xyz, dedupe, labels);
+  Terrain t;
+  t.num_input_ = static_cast<uint32_t>(xyz.size() / 3);
+  if (pts.input_index.size() != t.num_input_) t.input_index_ = std::move(pts.input_index);
+  t.fo_ = first_order(delaunay(std::move(pts.xyz)));
+  return t;
+}
+
+Terrain Terrain::from_triangulation(const std::vector<double>& xyz, const std::vector<uint32_t>& triangles,
+                                    const std::vector<uint32_t>& flippable_edges) {
+  TerrainPoints pts = validate_points(xyz, Dedupe::Error);
+  Terrain t;
+  t.num_input_ = static_cast<uint32_t>(xyz.size() / 3);
+  t.fo_ = singly_flippable(std::move(pts.xyz), triangles, flippable_edges);
+  return t;
+}
+
+std::vector<uint32_t> Terrain::to_input(std::vector<uint32_t> indices) const {
+  if (!input_index_.empty())
+    for (uint32_t& v : indices) v = input_index_[v];
+  return indices;
+}
+
+void Terrain::check_choice(const Choice& choice) const {
+  if (choice.size() != fo_.num_quads())
+    throw InputError("choice has " + std::to_string(choice.size()) + " entries, expected one per quad (" +
+                     std::to_string(fo_.num_quads()) + ")");
+  for (size_t q = 0; q < choice.size(); ++q)
+    if (choice[q] > 1)
+      throw InputError("choice[" + std::to_string(q) + "] is " + std::to_string(choice[q]) + ", expected 0 or 1");
+}
+
+const std::array<double, kNumObjectives>& Terrain::delaunay_values() const {
+  if (!have_delaunay_values_) {
+    delaunay_values_ = evaluate_all(fo_.base);
+    have_delaunay_values_ = true;
+  }
+  return delaunay_values_;
+}
+
+}  // namespace hodt

@@ -1,0 +1,80 @@
+// Point sets for tests and benchmarks, seeded and platform independent.
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace hodt::test {
+
+// splitmix64: the same sequence on every platform.
+struct Rng {
+  uint64_t s;
+  explicit Rng(uint64_t seed) : s(seed * 0x9E3779B97F4A7C15ull + 1) {}
+  uint64_t next() {
+    uint64_t z = (s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  double uniform() { return (next() >> 11) * (1.0 / 9007199254740992.0); }
+  int below(int n) { return static_cast<int>(next() % static_cast<uint64_t>(n)); }
+};
+
+inline std::vector<double> uniform_points(int n, uint64_t seed) {
+  Rng r(seed);
+  std::vector<double> p;
+  for (int i = 0; i < n; ++i) p.insert(p.end(), {r.uniform(), r.uniform(), r.uniform()});
+  return p;
+}
+
+// Smooth hills with noise: heights correlated in space, like a DEM sample.
+inline double dem_height(double x, double y, uint64_t seed) {
+  const double a = 1 + (seed % 7) * 0.3;
+  return std::sin(3 * a * x) * std::cos(2.3 * y + a) + 0.5 * std::sin(7.1 * x + 5.3 * y) +
+         0.2 * std::cos(13 * x * y + a);
+}
+inline std::vector<double> dem_points(int n, uint64_t seed) {
+  Rng r(seed);
+  std::vector<double> p;
+  for (int i = 0; i < n; ++i) {
+    const double x = r.uniform(), y = r.uniform();
+    p.insert(p.end(), {x, y, dem_height(x, y, seed) + 0.05 * r.uniform()});
+  }
+  return p;
+}
+
+// A w x h grid with integer coordinates: cocircular everywhere (degenerate).
+inline std::vector<double> grid_points(int w, int h, uint64_t seed, bool integer_heights = false) {
+  Rng r(seed);
+  std::vector<double> p;
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i)
+      p.insert(p.end(), {double(i), double(j), integer_heights ? double(r.below(4)) : dem_height(i / 7.0, j / 7.0, seed)});
+  return p;
+}
+
+// A grid with each point moved by up to `jitter` of the spacing.
+inline std::vector<double> jittered_grid(int w, int h, double jitter, uint64_t seed) {
+  Rng r(seed);
+  std::vector<double> p;
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      const double x = i + jitter * (2 * r.uniform() - 1), y = j + jitter * (2 * r.uniform() - 1);
+      p.insert(p.end(), {x, y, dem_height(x / 7.0, y / 7.0, seed) * 3});
+    }
+  return p;
+}
+
+// n points on a circle (all cocircular) plus its centre.
+inline std::vector<double> cocircular_points(int n, uint64_t seed) {
+  Rng r(seed);
+  std::vector<double> p;
+  // Pythagorean-triple points on the circle of radius 5 and 25 are exactly cocircular.
+  const int pts[][2] = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3},
+                        {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+  for (int k = 0; k < 12 && k < n; ++k) p.insert(p.end(), {double(pts[k][0]), double(pts[k][1]), r.uniform()});
+  p.insert(p.end(), {0.0, 0.0, r.uniform()});
+  return p;
+}
+
+}  // namespace hodt::test

@@ -1,0 +1,242 @@
+// The embind layer: converts typed arrays in and out of the core's types and turns
+// the core's exceptions into JS errors. No logic of its own: everything is in core/.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include "hodt/brute_force.hpp"
+#include "hodt/cli.hpp"
+#include "hodt/error.hpp"
+#include "hodt/measures.hpp"
+#include "hodt/report.hpp"
+#include "hodt/solve.hpp"
+#include "hodt/terrain.hpp"
+
+using emscripten::val;
+using namespace hodt;
+
+namespace {
+
+// A JS copy of a C++ array: the result never points into the wasm heap, so memory
+// growth cannot detach it.
+template <class T>
+val copy_out(const char* type, const std::vector<T>& v) {
+  return val::global(type).new_(emscripten::typed_memory_view(v.size(), v.data()));
+}
+
+// Runs f, converting the core's exceptions into a JS Error whose name is the kind.
+template <class F>
+auto guarded(F f) -> decltype(f()) {
+  std::string kind, message;
+  try {
+    return f();
+  } catch (const InputError& e) {
+    kind = "InputError", message = e.what();
+  } catch (const LimitError& e) {
+    kind = "LimitError", message = e.what();
+  } catch (const Cancelled& e) {
+    kind = "Cancelled", message = e.what();
+  } catch (const std::bad_alloc&) {
+    kind = "LimitError", message = "out of memory";
+  } catch (const std::exception& e) {
+    kind = "InternalError", message = e.what();
+  }
+  val error = val::global("Error").new_(message);
+  error.set("name", kind);
+  error.throw_();
+}
+
+Objective objective_of(const std::string& id) {
+  const auto o = parse_objective(id);
+  if (!o) throw InputError("unknown objective '" + id + "'; valid objectives: " + objective_ids());
+  return *o;
+}
+
+class TerrainHandle {
+ public:
+  explicit TerrainHandle(Terrain t) : t_(std::move(t)) {}
+
+  uint32_t numPoints() const { return t_.structure().base.num_vertices(); }
+  uint32_t numInputPoints() const { return t_.num_input_points(); }
+  uint32_t numQuads() const { return t_.structure().num_quads(); }
+  bool isDelaunay() const { return t_.structure().is_delaunay; }
+  val inputIndex() const {
+    std::vector<uint32_t> idx(numPoints());
+    for (uint32_t v = 0; v < idx.size(); ++v) idx[v] = t_.to_input(v);
+    return copy_out("Uint32Array", idx);
+  }
+  val points() const { return copy_out("Float64Array", t_.structure().base.coords); }
+  val quads() const {
+    std::vector<uint32_t> q;
+    for (const Quad& k : t_.structure().quads) q.insert(q.end(), {k.a, k.b, k.c, k.d});
+    return copy_out("Uint32Array", t_.to_input(q));
+  }
+  val quadEdges() const {
+    std::vector<uint32_t> q;
+    for (const Quad& k : t_.structure().quads) q.push_back(k.edge);
+    return copy_out("Uint32Array", q);
+  }
+  val quadOfTriangle() const { return copy_out("Int32Array", t_.structure().quad_of_triangle); }
+
+  // The triangulation of a choice: {triangles, halfedges, hull} in input indices.
+  val triangulation(val choice) const {
+    return guarded([&] {
+      const Mesh m = triangulate(t_.structure(), choice_of(choice));
+      val out = val::object();
+      out.set("triangles", copy_out("Uint32Array", t_.to_input(m.triangles)));
+      out.set("halfedges", copy_out("Int32Array", m.halfedges));
+      out.set("hull", copy_out("Uint32Array", t_.to_input(m.hull)));
+      return out;
+    });
+  }
+  // Per-element measures of a choice's triangulation; vertex arrays by kept index.
+  val measures(val choice) const {
+    return guarded([&] {
+      const Measures ms = measure(triangulate(t_.structure(), choice_of(choice)));
+      val out = val::object();
+      out.set("edgeShape", copy_out("Uint8Array", ms.edge_shape));
+      out.set("vertexClass", copy_out("Uint8Array", ms.vertex_class));
+      out.set("extremum", copy_out("Uint8Array", ms.extremum));
+      out.set("degree", copy_out("Uint32Array", ms.degree));
+      return out;
+    });
+  }
+  val evaluate(val choice) const {
+    return guarded([&] {
+      const auto v = evaluate_all(triangulate(t_.structure(), choice_of(choice)));
+      return copy_out("Float64Array", std::vector<double>(v.begin(), v.end()));
+    });
+  }
+  val delaunayValues() const {
+    const auto& v = t_.delaunay_values();
+    return copy_out("Float64Array", std::vector<double>(v.begin(), v.end()));
+  }
+  val solve(const std::string& objective, const std::string& method, double epsilon) const {
+    return guarded([&] {
+      SolveOptions options;
+      const auto m = parse_method(method);
+      if (!m) throw InputError("unknown method '" + method + "'; valid methods: " + method_ids());
+      options.method = *m;
+      options.epsilon = epsilon;
+      const Objective o = objective_of(objective);
+      Solution s = hodt::solve(t_.structure(), o, options);
+      s.delaunay_value = t_.delaunay_values()[static_cast<size_t>(o)];
+      val out = val::object();
+      out.set("objective", std::string(info(o).id));
+      out.set("sense", std::string(info(o).sense == Sense::Min ? "min" : "max"));
+      out.set("method", s.method);
+      out.set("value", s.value);
+      out.set("delaunayValue", s.delaunay_value);
+      out.set("optimal", s.optimal);
+      out.set("bound", s.bound ? val(*s.bound) : val::null());
+      out.set("flipped", count_flipped(s.choice));
+      out.set("timeMs", s.time_ms);
+      out.set("choice", copy_out("Uint8Array", s.choice));
+      return out;
+    });
+  }
+  // Values of all objectives for all 2^m choices, row-major (choice index, objective).
+  val enumerateAll() const {
+    return guarded([&] {
+      const auto rows = enumerate_all(t_.structure());
+      std::vector<double> flat;
+      flat.reserve(rows.size() * kNumObjectives);
+      for (const auto& r : rows) flat.insert(flat.end(), r.begin(), r.end());
+      return copy_out("Float64Array", flat);
+    });
+  }
+  std::string statsJson() const { return stats_json(t_); }
+
+ private:
+  Choice choice_of(const val& v) const {
+    Choice c = v.isUndefined() || v.isNull() ? Choice(t_.structure().num_quads(), 0)
+                                              : emscripten::convertJSArrayToNumberVector<uint8_t>(v);
+    t_.check_choice(c);
+    return c;
+  }
+  Terrain t_;
+};
+
+TerrainHandle* fromPoints(val xyz, bool dedupe) {
+  return guarded([&] {
+    const std::vector<double> v = emscripten::convertJSArrayToNumberVector<double>(xyz);
+    return new TerrainHandle(Terrain::from_points(v, dedupe ? Dedupe::KeepFirst : Dedupe::Error));
+  });
+}
+
+TerrainHandle* fromTriangulation(val xyz, val triangles, val flippable) {
+  return guarded([&] {
+    return new TerrainHandle(Terrain::from_triangulation(
+        emscripten::convertJSArrayToNumberVector<double>(xyz),
+        emscripten::convertJSArrayToNumberVector<uint32_t>(triangles),
+        emscripten::convertJSArrayToNumberVector<uint32_t>(flippable)));
+  });
+}
+
+// Parses a point file's text: {xyz: Float64Array, lines: Int32Array}.
+val readPoints(const std::string& text, const std::string& name) {
+  return guarded([&] {
+    const ParsedPoints p = read_points(text, name);
+    val out = val::object();
+    out.set("xyz", copy_out("Float64Array", p.xyz));
+    out.set("lines", copy_out("Int32Array", p.lines));
+    return out;
+  });
+}
+
+// The CLI; read(path) returns the file's text or throws.
+val runCli(val args, val read) {
+  std::vector<std::string> a;
+  const unsigned n = args["length"].as<unsigned>();
+  for (unsigned i = 0; i < n; ++i) a.push_back(args[i].as<std::string>());
+  const CliResult r = run_cli(a, [&](const std::string& path, std::string& error) -> std::optional<std::string> {
+    const val text = read(path);
+    if (text.isString()) return text.as<std::string>();
+    error = text.isUndefined() ? "cannot read the file" : text["message"].as<std::string>();
+    return std::nullopt;
+  });
+  val out = val::object();
+  out.set("exitCode", r.exit_code);
+  out.set("stdout", r.out);
+  out.set("stderr", r.err);
+  return out;
+}
+
+val objectiveTable() {
+  val out = val::array();
+  for (const auto& i : objectives()) {
+    val o = val::object();
+    o.set("id", std::string(i.id));
+    o.set("sense", std::string(i.sense == Sense::Min ? "min" : "max"));
+    o.set("integral", i.integral);
+    o.set("summary", std::string(i.summary));
+    out.call<void>("push", o);
+  }
+  return out;
+}
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(hodt) {
+  emscripten::class_<TerrainHandle>("TerrainHandle")
+      .function("numPoints", &TerrainHandle::numPoints)
+      .function("numInputPoints", &TerrainHandle::numInputPoints)
+      .function("numQuads", &TerrainHandle::numQuads)
+      .function("isDelaunay", &TerrainHandle::isDelaunay)
+      .function("inputIndex", &TerrainHandle::inputIndex)
+      .function("points", &TerrainHandle::points)
+      .function("quads", &TerrainHandle::quads)
+      .function("quadEdges", &TerrainHandle::quadEdges)
+      .function("quadOfTriangle", &TerrainHandle::quadOfTriangle)
+      .function("triangulation", &TerrainHandle::triangulation)
+      .function("measures", &TerrainHandle::measures)
+      .function("evaluate", &TerrainHandle::evaluate)
+      .function("delaunayValues", &TerrainHandle::delaunayValues)
+      .function("solve", &TerrainHandle::solve)
+      .function("enumerateAll", &TerrainHandle::enumerateAll)
+      .function("statsJson", &TerrainHandle::statsJson);
+  emscripten::function("fromPoints", &fromPoints, emscripten::allow_raw_pointers());
+  emscripten::function("fromTriangulation", &fromTriangulation, emscripten::allow_raw_pointers());
+  emscripten::function("readPoints", &readPoints);
+  emscripten::function("runCli", &runCli);
+  emscripten::function("objectiveTable", &objectiveTable);
+}
