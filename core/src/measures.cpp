@@ -59,7 +59,18 @@ Extremum extremum(const double* p, const double* const* nb, uint32_t d) {
   return all_higher ? kLocalMinimum : all_lower ? kLocalMaximum : kNotExtremum;
 }
 
+namespace {
+bool xy_less(const double* p, const double* q) { return p[0] < q[0] || (p[0] == q[0] && p[1] < q[1]); }
+// Rotates a triangle to start at its lexicographically smallest corner, so that a
+// triangle's measures do not depend on how a mesh happens to list its corners.
+void canonical(const double*& a, const double*& b, const double*& c) {
+  if (xy_less(b, a) && xy_less(b, c)) std::swap(a, b), std::swap(b, c);       // b c a
+  else if (xy_less(c, a) && xy_less(c, b)) std::swap(a, c), std::swap(b, c);  // c a b
+}
+}  // namespace
+
 double triangle_area(const double* a, const double* b, const double* c) {
+  canonical(a, b, c);
   return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
 }
 
@@ -67,8 +78,10 @@ double area_ratio(double a1, double a2) { return a1 > a2 ? a1 / a2 : a2 / a1; }
 
 namespace {
 void normal(const double* const t[3], double n[3]) {
-  const double u[3] = {t[1][0] - t[0][0], t[1][1] - t[0][1], t[1][2] - t[0][2]};
-  const double v[3] = {t[2][0] - t[0][0], t[2][1] - t[0][1], t[2][2] - t[0][2]};
+  const double *a = t[0], *b = t[1], *c = t[2];
+  canonical(a, b, c);
+  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
   n[0] = u[1] * v[2] - u[2] * v[1];
   n[1] = u[2] * v[0] - u[0] * v[2];
   n[2] = u[0] * v[1] - u[1] * v[0];
@@ -86,11 +99,22 @@ double normal_angle(const double* const t1[3], const double* const t2[3]) {
 }
 
 double edge_length(const double* a, const double* b) {
-  return std::hypot(b[0] - a[0], b[1] - a[1]);
+  return std::hypot(b[0] - a[0], b[1] - a[1]);  // symmetric: |a - b| = |b - a| exactly
+}
+
+double order_free_sum(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  double s = 0;
+  for (double v : values) s += v;
+  return s;
 }
 
 double enclosing_circle(const double* a, const double* b, const double* c, const double* d) {
-  const Point2 p[4] = {Point2(a[0], a[1]), Point2(b[0], b[1]), Point2(c[0], c[1]), Point2(d[0], d[1])};
+  // Sorted, so that the radius does not depend on the order of the arguments.
+  const double* q[4] = {a, b, c, d};
+  std::sort(q, q + 4, xy_less);
+  const Point2 p[4] = {Point2(q[0][0], q[0][1]), Point2(q[1][0], q[1][1]), Point2(q[2][0], q[2][1]),
+                       Point2(q[3][0], q[3][1])};
   // The smallest enclosing circle has two or three of the points on its boundary:
   // the smallest candidate that contains all four (decided exactly) is the answer.
   double best = INFINITY;

@@ -69,11 +69,13 @@ std::array<double, kNumObjectives> evaluate_all(const Mesh& m) {
   auto corners = [&](uint32_t t, const double* out[3]) {
     for (int k = 0; k < 3; ++k) out[k] = m.point(m.triangles[3 * t + k]);
   };
-  double length = 0, edge_ratio = 0, edge_angle = 0, edge_circle = 0, convex_edges = 0;
+  std::vector<double> lengths;
+  lengths.reserve(m.triangles.size() / 2 + m.hull.size());
+  double edge_ratio = 0, edge_angle = 0, edge_circle = 0, convex_edges = 0;
   for (uint32_t e = 0; e < m.triangles.size(); ++e) {
     const int32_t f = m.halfedges[e];
     if (f >= 0 && static_cast<uint32_t>(f) < e) continue;
-    length += edge_length(m.point(m.origin(e)), m.point(m.target(e)));
+    lengths.push_back(edge_length(m.point(m.origin(e)), m.point(m.target(e))));
     if (f < 0) continue;
     const uint32_t t1 = e / 3, t2 = static_cast<uint32_t>(f) / 3;
     if (ms.edge_shape[e] == kConvexEdge) ++convex_edges;
@@ -85,7 +87,7 @@ std::array<double, kNumObjectives> evaluate_all(const Mesh& m) {
     edge_circle = std::max(edge_circle, enclosing_circle(m.point(m.origin(e)), m.point(m.target(e)),
                                                          m.point(m.apex(e)), m.point(m.apex(static_cast<uint32_t>(f)))));
   }
-  at(Objective::MinTotalEdgeLength) = length;
+  at(Objective::MinTotalEdgeLength) = order_free_sum(std::move(lengths));
   at(Objective::MinmaxEdgeAreaRatio) = edge_ratio;
   at(Objective::MinmaxEdgeNormalAngle) = edge_angle;
   at(Objective::MinmaxEdgeEnclosingCircle) = edge_circle;

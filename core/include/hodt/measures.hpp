@@ -34,6 +34,9 @@ double normal_angle(const double* const t1[3], const double* const t2[3]);
 double enclosing_circle(const double* a, const double* b, const double* c, const double* d);
 // Plane length of a segment.
 double edge_length(const double* a, const double* b);
+// A sum that does not depend on the order of its terms (sorted, then added), so
+// that equal triangulations listed differently have bit-identical totals.
+double order_free_sum(std::vector<double> values);
 
 // Neighbours of every vertex, counterclockwise, in compressed rows.
 struct Stars {
