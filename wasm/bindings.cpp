@@ -7,6 +7,7 @@
 #include "hodt/cli.hpp"
 #include "hodt/error.hpp"
 #include "hodt/measures.hpp"
+#include "hodt/read_points.hpp"
 #include "hodt/report.hpp"
 #include "hodt/solve.hpp"
 #include "hodt/terrain.hpp"

@@ -10,6 +10,11 @@ std::string format_number(double v) {
   if (std::isnan(v)) return "NaN";
   if (std::isinf(v)) return v > 0 ? "Infinity" : "-Infinity";
   if (v == 0) return "0";
+  if (v == std::floor(v) && std::fabs(v) < 9007199254740992.0) {  // integers as integers
+    char buf[24];
+    std::snprintf(buf, sizeof buf, "%.0f", v);
+    return buf;
+  }
   // Shortest precision that round-trips (what JavaScript's Number#toString does).
   char buf[40];
   for (int prec = 1; prec <= 17; ++prec) {

@@ -1,0 +1,31 @@
+// Builds everything, incrementally: the native core, tests and CLI (g++), the wasm
+// module (Emscripten), and the TypeScript library and CLI (tsc) into dist/.
+import { execSync } from 'node:child_process';
+import { chmodSync, copyFileSync, existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+
+const root = fileURLToPath(new URL('..', import.meta.url));
+const run = (cmd, env = {}) => execSync(cmd, { cwd: root, stdio: 'inherit', env: { ...process.env, ...env } });
+// Emscripten's JS optimizer needs Debian's acorn (TOOLCHAIN.md).
+const emenv = { NODE_PATH: '/usr/share/nodejs' };
+
+function copyIfChanged(from, to) {
+  const data = readFileSync(from);
+  if (existsSync(to) && readFileSync(to).equals(data)) return;
+  writeFileSync(to, data);
+}
+
+const native = `${root}/build/native`, wasm = `${root}/build/wasm`;
+if (!existsSync(`${native}/build.ninja`)) run(`cmake -S . -B build/native -G Ninja -DCMAKE_BUILD_TYPE=Release`);
+run(`ninja -C build/native`);
+if (!existsSync(`${wasm}/build.ninja`)) {
+  run(`emcmake cmake -S . -B build/wasm -G Ninja -DCMAKE_BUILD_TYPE=Release`, emenv);
+}
+run(`ninja -C build/wasm`, emenv);
+
+mkdirSync(`${root}/web/src/wasm`, { recursive: true });
+for (const f of ['hodt.mjs', 'hodt.wasm']) copyIfChanged(`${wasm}/${f}`, `${root}/web/src/wasm/${f}`);
+run(`npx tsc -p tsconfig.json`);
+mkdirSync(`${root}/dist/wasm`, { recursive: true });
+for (const f of ['hodt.mjs', 'hodt.wasm', 'hodt.d.mts']) copyIfChanged(`${root}/web/src/wasm/${f}`, `${root}/dist/wasm/${f}`);
+chmodSync(`${root}/dist/cli.js`, 0o755);

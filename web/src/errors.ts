@@ -1,0 +1,42 @@
+/** Base class of every error hodt throws; `message` is the core's own text. */
+export class HodtError extends Error {
+  constructor(message: string) {
+    super(message);
+    this.name = new.target.name;
+  }
+}
+/** Bad input: malformed file, NaN coordinate, duplicate point, invalid choice. */
+export class InputError extends HodtError {}
+/** A valid request the library refuses: too many quads for brute force, a tree
+ * decomposition wider than the memory cap, out of memory. */
+export class LimitError extends HodtError {}
+/** The run was cancelled (abort signal). */
+export class CancelledError extends HodtError {}
+/** A bug in hodt: please report it with the input. */
+export class InternalError extends HodtError {}
+
+/** Turns an error thrown by the wasm module into the matching typed error. */
+export function toHodtError(e: unknown): unknown {
+  if (!(e instanceof Error) || e instanceof HodtError) return e;
+  switch (e.name) {
+    case 'InputError':
+      return new InputError(e.message);
+    case 'LimitError':
+      return new LimitError(e.message);
+    case 'Cancelled':
+      return new CancelledError(e.message);
+    case 'InternalError':
+      return new InternalError(e.message);
+    default:
+      return e;
+  }
+}
+
+/** Calls f, rethrowing wasm errors as typed errors. */
+export function guard<T>(f: () => T): T {
+  try {
+    return f();
+  } catch (e) {
+    throw toHodtError(e);
+  }
+}

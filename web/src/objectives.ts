@@ -1,0 +1,38 @@
+/** The 13 objectives (DEFINITIONS.md). */
+export const OBJECTIVE_IDS = [
+  'max-convex-vertices',
+  'minmax-edge-area-ratio',
+  'minmax-edge-normal-angle',
+  'minmax-edge-enclosing-circle',
+  'minmax-vertex-area-ratio',
+  'minmax-vertex-normal-angle',
+  'min-local-minima',
+  'min-local-extrema',
+  'min-total-edge-length',
+  'minmax-triangle-area',
+  'max-convex-edges',
+  'min-mixed-vertices',
+  'minmax-degree',
+] as const;
+
+export type ObjectiveId = (typeof OBJECTIVE_IDS)[number];
+export type Method = 'brute-force' | 'exact' | 'approx' | 'auto';
+
+export interface ObjectiveInfo {
+  id: ObjectiveId;
+  /** Whether the objective is minimised or maximised. */
+  sense: 'min' | 'max';
+  /** Counts and degrees are integers; ratios, angles and lengths are not. */
+  integral: boolean;
+  /** One sentence on what it optimises. */
+  summary: string;
+}
+
+/** Values of all 13 objectives for one triangulation. */
+export type ObjectiveValues = Record<ObjectiveId, number>;
+
+export function toValues(array: Float64Array): ObjectiveValues {
+  const out = {} as ObjectiveValues;
+  OBJECTIVE_IDS.forEach((id, k) => (out[id] = array[k]!));
+  return out;
+}

@@ -1,0 +1,67 @@
+// Types of the Emscripten glue (hodt.mjs, built from wasm/bindings.cpp). Internal:
+// the public API is in ../index.ts.
+export interface RawChoiceResult {
+  triangles: Uint32Array;
+  halfedges: Int32Array;
+  hull: Uint32Array;
+}
+export interface RawMeasures {
+  edgeShape: Uint8Array;
+  vertexClass: Uint8Array;
+  extremum: Uint8Array;
+  degree: Uint32Array;
+}
+export interface RawSolution {
+  objective: string;
+  sense: 'min' | 'max';
+  method: string;
+  value: number;
+  delaunayValue: number;
+  optimal: boolean;
+  bound: number | null;
+  flipped: number;
+  timeMs: number;
+  choice: Uint8Array;
+}
+export interface RawTerrain {
+  numPoints(): number;
+  numInputPoints(): number;
+  numQuads(): number;
+  isDelaunay(): boolean;
+  inputIndex(): Uint32Array;
+  points(): Float64Array;
+  quads(): Uint32Array;
+  quadEdges(): Uint32Array;
+  quadOfTriangle(): Int32Array;
+  triangulation(choice?: Uint8Array | null): RawChoiceResult;
+  measures(choice?: Uint8Array | null): RawMeasures;
+  evaluate(choice?: Uint8Array | null): Float64Array;
+  delaunayValues(): Float64Array;
+  solve(objective: string, method: string, epsilon: number): RawSolution;
+  enumerateAll(): Float64Array;
+  statsJson(): string;
+  delete(): void;
+  isDeleted(): boolean;
+}
+export interface RawObjective {
+  id: string;
+  sense: 'min' | 'max';
+  integral: boolean;
+  summary: string;
+}
+export interface HodtModule {
+  fromPoints(xyz: Float64Array, dedupe: boolean): RawTerrain;
+  fromTriangulation(xyz: Float64Array, triangles: Uint32Array, flippable: Uint32Array): RawTerrain;
+  readPoints(text: string, name: string): { xyz: Float64Array; lines: Int32Array };
+  runCli(
+    args: string[],
+    read: (path: string) => string | Error,
+  ): { exitCode: number; stdout: string; stderr: string };
+  objectiveTable(): RawObjective[];
+}
+export interface ModuleOptions {
+  wasmBinary?: ArrayBuffer | Uint8Array;
+  locateFile?: (path: string, prefix: string) => string;
+}
+declare function createHodtModule(options?: ModuleOptions): Promise<HodtModule>;
+export default createHodtModule;
