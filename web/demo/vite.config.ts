@@ -1,0 +1,34 @@
+// Vite config of the demo (web/demo). Used by scripts/serve.mjs and tests/e2e.
+import { fileURLToPath } from 'node:url';
+import { defineConfig } from 'vite';
+
+const here = (p: string) => fileURLToPath(new URL(p, import.meta.url));
+const repo = here('../../');
+
+export default defineConfig({
+  root: here('.'),
+  resolve: {
+    alias: {
+      // The demo uses the library only through its public entry point.
+      hodt: here('../src/index.ts'),
+      // vega-datasets' package exports hide its data files; reach them directly.
+      'vega-data': here('../../node_modules/vega-datasets/data'),
+    },
+  },
+  server: {
+    host: '127.0.0.1',
+    port: 5173,
+    fs: { allow: [repo] },
+  },
+  // Pre-bundle up front so the first visit never triggers a reload.
+  optimizeDeps: {
+    entries: ['index.html'],
+    include: ['three', 'three/examples/jsm/controls/OrbitControls.js', 'three/examples/jsm/lines/LineSegments2.js',
+      'three/examples/jsm/lines/LineSegmentsGeometry.js', 'three/examples/jsm/lines/LineMaterial.js'],
+  },
+  build: {
+    target: 'es2022',
+    outDir: here('../../build/demo'),
+    emptyOutDir: true,
+  },
+});
