@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "hodt/kernel.hpp"
+#include "hodt/portable_math.hpp"
 #include "hodt/predicates.hpp"
 
 namespace hodt {
@@ -95,7 +96,7 @@ double normal_angle(const double* const t1[3], const double* const t2[3]) {
   const double cx = n[1] * m[2] - n[2] * m[1], cy = n[2] * m[0] - n[0] * m[2],
                cz = n[0] * m[1] - n[1] * m[0];
   const double dot = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
-  return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), dot);
+  return portable_angle(std::sqrt(cx * cx + cy * cy + cz * cz), dot);
 }
 
 double edge_length(const double* a, const double* b) {

@@ -24,7 +24,9 @@ std::string lower(std::string_view s) {
   return out;
 }
 
+// A value quoted for a one-line message: up to the end of its line, at most 40 chars.
 std::string shorten(std::string_view s) {
+  s = s.substr(0, s.find_first_of("\r\n"));
   std::string t(s.substr(0, 40));
   if (s.size() > 40) t += "...";
   return "'" + t + "'";

@@ -115,3 +115,21 @@ TEST_CASE("objective table and ids") {
   }
   CHECK_FALSE(parse_objective("max-fun"));
 }
+
+#include "hodt/portable_math.hpp"
+#include "generators.hpp"
+
+TEST_CASE("portable_atan and portable_angle agree with libm within 1 ulp") {
+  hodt::test::Rng r(3);
+  for (int i = 0; i < 200000; ++i) {
+    const double x = std::ldexp(r.uniform() * 2 - 1, r.below(80) - 40);
+    const double a = hodt::portable_atan(x), b = std::atan(x);
+    CHECK(std::abs(a - b) <= std::abs(b) * 2.3e-16);
+    const double y = std::abs(std::ldexp(r.uniform(), r.below(40) - 20));
+    const double c = hodt::portable_angle(y, x), d = std::atan2(y, x);
+    CHECK(std::abs(c - d) <= std::abs(d) * 4.5e-16);
+  }
+  CHECK(hodt::portable_angle(0, 1) == 0);
+  CHECK(hodt::portable_angle(1, 0) == doctest::Approx(M_PI / 2));
+  CHECK(hodt::portable_angle(0, -1) == doctest::Approx(M_PI));
+}

@@ -1,0 +1,110 @@
+// The CLI contract (README "CLI"), run as users run it: `node dist/cli.js`, and the
+// native build of the same core, which must print the same JSON.
+import { spawnSync } from 'node:child_process';
+import { readdirSync } from 'node:fs';
+import { describe, expect, it } from 'vitest';
+
+const root = new URL('../../', import.meta.url).pathname;
+const fixture = (name: string) => `${root}tests/fixtures/${name}`;
+const goodFixtures = readdirSync(fixture('')).filter((f) => !f.startsWith('bad-') && f !== 'make.mjs');
+
+function hodt(args: string[], input?: string) {
+  const r = spawnSync('node', [`${root}dist/cli.js`, ...args], { encoding: 'utf8', input });
+  return { code: r.status, out: r.stdout, err: r.stderr };
+}
+function native(args: string[]) {
+  const r = spawnSync(`${root}build/native/hodt`, args, { encoding: 'utf8' });
+  return { code: r.status, out: r.stdout, err: r.stderr };
+}
+// The JSON of a result without its timing, which differs run to run.
+const withoutTime = (text: string) => {
+  const j = JSON.parse(text);
+  delete j.timeMs;
+  return j;
+};
+
+const IDS = [
+  'max-convex-vertices', 'minmax-edge-area-ratio', 'minmax-edge-normal-angle', 'minmax-edge-enclosing-circle',
+  'minmax-vertex-area-ratio', 'minmax-vertex-normal-angle', 'min-local-minima', 'min-local-extrema',
+  'min-total-edge-length', 'minmax-triangle-area', 'max-convex-edges', 'min-mixed-vertices', 'minmax-degree',
+];
+
+describe('hodt stats', () => {
+  it('prints the documented keys and all 13 Delaunay values', () => {
+    const r = hodt(['stats', fixture('uniform-50.csv')]);
+    expect(r.code).toBe(0);
+    const j = JSON.parse(r.out);
+    expect(Object.keys(j)).toEqual(['points', 'triangles', 'edges', 'flippable', 'hullVertices', 'delaunay']);
+    expect(Object.keys(j.delaunay)).toEqual(IDS);
+    expect(j.points).toBe(50);
+    // Euler's formula for a triangulated convex polygon.
+    expect(j.triangles).toBe(2 * j.points - j.hullVertices - 2);
+    expect(j.edges).toBe(3 * j.points - j.hullVertices - 3);
+  });
+
+  it.each(goodFixtures)('wasm and native print the same for %s', (name) => {
+    expect(hodt(['stats', fixture(name)]).out).toBe(native(['stats', fixture(name)]).out);
+  });
+
+  it('reads standard input with -', () => {
+    const r = hodt(['stats', '-'], '0 0 0\n1 0 1\n0 1 2\n1 1 0\n');
+    expect(r.code).toBe(0);
+    expect(JSON.parse(r.out).points).toBe(4);
+  });
+});
+
+describe('hodt solve', () => {
+  it('prints the documented result, triangles on request', () => {
+    const r = hodt(['solve', fixture('uniform-12.csv'), '--objective', 'max-convex-edges', '--method', 'brute-force', '--triangles']);
+    expect(r.code).toBe(0);
+    const j = JSON.parse(r.out);
+    expect(Object.keys(j)).toEqual(['objective', 'sense', 'method', 'value', 'delaunayValue', 'optimal', 'bound', 'flipped', 'timeMs', 'triangles']);
+    expect(j).toMatchObject({ objective: 'max-convex-edges', sense: 'max', method: 'brute-force', optimal: true, bound: null });
+    expect(j.value).toBeGreaterThanOrEqual(j.delaunayValue);
+    expect(j.triangles).toHaveLength(JSON.parse(hodt(['stats', fixture('uniform-12.csv')]).out).triangles);
+    for (const t of j.triangles) expect(t).toHaveLength(3);
+  });
+
+  it.each(IDS)('wasm and native agree on brute force for %s', (id) => {
+    const args = ['solve', fixture('uniform-12.csv'), '--objective', id, '--method', 'brute-force', '--triangles'];
+    const w = hodt(args), n = native(args);
+    expect(w.code).toBe(0);
+    expect(withoutTime(w.out)).toEqual(withoutTime(n.out));
+  });
+});
+
+describe('bad input: exit 2 and one line naming what is wrong', () => {
+  const cases: [string, string[], RegExp][] = [
+    ['NaN', ['stats', fixture('bad-nan.csv')], /bad-nan\.csv: line 4: z is 'nan'/],
+    ['infinite', ['stats', fixture('bad-infinite.csv')], /bad-infinite\.csv: line 3: x is 'inf'/],
+    ['duplicate', ['stats', fixture('bad-duplicate.csv')], /point 1 \(line 2\) and point 3 \(line 4\) have the same \(x, y\) = \(1, 0\)/],
+    ['too few', ['stats', fixture('bad-too-few.csv')], /need at least 3 distinct points, got 2/],
+    ['collinear', ['stats', fixture('bad-collinear.csv')], /all 4 points are collinear/],
+    ['field count', ['stats', fixture('bad-field-count.csv')], /line 2: expected 3 numbers x y z, got 2 fields/],
+    ['not a number', ['stats', fixture('bad-not-a-number.csv')], /line 2: y is 'zero', not a number/],
+    ['bad JSON', ['stats', fixture('bad-json.json')], /bad-json\.json: line 1: point 2: expected \[x, y, z\]/],
+    ['bad grid', ['stats', fixture('bad-grid-row.asc')], /line 7: expected ncols = 3 values, got 2/],
+    ['empty', ['stats', fixture('bad-empty.csv')], /the file is empty/],
+    ['missing file', ['stats', fixture('no-such-file.csv')], /no-such-file\.csv: no such file/],
+    ['unknown objective', ['solve', fixture('uniform-12.csv'), '--objective', 'max-fun'], /unknown objective 'max-fun'; valid objectives: max-convex-vertices, .*minmax-degree/],
+    ['unknown method', ['solve', fixture('uniform-12.csv'), '--objective', 'minmax-degree', '--method', 'magic'], /unknown method 'magic'; valid methods: brute-force, exact, approx, auto/],
+    ['missing objective', ['solve', fixture('uniform-12.csv')], /solve needs --objective ID; valid objectives:/],
+    ['unknown option', ['stats', fixture('uniform-12.csv'), '--frobnicate'], /unknown option '--frobnicate'/],
+    ['bad epsilon', ['solve', fixture('uniform-12.csv'), '--objective', 'minmax-degree', '--epsilon', 'x'], /--epsilon expects a number, got 'x'/],
+    ['epsilon out of range', ['solve', fixture('uniform-12.csv'), '--objective', 'minmax-degree', '--epsilon', '2'], /epsilon is 2, expected a number in \(0, 1\)/],
+  ];
+  it.each(cases)('%s', (_name, args, message) => {
+    const r = hodt(args);
+    expect(r.code).toBe(2);
+    expect(r.out).toBe('');
+    expect(r.err).toMatch(message);
+    expect(r.err.trim().split('\n')).toHaveLength(1);
+    expect(r.err).not.toMatch(/at .*\.js|RuntimeError|Aborted/);
+  });
+
+  it('a refused request (brute force on too many quads) exits 3 with the reason', () => {
+    const r = hodt(['solve', fixture('uniform-300.csv'), '--objective', 'min-local-minima', '--method', 'brute-force']);
+    expect(r.code).toBe(3);
+    expect(r.err).toMatch(/refuses m = \d+ flippable quads \(at most 24\)/);
+  });
+});
