@@ -5,7 +5,11 @@
 
 #include "hodt/brute_force.hpp"
 #include "hodt/error.hpp"
+#include "hodt/exact.hpp"
+#include "hodt/factor_models.hpp"
 #include "hodt/format.hpp"
+#include "hodt/min_max_degree.hpp"
+#include "hodt/pair_measures.hpp"
 
 namespace hodt {
 
@@ -23,22 +27,46 @@ std::optional<Method> parse_method(std::string_view id) {
 
 std::string method_ids() { return "brute-force, exact, approx, auto"; }
 
-Solution solve(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
-  if (!(options.epsilon > 0 && options.epsilon < 1))
-    throw InputError("epsilon is " + format_number(options.epsilon) + ", expected a number in (0, 1)");
+namespace {
+
+// The NP-hard objectives exactly: the factor graph DP over a tree decomposition.
+Solution solve_factor_graph(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
+  DpLimits limits;
+  limits.max_width = options.max_width;
+  limits.progress = options.progress;
+  Solution s;
+  s.objective = objective;
+  s.method = "exact";
+  s.choice = objective == Objective::MinmaxDegree ? min_max_degree_exact(fo, limits)
+                                                  : solve_exact(factor_model(fo, objective), limits).choice;
+  s.optimal = true;
+  s.value = evaluate(objective, triangulate(fo, s.choice));
+  return s;
+}
+
+Solution dispatch(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
   switch (options.method) {
     case Method::BruteForce:
       return brute_force(fo, objective);
-    case Method::Auto:
-      if (fo.num_quads() <= 16) return brute_force(fo, objective);
-      [[fallthrough]];
     case Method::Exact:
-    case Method::Approx:
-      break;
+    case Method::Auto:
+    case Method::Approx:  // the approximation schemes arrive with the NP-hard issue
+      if (has_polynomial_exact(objective)) return solve_polynomial(fo, objective, ExactOptions{options.trace});
+      return solve_factor_graph(fo, objective, options);
   }
-  throw LimitError(std::string("method ") + method_id(options.method) + " is not implemented yet for " +
-                   info(objective).id + " with " + std::to_string(fo.num_quads()) +
-                   " quads; brute-force handles up to " + std::to_string(kBruteForceMaxQuads));
+  throw std::logic_error("unknown method");
+}
+
+}  // namespace
+
+Solution solve(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
+  if (!(options.epsilon > 0 && options.epsilon < 1))
+    throw InputError("epsilon is " + format_number(options.epsilon) + ", expected a number in (0, 1)");
+  const auto t0 = std::chrono::steady_clock::now();
+  Solution s = dispatch(fo, objective, options);
+  if (!s.critical) s.critical = critical_pair(objective, triangulate(fo, s.choice));
+  s.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return s;
 }
 
 }  // namespace hodt

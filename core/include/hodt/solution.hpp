@@ -3,10 +3,18 @@
 #include <optional>
 #include <string>
 
+#include "hodt/bottleneck.hpp"
 #include "hodt/first_order.hpp"
 #include "hodt/objectives.hpp"
+#include "hodt/skeleton.hpp"
 
 namespace hodt {
+
+// The two triangles that attain a min-max value.
+struct CriticalPair {
+  Tri first, second;
+  double value;
+};
 
 struct Solution {
   Objective objective;
@@ -17,6 +25,8 @@ struct Solution {
   bool optimal = false;          // value is proven optimal
   std::optional<double> bound;   // proven bound on the optimum, when not optimal
   double time_ms = 0;
+  std::optional<CriticalPair> critical;  // min-max pair objectives
+  std::vector<ThresholdStep> trace;      // bottleneck search, when asked for
 };
 
 }  // namespace hodt

@@ -2,6 +2,7 @@
 #pragma once
 #include <string>
 
+#include "hodt/factor_graph.hpp"
 #include "hodt/solution.hpp"
 
 namespace hodt {
@@ -11,6 +12,9 @@ enum class Method : uint8_t { BruteForce, Exact, Approx, Auto };
 struct SolveOptions {
   Method method = Method::Auto;
   double epsilon = 0.25;  // approximation schemes: value within (1 - epsilon) of optimal
+  bool trace = false;     // record the bottleneck search (min-max pair objectives)
+  uint32_t max_width = 20;  // exact engine: widest tree decomposition allowed (memory cap)
+  Progress progress;      // long runs: called with (done, total); false cancels
 };
 
 const char* method_id(Method m);

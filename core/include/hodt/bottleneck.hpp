@@ -1,0 +1,69 @@
+// Min-max ("bottleneck") objectives over first order triangulations (paper,
+// Section 2.1-2.2): the objective is the largest value of a measure over pairs of
+// triangles, each pair depending on at most two quads. The sorted candidate values
+// are binary searched; each step decides "is there a triangulation with every pair
+// at most t?" by the paper's eliminations and a linear-time 2-SAT.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "hodt/first_order.hpp"
+#include "hodt/skeleton.hpp"
+
+namespace hodt {
+
+// A term of the objective: the worst pair value as a function of the choices of
+// at most two quads. v[x_q + 2 * x_r]; a unary term (r < 0) uses v[0], v[1].
+struct PairTerm {
+  int32_t q = -1, r = -1;
+  double v[4] = {0, 0, 0, 0};
+};
+
+struct BottleneckModel {
+  uint32_t num_quads = 0;
+  double floor = 0;              // worst pair between fixed triangles
+  std::vector<PairTerm> terms;   // one per quad (unary) or pair of quads (binary)
+};
+
+// Each tested threshold, in the order tested (for the CLI's --trace and the demo).
+struct ThresholdStep {
+  double threshold;
+  bool satisfiable;
+  uint32_t clauses;     // 2-SAT clauses built (forced choices count one each)
+  uint32_t forced;      // quads whose choice the eliminations fixed
+  bool immediate_no;    // a fixed pair or a quad with both diagonals over the threshold
+};
+
+struct BottleneckResult {
+  Choice choice;
+  double value;  // the optimal max
+  std::vector<ThresholdStep> trace;
+};
+
+// Builds a model: a pair measure evaluated on triangles (vertex triples).
+template <class Measure>
+BottleneckModel edge_pair_model(const FirstOrder& fo, Measure measure);
+template <class Measure>
+BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure);
+
+BottleneckResult solve_bottleneck(const BottleneckModel& model);
+
+// Models are assembled term by term; terms over the same quads are merged (max).
+class BottleneckBuilder {
+ public:
+  explicit BottleneckBuilder(uint32_t num_quads);
+  void constant(double v);
+  void unary(uint32_t q, double v0, double v1);
+  // v[x_q + 2 * x_r], q != r
+  void binary(uint32_t q, uint32_t r, const double v[4]);
+  BottleneckModel finish();
+
+ private:
+  BottleneckModel model_;
+  std::vector<int32_t> unary_index_;
+  std::vector<std::pair<uint64_t, uint32_t>> binary_keys_;  // (key, term index), sorted at finish
+};
+
+}  // namespace hodt
+
+#include "hodt/bottleneck_models.ipp"

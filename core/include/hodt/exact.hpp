@@ -1,0 +1,18 @@
+// Exact polynomial algorithms (paper, Section 2, and reference [10]).
+#pragma once
+#include "hodt/solution.hpp"
+
+namespace hodt {
+
+struct ExactOptions {
+  bool trace = false;  // record the bottleneck search's thresholds
+};
+
+// True for the objectives with a polynomial exact algorithm here.
+bool has_polynomial_exact(Objective o);
+
+// A proven optimum. Throws LimitError for objectives without a polynomial
+// algorithm (the NP-hard ones go through the factor graph engine instead).
+Solution solve_polynomial(const FirstOrder& fo, Objective o, const ExactOptions& options);
+
+}  // namespace hodt

@@ -1,0 +1,68 @@
+// One exact engine for every objective that decomposes into local terms: a factor
+// graph over the binary quad variables, solved by dynamic programming over a tree
+// decomposition (paper, Section 4). The decomposition comes from a min-degree
+// elimination order: eliminating a variable forms the bag {v} + its neighbours, the
+// table DP combines the factors of the bag and optimises v out, keeping a
+// back-pointer table to rebuild the optimal choice.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "hodt/first_order.hpp"
+#include "hodt/objectives.hpp"
+
+namespace hodt {
+
+struct Factor {
+  std::vector<uint32_t> scope;  // variables (quads), distinct
+  std::vector<double> table;    // 2^|scope| values; bit k of the index is scope[k]
+};
+
+// The objective value of an assignment is constant (+) or (max) the factors' values.
+enum class Combine : uint8_t { Sum, Max };
+
+struct FactorGraph {
+  uint32_t num_vars = 0;
+  Sense sense = Sense::Min;
+  Combine combine = Combine::Sum;
+  double constant = 0;
+  std::vector<Factor> factors;
+
+  double evaluate(const Choice& x) const;
+  // Drops from each factor the variables its table does not depend on, and folds
+  // constant factors into `constant`: fewer interactions, narrower decompositions.
+  void simplify();
+};
+
+// Progress: called now and then with (done, total) work units; return false to cancel.
+using Progress = std::function<bool(double done, double total)>;
+
+struct DpLimits {
+  uint32_t max_width = 20;  // largest bag minus one; a bag's table has 2^(width+1) entries
+  Progress progress;
+};
+
+// A tree decomposition, as the elimination order's bags.
+struct Decomposition {
+  std::vector<uint32_t> order;               // elimination order
+  std::vector<std::vector<uint32_t>> bags;   // bag of order[i]: order[i] and its later neighbours
+  std::vector<uint32_t> component;           // per variable
+  uint32_t num_components = 0;
+  uint32_t width = 0;                        // max bag size - 1 (0 if no variables)
+  std::vector<uint32_t> component_width;
+};
+Decomposition decompose(const FactorGraph& g);
+
+struct DpResult {
+  Choice choice;
+  double value;
+  Decomposition decomposition;
+};
+
+// The exact optimum. Throws LimitError naming the width if a component's
+// decomposition is wider than limits.max_width (before using the memory), and
+// Cancelled if progress returns false.
+DpResult solve_exact(const FactorGraph& g, const DpLimits& limits = {});
+
+}  // namespace hodt

@@ -1,0 +1,23 @@
+// The pair measures of the min-max objectives, on triangles given by vertex index,
+// computed exactly as evaluate_all computes them (bit-identical values).
+#pragma once
+#include <optional>
+
+#include "hodt/mesh.hpp"
+#include "hodt/objectives.hpp"
+#include "hodt/skeleton.hpp"
+#include "hodt/solution.hpp"
+
+namespace hodt {
+
+double pair_area_ratio(const Mesh& m, const Tri& s, const Tri& t);
+double pair_normal_angle(const Mesh& m, const Tri& s, const Tri& t);
+// Smallest circle around the four points of two edge-adjacent triangles.
+double pair_enclosing_circle(const Mesh& m, const Tri& s, const Tri& t);
+
+// Is the objective a max over pairs (edge- or vertex-adjacent)?
+bool is_pair_objective(Objective o);
+// The pair of triangles attaining a pair objective's value on a triangulation.
+std::optional<CriticalPair> critical_pair(Objective o, const Mesh& m);
+
+}  // namespace hodt

@@ -1,0 +1,109 @@
+// The polynomial exact algorithms, one function per objective family.
+#include "hodt/exact.hpp"
+
+#include "hodt/bottleneck.hpp"
+#include "hodt/error.hpp"
+#include "hodt/extrema.hpp"
+#include "hodt/measures.hpp"
+#include "hodt/pair_measures.hpp"
+
+namespace hodt {
+
+namespace {
+
+// Theorem 1: in every quad take the reflex diagonal. A convex vertex stays convex
+// when a convex diagonal at it is replaced by the reflex one, and non-convex
+// vertices can only become convex, so this maximises convex vertices.
+Choice reflex_diagonals(const FirstOrder& fo) {
+  const Mesh& m = fo.base;
+  Choice c(fo.num_quads(), 0);
+  for (uint32_t q = 0; q < fo.num_quads(); ++q) {
+    const Quad& k = fo.quads[q];
+    c[q] = edge_shape(m.point(k.a), m.point(k.b), m.point(k.c), m.point(k.d)) == kConvexEdge;
+  }
+  return c;
+}
+
+// Total edge length is a sum over edges, and a quad's choice changes only its
+// diagonal: the shorter diagonal in every quad is optimal (ties keep Delaunay).
+Choice shorter_diagonals(const FirstOrder& fo) {
+  const Mesh& m = fo.base;
+  Choice c(fo.num_quads(), 0);
+  for (uint32_t q = 0; q < fo.num_quads(); ++q) {
+    const Quad& k = fo.quads[q];
+    c[q] = edge_length(m.point(k.c), m.point(k.d)) < edge_length(m.point(k.a), m.point(k.b));
+  }
+  return c;
+}
+
+// The largest triangle is the max over fixed triangles and, per quad, the larger
+// of its two triangles: independent per quad, so each quad takes the diagonal
+// whose larger triangle is smaller (ties keep Delaunay).
+Choice smaller_largest_triangles(const FirstOrder& fo) {
+  const Mesh& m = fo.base;
+  Choice c(fo.num_quads(), 0);
+  for (uint32_t q = 0; q < fo.num_quads(); ++q) {
+    double worst[2];
+    for (int x = 0; x < 2; ++x) {
+      uint32_t t[6];
+      fo.triangles_of(q, x, t);
+      worst[x] = std::max(triangle_area(m.point(t[0]), m.point(t[1]), m.point(t[2])),
+                          triangle_area(m.point(t[3]), m.point(t[4]), m.point(t[5])));
+    }
+    c[q] = worst[1] < worst[0];
+  }
+  return c;
+}
+
+BottleneckModel pair_model(const FirstOrder& fo, Objective o) {
+  const Mesh& m = fo.base;
+  auto ratio = [&](const Tri& s, const Tri& t) { return pair_area_ratio(m, s, t); };
+  auto angle = [&](const Tri& s, const Tri& t) { return pair_normal_angle(m, s, t); };
+  auto circle = [&](const Tri& s, const Tri& t) { return pair_enclosing_circle(m, s, t); };
+  switch (o) {
+    case Objective::MinmaxEdgeAreaRatio: return edge_pair_model(fo, ratio);
+    case Objective::MinmaxEdgeNormalAngle: return edge_pair_model(fo, angle);
+    case Objective::MinmaxEdgeEnclosingCircle: return edge_pair_model(fo, circle);
+    case Objective::MinmaxVertexAreaRatio: return vertex_pair_model(fo, ratio);
+    case Objective::MinmaxVertexNormalAngle: return vertex_pair_model(fo, angle);
+    default: throw std::logic_error("not a pair objective");
+  }
+}
+
+}  // namespace
+
+bool has_polynomial_exact(Objective o) {
+  return o != Objective::MaxConvexEdges && o != Objective::MinMixedVertices && o != Objective::MinmaxDegree;
+}
+
+Solution solve_polynomial(const FirstOrder& fo, Objective o, const ExactOptions& options) {
+  Solution s;
+  s.objective = o;
+  s.method = "exact";
+  s.optimal = true;
+  switch (o) {
+    case Objective::MaxConvexVertices: s.choice = reflex_diagonals(fo); break;
+    case Objective::MinTotalEdgeLength: s.choice = shorter_diagonals(fo); break;
+    case Objective::MinmaxTriangleArea: s.choice = smaller_largest_triangles(fo); break;
+    case Objective::MinLocalMinima: s.choice = fewest_local_minima(fo); break;
+    case Objective::MinLocalExtrema: s.choice = fewest_local_extrema(fo); break;
+    case Objective::MinmaxEdgeAreaRatio:
+    case Objective::MinmaxEdgeNormalAngle:
+    case Objective::MinmaxEdgeEnclosingCircle:
+    case Objective::MinmaxVertexAreaRatio:
+    case Objective::MinmaxVertexNormalAngle: {
+      BottleneckResult r = solve_bottleneck(pair_model(fo, o));
+      s.choice = std::move(r.choice);
+      if (options.trace) s.trace = std::move(r.trace);
+      break;
+    }
+    default:
+      throw LimitError(std::string(info(o).id) + " is NP-hard: it has no polynomial exact algorithm");
+  }
+  const Mesh mesh = triangulate(fo, s.choice);
+  s.value = evaluate(o, mesh);
+  s.critical = critical_pair(o, mesh);
+  return s;
+}
+
+}  // namespace hodt

@@ -1,0 +1,208 @@
+#include "hodt/factor_graph.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <queue>
+
+#include "hodt/error.hpp"
+
+namespace hodt {
+
+double FactorGraph::evaluate(const Choice& x) const {
+  double v = constant;
+  for (const Factor& f : factors) {
+    size_t idx = 0;
+    for (size_t k = 0; k < f.scope.size(); ++k) idx |= size_t(x[f.scope[k]] & 1) << k;
+    v = combine == Combine::Sum ? v + f.table[idx] : std::max(v, f.table[idx]);
+  }
+  return v;
+}
+
+void FactorGraph::simplify() {
+  std::vector<Factor> kept;
+  kept.reserve(factors.size());
+  for (Factor& f : factors) {
+    for (size_t k = f.scope.size(); k-- > 0;) {
+      const size_t bit = size_t(1) << k;
+      bool depends = false;
+      for (size_t idx = 0; idx < f.table.size() && !depends; ++idx)
+        depends = (idx & bit) == 0 && f.table[idx] != f.table[idx | bit];
+      if (depends) continue;
+      // Keep the entries with bit k clear, closing the gap.
+      std::vector<double> t;
+      t.reserve(f.table.size() / 2);
+      for (size_t idx = 0; idx < f.table.size(); ++idx)
+        if ((idx & bit) == 0) t.push_back(f.table[idx]);
+      f.table.swap(t);
+      f.scope.erase(f.scope.begin() + static_cast<std::ptrdiff_t>(k));
+    }
+    if (f.scope.empty()) {
+      constant = combine == Combine::Sum ? constant + f.table[0] : std::max(constant, f.table[0]);
+    } else {
+      kept.push_back(std::move(f));
+    }
+  }
+  factors.swap(kept);
+}
+
+Decomposition decompose(const FactorGraph& g) {
+  const uint32_t n = g.num_vars;
+  Decomposition d;
+  // Interaction graph: variables sharing a factor are neighbours.
+  std::vector<std::vector<uint32_t>> adj(n);
+  for (const Factor& f : g.factors)
+    for (uint32_t a : f.scope)
+      for (uint32_t b : f.scope)
+        if (a != b) adj[a].push_back(b);
+  for (auto& a : adj) {
+    std::sort(a.begin(), a.end());
+    a.erase(std::unique(a.begin(), a.end()), a.end());
+  }
+  // Connected components (for reporting widths per component).
+  d.component.assign(n, UINT32_MAX);
+  for (uint32_t s = 0; s < n; ++s) {
+    if (d.component[s] != UINT32_MAX) continue;
+    std::vector<uint32_t> stack = {s};
+    d.component[s] = d.num_components;
+    while (!stack.empty()) {
+      const uint32_t v = stack.back();
+      stack.pop_back();
+      for (uint32_t w : adj[v])
+        if (d.component[w] == UINT32_MAX) d.component[w] = d.num_components, stack.push_back(w);
+    }
+    ++d.num_components;
+  }
+  d.component_width.assign(d.num_components, 0);
+  // Min-degree elimination with fill-in; ties by variable index (deterministic).
+  using Entry = std::pair<uint32_t, uint32_t>;  // (degree, variable)
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
+  for (uint32_t v = 0; v < n; ++v) heap.push({static_cast<uint32_t>(adj[v].size()), v});
+  std::vector<uint8_t> gone(n, 0);
+  d.order.reserve(n);
+  d.bags.reserve(n);
+  while (!heap.empty()) {
+    const auto [deg, v] = heap.top();
+    heap.pop();
+    if (gone[v] || deg != adj[v].size()) continue;  // stale entry
+    gone[v] = 1;
+    std::vector<uint32_t> bag = {v};
+    bag.insert(bag.end(), adj[v].begin(), adj[v].end());
+    d.width = std::max(d.width, static_cast<uint32_t>(bag.size() - 1));
+    d.component_width[d.component[v]] = std::max(d.component_width[d.component[v]], static_cast<uint32_t>(bag.size() - 1));
+    // Make the neighbours a clique, remove v.
+    for (uint32_t a : adj[v]) {
+      auto& na = adj[a];
+      na.erase(std::lower_bound(na.begin(), na.end(), v));
+      std::vector<uint32_t> merged;
+      merged.reserve(na.size() + adj[v].size());
+      std::set_union(na.begin(), na.end(), adj[v].begin(), adj[v].end(), std::back_inserter(merged));
+      merged.erase(std::remove(merged.begin(), merged.end(), a), merged.end());
+      na.swap(merged);
+      heap.push({static_cast<uint32_t>(na.size()), a});
+    }
+    adj[v].clear();
+    d.order.push_back(v);
+    d.bags.push_back(std::move(bag));
+  }
+  return d;
+}
+
+namespace {
+
+// A table over a set of variables (sorted by elimination position).
+struct Table {
+  std::vector<uint32_t> vars;
+  std::vector<double> values;
+};
+
+}  // namespace
+
+DpResult solve_exact(const FactorGraph& g, const DpLimits& limits) {
+  DpResult r;
+  r.decomposition = decompose(g);
+  const Decomposition& d = r.decomposition;
+  if (d.width > limits.max_width) {
+    uint32_t worst = 0;
+    for (uint32_t c = 0; c < d.num_components; ++c)
+      if (d.component_width[c] > d.component_width[worst]) worst = c;
+    uint32_t size = 0;
+    for (uint32_t v = 0; v < g.num_vars; ++v) size += d.component[v] == worst;
+    throw LimitError("exact: a component of " + std::to_string(size) + " quads has a tree decomposition of width " +
+                     std::to_string(d.width) + " (tables of 2^" + std::to_string(d.width + 1) +
+                     " entries); the memory cap allows width " + std::to_string(limits.max_width) +
+                     "; use --method approx");
+  }
+  const uint32_t n = g.num_vars;
+  std::vector<uint32_t> position(n);
+  for (uint32_t i = 0; i < n; ++i) position[d.order[i]] = i;
+  const bool maximise = g.sense == Sense::Max;
+  const bool sum = g.combine == Combine::Sum;
+  auto better = [&](double a, double b) { return maximise ? a > b : a < b; };
+
+  // Buckets: each factor goes to its earliest-eliminated variable.
+  std::vector<std::vector<Table>> bucket(n);
+  double constant = g.constant;
+  for (const Factor& f : g.factors) {
+    if (f.scope.empty()) {
+      constant = sum ? constant + f.table[0] : std::max(constant, f.table[0]);
+      continue;
+    }
+    uint32_t first = f.scope[0];
+    for (uint32_t v : f.scope)
+      if (position[v] < position[first]) first = v;
+    bucket[first].push_back(Table{f.scope, f.table});
+  }
+
+  // Eliminate in order; keep for each variable its later neighbours and the best
+  // value of it for each of their assignments (the back-pointers).
+  std::vector<std::vector<uint32_t>> later(n);
+  std::vector<std::vector<uint8_t>> best_value(n);
+  for (uint32_t i = 0; i < n; ++i) {
+    const uint32_t v = d.order[i];
+    if (limits.progress && (i & 255) == 0 && !limits.progress(i, n)) throw Cancelled();
+    std::vector<uint32_t> bag = d.bags[i];  // v first, then its later neighbours
+    std::sort(bag.begin() + 1, bag.end(), [&](uint32_t a, uint32_t b) { return position[a] < position[b]; });
+    const uint32_t k = static_cast<uint32_t>(bag.size());
+    std::vector<double> combined(size_t(1) << k, sum ? 0.0 : -INFINITY);
+    std::vector<uint32_t> bit(k);
+    for (const Table& t : bucket[v]) {
+      for (size_t j = 0; j < t.vars.size(); ++j)
+        bit[j] = static_cast<uint32_t>(std::find(bag.begin(), bag.end(), t.vars[j]) - bag.begin());
+      for (size_t idx = 0; idx < combined.size(); ++idx) {
+        size_t ti = 0;
+        for (size_t j = 0; j < t.vars.size(); ++j) ti |= ((idx >> bit[j]) & 1) << j;
+        combined[idx] = sum ? combined[idx] + t.values[ti] : std::max(combined[idx], t.values[ti]);
+      }
+    }
+    bucket[v].clear();
+    bucket[v].shrink_to_fit();
+    // Optimise v (bit 0) out.
+    Table message{std::vector<uint32_t>(bag.begin() + 1, bag.end()), std::vector<double>(size_t(1) << (k - 1))};
+    best_value[v].resize(message.values.size());
+    for (size_t rest = 0; rest < message.values.size(); ++rest) {
+      const double v0 = combined[rest << 1], v1 = combined[(rest << 1) | 1];
+      const bool one = better(v1, v0);
+      best_value[v][rest] = one;
+      message.values[rest] = one ? v1 : v0;
+    }
+    later[v] = message.vars;
+    if (message.vars.empty()) {
+      constant = sum ? constant + message.values[0] : std::max(constant, message.values[0]);
+    } else {
+      bucket[message.vars[0]].push_back(std::move(message));
+    }
+  }
+  // Rebuild the optimal choice in reverse order.
+  r.choice.assign(n, 0);
+  for (uint32_t i = n; i-- > 0;) {
+    const uint32_t v = d.order[i];
+    size_t idx = 0;
+    for (size_t j = 0; j < later[v].size(); ++j) idx |= size_t(r.choice[later[v][j]]) << j;
+    r.choice[v] = best_value[v][idx];
+  }
+  r.value = constant;
+  return r;
+}
+
+}  // namespace hodt

@@ -1,0 +1,196 @@
+#include "hodt/factor_models.hpp"
+
+#include <algorithm>
+
+#include "hodt/bottleneck.hpp"
+#include "hodt/measures.hpp"
+#include "hodt/pair_measures.hpp"
+#include "hodt/skeleton.hpp"
+
+namespace hodt {
+
+namespace {
+
+// A term per vertex: value(v, its neighbours) over all choices of the quads at v.
+template <class Value>
+void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, Value value) {
+  const Mesh& m = fo.base;
+  const VertexIncidence vi = vertex_incidence(fo);
+  std::vector<uint8_t> on_hull(m.num_vertices(), 0);
+  for (uint32_t v : m.hull) on_hull[v] = 1;
+  std::vector<uint8_t> diagonal(m.triangles.size(), 0);
+  for (const Quad& q : fo.quads) diagonal[q.edge] = diagonal[static_cast<uint32_t>(m.halfedges[q.edge])] = 1;
+  // Fixed neighbours: the ends of non-diagonal edges (each seen from both ends, or
+  // once on the hull: then the apex side gives the other).
+  const Stars st = build_stars(m);
+  std::vector<uint32_t> fixed;
+  std::vector<const double*> nb;
+  for (uint32_t v = 0; v < m.num_vertices(); ++v) {
+    if (interior_only && on_hull[v]) continue;
+    fixed.clear();
+    const uint32_t* qs = vi.quads_begin(v);
+    const uint32_t nq = static_cast<uint32_t>(vi.quads_end(v) - qs);
+    for (uint32_t k = st.offset[v]; k < st.offset[v + 1]; ++k) {
+      const uint32_t w = st.neighbor[k];
+      bool is_diagonal = false;  // v w is the base diagonal of one of v's quads
+      for (uint32_t i = 0; i < nq; ++i) {
+        const Quad& q = fo.quads[qs[i]];
+        is_diagonal = is_diagonal || (q.a == v && q.b == w) || (q.b == v && q.a == w);
+      }
+      if (!is_diagonal) fixed.push_back(w);
+    }
+    Factor f;
+    f.scope.assign(qs, qs + nq);
+    f.table.resize(size_t(1) << nq);
+    for (size_t idx = 0; idx < f.table.size(); ++idx) {
+      nb.clear();
+      for (uint32_t w : fixed) nb.push_back(m.point(w));
+      for (uint32_t i = 0; i < nq; ++i) {
+        const Quad& q = fo.quads[qs[i]];
+        const bool flipped = (idx >> i) & 1;
+        // The chosen diagonal adds the opposite corner for its two ends.
+        if (!flipped && (v == q.a || v == q.b)) nb.push_back(m.point(v == q.a ? q.b : q.a));
+        if (flipped && (v == q.c || v == q.d)) nb.push_back(m.point(v == q.c ? q.d : q.c));
+      }
+      f.table[idx] = value(m.point(v), nb);
+    }
+    if (nq == 0) {
+      g.constant = g.combine == Combine::Sum ? g.constant + f.table[0] : std::max(g.constant, f.table[0]);
+    } else {
+      g.factors.push_back(std::move(f));
+    }
+  }
+}
+
+void add_factor(FactorGraph& g, std::vector<uint32_t> scope, std::vector<double> table) {
+  g.factors.push_back(Factor{std::move(scope), std::move(table)});
+}
+
+// Convex edges: a term per edge of the skeleton and per quad diagonal.
+void convex_edge_terms(const FirstOrder& fo, FactorGraph& g) {
+  const Mesh& m = fo.base;
+  auto convex = [&](const Tri& left, uint32_t x) {  // edge left[0] -> left[1], x across it
+    return edge_shape(m.point(left[0]), m.point(left[1]), m.point(left[2]), m.point(x)) == kConvexEdge ? 1.0 : 0.0;
+  };
+  auto across = [](const Tri& t, uint32_t u, uint32_t v) {  // the vertex of t other than u, v
+    for (uint32_t w : t)
+      if (w != u && w != v) return w;
+    return t[0];
+  };
+  std::vector<uint8_t> diagonal(m.triangles.size(), 0);
+  for (uint32_t q = 0; q < fo.num_quads(); ++q) {
+    const Quad& k = fo.quads[q];
+    diagonal[k.edge] = diagonal[static_cast<uint32_t>(m.halfedges[k.edge])] = 1;
+    add_factor(g, {q}, {convex({k.a, k.b, k.c}, k.d), convex({k.d, k.c, k.a}, k.b)});
+  }
+  for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
+    const int32_t f = m.halfedges[e];
+    if (f < static_cast<int32_t>(e) || diagonal[e]) continue;
+    const uint32_t u = m.origin(e), v = m.target(e);
+    const Side L = side_of(fo, e), R = side_of(fo, static_cast<uint32_t>(f));
+    auto value = [&](int x, int y) {
+      const Tri& l = L.tri[x];
+      // Rotate l to start at u (it holds u -> v).
+      const Tri lu = l[0] == u ? l : l[1] == u ? Tri{l[1], l[2], l[0]} : Tri{l[2], l[0], l[1]};
+      return convex(lu, across(R.tri[y], u, v));
+    };
+    if (L.quad < 0 && R.quad < 0) g.constant += value(0, 0);
+    else if (R.quad < 0) add_factor(g, {static_cast<uint32_t>(L.quad)}, {value(0, 0), value(1, 0)});
+    else if (L.quad < 0) add_factor(g, {static_cast<uint32_t>(R.quad)}, {value(0, 0), value(0, 1)});
+    else
+      add_factor(g, {static_cast<uint32_t>(L.quad), static_cast<uint32_t>(R.quad)},
+                 {value(0, 0), value(1, 0), value(0, 1), value(1, 1)});
+  }
+}
+
+void pair_terms(const BottleneckModel& bm, FactorGraph& g) {
+  g.constant = std::max(g.constant, bm.floor);
+  for (const PairTerm& t : bm.terms) {
+    if (t.r < 0) add_factor(g, {static_cast<uint32_t>(t.q)}, {t.v[0], t.v[1]});
+    else add_factor(g, {static_cast<uint32_t>(t.q), static_cast<uint32_t>(t.r)}, {t.v[0], t.v[1], t.v[2], t.v[3]});
+  }
+}
+
+}  // namespace
+
+FactorGraph factor_model(const FirstOrder& fo, Objective o) {
+  const Mesh& m = fo.base;
+  FactorGraph g;
+  g.num_vars = fo.num_quads();
+  g.sense = info(o).sense;
+  auto count = [](bool b) { return b ? 1.0 : 0.0; };
+  auto ratio = [&](const Tri& s, const Tri& t) { return pair_area_ratio(m, s, t); };
+  auto angle = [&](const Tri& s, const Tri& t) { return pair_normal_angle(m, s, t); };
+  auto circle = [&](const Tri& s, const Tri& t) { return pair_enclosing_circle(m, s, t); };
+  switch (o) {
+    case Objective::MaxConvexVertices:
+      vertex_terms(fo, true, g, [&](const double* p, const auto& nb) {
+        return count(vertex_class(p, nb.data(), static_cast<uint32_t>(nb.size())) == kConvex);
+      });
+      break;
+    case Objective::MinMixedVertices:
+      vertex_terms(fo, true, g, [&](const double* p, const auto& nb) {
+        return count(vertex_class(p, nb.data(), static_cast<uint32_t>(nb.size())) == kMixed);
+      });
+      break;
+    case Objective::MinLocalMinima:
+      vertex_terms(fo, true, g, [&](const double* p, const auto& nb) {
+        return count(extremum(p, nb.data(), static_cast<uint32_t>(nb.size())) == kLocalMinimum);
+      });
+      break;
+    case Objective::MinLocalExtrema:
+      vertex_terms(fo, true, g, [&](const double* p, const auto& nb) {
+        return count(extremum(p, nb.data(), static_cast<uint32_t>(nb.size())) != kNotExtremum);
+      });
+      break;
+    case Objective::MinmaxDegree:
+      g.combine = Combine::Max;
+      vertex_terms(fo, false, g, [](const double*, const auto& nb) { return static_cast<double>(nb.size()); });
+      break;
+    case Objective::MaxConvexEdges:
+      convex_edge_terms(fo, g);
+      break;
+    case Objective::MinTotalEdgeLength: {
+      // Fixed edges as one constant, each quad its diagonal's length.
+      std::vector<double> fixed;
+      std::vector<uint8_t> diagonal(m.triangles.size(), 0);
+      for (uint32_t q = 0; q < fo.num_quads(); ++q) {
+        const Quad& k = fo.quads[q];
+        diagonal[k.edge] = diagonal[static_cast<uint32_t>(m.halfedges[k.edge])] = 1;
+        add_factor(g, {q}, {edge_length(m.point(k.a), m.point(k.b)), edge_length(m.point(k.c), m.point(k.d))});
+      }
+      for (uint32_t e = 0; e < m.halfedges.size(); ++e)
+        if (!diagonal[e] && m.halfedges[e] < static_cast<int32_t>(e))
+          fixed.push_back(edge_length(m.point(m.origin(e)), m.point(m.target(e))));
+      g.constant = order_free_sum(std::move(fixed));
+      break;
+    }
+    case Objective::MinmaxTriangleArea: {
+      g.combine = Combine::Max;
+      for (uint32_t t = 0; t < m.num_triangles(); ++t)
+        if (fo.quad_of_triangle[t] < 0)
+          g.constant = std::max(g.constant, triangle_area(m.point(m.triangles[3 * t]), m.point(m.triangles[3 * t + 1]),
+                                                          m.point(m.triangles[3 * t + 2])));
+      for (uint32_t q = 0; q < fo.num_quads(); ++q) {
+        double v[2];
+        for (int x = 0; x < 2; ++x) {
+          uint32_t t[6];
+          fo.triangles_of(q, x, t);
+          v[x] = std::max(triangle_area(m.point(t[0]), m.point(t[1]), m.point(t[2])),
+                          triangle_area(m.point(t[3]), m.point(t[4]), m.point(t[5])));
+        }
+        add_factor(g, {q}, {v[0], v[1]});
+      }
+      break;
+    }
+    case Objective::MinmaxEdgeAreaRatio: g.combine = Combine::Max; pair_terms(edge_pair_model(fo, ratio), g); break;
+    case Objective::MinmaxEdgeNormalAngle: g.combine = Combine::Max; pair_terms(edge_pair_model(fo, angle), g); break;
+    case Objective::MinmaxEdgeEnclosingCircle: g.combine = Combine::Max; pair_terms(edge_pair_model(fo, circle), g); break;
+    case Objective::MinmaxVertexAreaRatio: g.combine = Combine::Max; pair_terms(vertex_pair_model(fo, ratio), g); break;
+    case Objective::MinmaxVertexNormalAngle: g.combine = Combine::Max; pair_terms(vertex_pair_model(fo, angle), g); break;
+  }
+  g.simplify();
+  return g;
+}
+
+}  // namespace hodt

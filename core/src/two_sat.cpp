@@ -1,0 +1,62 @@
+#include "hodt/two_sat.hpp"
+
+namespace hodt {
+
+std::optional<std::vector<uint8_t>> TwoSat::solve() const {
+  const uint32_t nl = 2 * n_;
+  // Implication graph in compressed rows: (a or b) gives !a -> b and !b -> a.
+  std::vector<uint32_t> start(nl + 1, 0), adj(2 * clauses_.size());
+  for (const Clause& c : clauses_) ++start[(c.a ^ 1) + 1], ++start[(c.b ^ 1) + 1];
+  for (uint32_t i = 0; i < nl; ++i) start[i + 1] += start[i];
+  std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+  for (const Clause& c : clauses_) adj[fill[c.a ^ 1]++] = c.b, adj[fill[c.b ^ 1]++] = c.a;
+
+  // Iterative Tarjan: components are numbered in reverse topological order.
+  constexpr uint32_t kNone = UINT32_MAX;
+  std::vector<uint32_t> index(nl, kNone), low(nl), comp(nl, kNone), stack, call, edge;
+  uint32_t next_index = 0, next_comp = 0;
+  for (uint32_t root = 0; root < nl; ++root) {
+    if (index[root] != kNone) continue;
+    call.push_back(root);
+    edge.push_back(start[root]);
+    index[root] = low[root] = next_index++;
+    stack.push_back(root);
+    while (!call.empty()) {
+      const uint32_t v = call.back();
+      uint32_t& e = edge.back();
+      if (e < start[v + 1]) {
+        const uint32_t w = adj[e++];
+        if (index[w] == kNone) {
+          index[w] = low[w] = next_index++;
+          stack.push_back(w);
+          call.push_back(w);
+          edge.push_back(start[w]);
+        } else if (comp[w] == kNone && index[w] < low[v]) {
+          low[v] = index[w];
+        }
+        continue;
+      }
+      if (low[v] == index[v]) {
+        uint32_t w;
+        do {
+          w = stack.back();
+          stack.pop_back();
+          comp[w] = next_comp;
+        } while (w != v);
+        ++next_comp;
+      }
+      call.pop_back();
+      edge.pop_back();
+      if (!call.empty()) low[call.back()] = std::min(low[call.back()], low[v]);
+    }
+  }
+  std::vector<uint8_t> value(n_);
+  for (uint32_t v = 0; v < n_; ++v) {
+    const uint32_t f = comp[lit(v, false)], t = comp[lit(v, true)];
+    if (f == t) return std::nullopt;
+    value[v] = t < f;  // the literal later in topological order is true
+  }
+  return value;
+}
+
+}  // namespace hodt
