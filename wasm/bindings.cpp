@@ -111,13 +111,14 @@ class TerrainHandle {
     const auto& v = t_.delaunay_values();
     return copy_out("Float64Array", std::vector<double>(v.begin(), v.end()));
   }
-  val solve(const std::string& objective, const std::string& method, double epsilon) const {
+  val solve(const std::string& objective, const std::string& method, double epsilon, bool trace) const {
     return guarded([&] {
       SolveOptions options;
       const auto m = parse_method(method);
       if (!m) throw InputError("unknown method '" + method + "'; valid methods: " + method_ids());
       options.method = *m;
       options.epsilon = epsilon;
+      options.trace = trace;
       const Objective o = objective_of(objective);
       Solution s = hodt::solve(t_.structure(), o, options);
       s.delaunay_value = t_.delaunay_values()[static_cast<size_t>(o)];
@@ -132,6 +133,26 @@ class TerrainHandle {
       out.set("flipped", count_flipped(s.choice));
       out.set("timeMs", s.time_ms);
       out.set("choice", copy_out("Uint8Array", s.choice));
+      if (s.critical) {
+        val c = val::object();
+        c.set("first", copy_out("Uint32Array", t_.to_input(std::vector<uint32_t>(s.critical->first.begin(), s.critical->first.end()))));
+        c.set("second", copy_out("Uint32Array", t_.to_input(std::vector<uint32_t>(s.critical->second.begin(), s.critical->second.end()))));
+        c.set("value", s.critical->value);
+        out.set("critical", c);
+      } else {
+        out.set("critical", val::null());
+      }
+      val steps = val::array();
+      for (const ThresholdStep& t : s.trace) {
+        val step = val::object();
+        step.set("threshold", t.threshold);
+        step.set("satisfiable", t.satisfiable);
+        step.set("clauses", t.clauses);
+        step.set("forced", t.forced);
+        step.set("immediateNo", t.immediate_no);
+        steps.call<void>("push", step);
+      }
+      out.set("trace", steps);
       return out;
     });
   }

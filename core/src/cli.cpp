@@ -14,7 +14,7 @@ namespace {
 const char* kUsage =
     "usage: hodt stats FILE [--dedupe first]\n"
     "       hodt solve FILE --objective ID [--method brute-force|exact|approx|auto]\n"
-    "                  [--epsilon E] [--order K] [--triangles] [--dedupe first]\n"
+    "                  [--epsilon E] [--order K] [--triangles] [--trace] [--dedupe first]\n"
     "FILE: CSV/TSV/whitespace 'x y z' lines (optional header), JSON [[x,y,z],...],\n"
     "      or an ESRI ASCII grid (.asc); '-' reads standard input.\n"
     "Prints JSON. Exit codes: 0 ok, 2 bad input or usage, 3 refused (a limit).\n";
@@ -67,6 +67,7 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
         if (k != static_cast<int>(k) || k < 1 || k > 64) throw Usage("--order expects an integer from 1 to 64");
         order = static_cast<int>(k);
       } else if (a == "--triangles") triangles = true;
+      else if (a == "--trace") options.trace = true;
       else if (a == "--dedupe") {
         const std::string& d = value();
         if (d != "first" && d != "error") throw Usage("--dedupe expects 'first' or 'error', got '" + d + "'");
@@ -101,7 +102,7 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
     } else {
       Solution s = solve(terrain.structure(), *objective, options);
       s.delaunay_value = terrain.delaunay_values()[static_cast<size_t>(*objective)];
-      r.out = solution_json(terrain, s, triangles) + "\n";
+      r.out = solution_json(terrain, s, triangles, options.trace) + "\n";
     }
   } catch (const InputError& e) {
     r.exit_code = 2;

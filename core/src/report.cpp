@@ -19,7 +19,14 @@ std::string stats_json(const Terrain& t) {
   return s + "}}";
 }
 
-std::string solution_json(const Terrain& t, const Solution& r, bool with_triangles) {
+namespace {
+std::string triangle_json(const Terrain& t, const Tri& tri) {
+  return "[" + std::to_string(t.to_input(tri[0])) + ", " + std::to_string(t.to_input(tri[1])) + ", " +
+         std::to_string(t.to_input(tri[2])) + "]";
+}
+}  // namespace
+
+std::string solution_json(const Terrain& t, const Solution& r, bool with_triangles, bool with_trace) {
   const ObjectiveInfo& oi = info(r.objective);
   std::string s = "{\"objective\": \"" + std::string(oi.id) + "\", \"sense\": \"" +
                   (oi.sense == Sense::Min ? "min" : "max") + "\", \"method\": \"" + r.method +
@@ -29,6 +36,17 @@ std::string solution_json(const Terrain& t, const Solution& r, bool with_triangl
                   ", \"bound\": " + (r.bound ? format_number(*r.bound) : "null") +
                   ", \"flipped\": " + std::to_string(count_flipped(r.choice)) +
                   ", \"timeMs\": " + format_number(r.time_ms);
+  if (r.critical)
+    s += ", \"critical\": {\"first\": " + triangle_json(t, r.critical->first) + ", \"second\": " +
+         triangle_json(t, r.critical->second) + ", \"value\": " + format_number(r.critical->value) + "}";
+  if (with_trace) {
+    s += ", \"trace\": [";
+    for (size_t k = 0; k < r.trace.size(); ++k)
+      s += std::string(k ? ", " : "") + "{\"threshold\": " + format_number(r.trace[k].threshold) +
+           ", \"satisfiable\": " + (r.trace[k].satisfiable ? "true" : "false") +
+           ", \"clauses\": " + std::to_string(r.trace[k].clauses) + "}";
+    s += "]";
+  }
   if (with_triangles) {
     const std::vector<uint32_t> tris = t.to_input(triangulate(t.structure(), r.choice).triangles);
     s += ", \"triangles\": [";

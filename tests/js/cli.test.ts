@@ -108,3 +108,39 @@ describe('bad input: exit 2 and one line naming what is wrong', () => {
     expect(r.err).toMatch(/refuses m = \d+ flippable quads \(at most 24\)/);
   });
 });
+
+describe('exact methods from the CLI', () => {
+  it.each(IDS)('%s: exact equals brute force, native equals wasm', (id) => {
+    const args = ['solve', fixture('uniform-12.csv'), '--objective', id];
+    const exact = JSON.parse(hodt([...args, '--method', 'exact']).out);
+    const brute = JSON.parse(hodt([...args, '--method', 'brute-force']).out);
+    expect(exact.optimal).toBe(true);
+    expect(exact.value).toBeCloseTo(brute.value, 12);
+    expect(withoutTime(hodt([...args, '--method', 'exact', '--triangles']).out)).toEqual(
+      withoutTime(native([...args, '--method', 'exact', '--triangles']).out),
+    );
+  });
+
+  it('min-max objectives report the critical pair and, with --trace, the search', () => {
+    const r = hodt(['solve', fixture('dem-hills-400.txt'), '--objective', 'minmax-edge-normal-angle', '--method', 'exact', '--trace']);
+    expect(r.code).toBe(0);
+    const j = JSON.parse(r.out);
+    expect(j.critical.value).toBe(j.value);
+    expect(j.critical.first).toHaveLength(3);
+    expect(j.trace.length).toBeGreaterThan(0);
+    for (const step of j.trace) {
+      expect(Object.keys(step)).toEqual(['threshold', 'satisfiable', 'clauses']);
+      expect(step.satisfiable).toBe(step.threshold >= j.value);
+    }
+    expect(j.value).toBeLessThanOrEqual(j.delaunayValue);
+  });
+
+  it('exact runs on a few hundred points for every objective, same as native', () => {
+    for (const id of IDS) {
+      const args = ['solve', fixture('dem-hills-400.txt'), '--objective', id, '--method', 'exact'];
+      const w = hodt(args);
+      expect(w.code).toBe(0);
+      expect(withoutTime(w.out)).toEqual(withoutTime(native(args).out));
+    }
+  });
+});

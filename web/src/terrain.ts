@@ -37,6 +37,21 @@ export interface SolveOptions {
   method?: Method;
   /** Approximation schemes: within a factor (1 - epsilon) of optimal. Default 0.25. */
   epsilon?: number;
+  /** Min-max pair objectives: record every threshold the search tested. */
+  trace?: boolean;
+}
+
+/** One threshold of the bottleneck search (paper, Section 2.1). */
+export interface ThresholdStep {
+  threshold: number;
+  /** Is there a first order triangulation with every pair at most the threshold? */
+  satisfiable: boolean;
+  /** 2-SAT clauses built (each forced choice counts one). */
+  clauses: number;
+  /** Quads whose diagonal the eliminations forced. */
+  forced: number;
+  /** Answered "no" by the eliminations alone (a fixed pair, or a quad with both diagonals over). */
+  immediateNo: boolean;
 }
 
 export interface Solution {
@@ -57,6 +72,10 @@ export interface Solution {
   timeMs: number;
   /** The choice that gives the triangulation. */
   choice: Choice;
+  /** Min-max pair objectives: the two triangles (input indices) attaining the value. */
+  critical: { first: Uint32Array; second: Uint32Array; value: number } | null;
+  /** The tested thresholds, in order (with `trace: true`). */
+  trace: ThresholdStep[];
 }
 
 /**
@@ -135,7 +154,7 @@ export class Terrain implements Disposable {
   /** Optimises an objective over the first order triangulations. */
   solve(objective: ObjectiveId, options: SolveOptions = {}): Solution {
     return guard(() => {
-      const s = this.#handle.solve(objective, options.method ?? 'auto', options.epsilon ?? 0.25);
+      const s = this.#handle.solve(objective, options.method ?? 'auto', options.epsilon ?? 0.25, options.trace ?? false);
       return { ...s, objective: s.objective as ObjectiveId };
     });
   }

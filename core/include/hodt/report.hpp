@@ -10,7 +10,8 @@ namespace hodt {
 // {"points", "triangles", "edges", "flippable", "hullVertices", "delaunay": {id: value}}
 std::string stats_json(const Terrain& terrain);
 // {"objective", "sense", "method", "value", "delaunayValue", "optimal", "bound",
-//  "flipped", "timeMs"[, "triangles"]}
-std::string solution_json(const Terrain& terrain, const Solution& s, bool with_triangles);
+//  "flipped", "timeMs"[, "critical": {"first", "second", "value"}]
+//  [, "trace": [{"threshold", "satisfiable", "clauses"}, ...]][, "triangles"]}
+std::string solution_json(const Terrain& terrain, const Solution& s, bool with_triangles, bool with_trace = false);
 
 }  // namespace hodt

@@ -22,6 +22,8 @@ export interface RawSolution {
   flipped: number;
   timeMs: number;
   choice: Uint8Array;
+  critical: { first: Uint32Array; second: Uint32Array; value: number } | null;
+  trace: { threshold: number; satisfiable: boolean; clauses: number; forced: number; immediateNo: boolean }[];
 }
 export interface RawTerrain {
   numPoints(): number;
@@ -37,7 +39,7 @@ export interface RawTerrain {
   measures(choice?: Uint8Array | null): RawMeasures;
   evaluate(choice?: Uint8Array | null): Float64Array;
   delaunayValues(): Float64Array;
-  solve(objective: string, method: string, epsilon: number): RawSolution;
+  solve(objective: string, method: string, epsilon: number, trace: boolean): RawSolution;
   enumerateAll(): Float64Array;
   statsJson(): string;
   delete(): void;
