@@ -30,7 +30,8 @@ VertexClass vertex_class(const double* p, const double* const* nb, uint32_t d) {
       if (o[i * d + j] != 0) { fi = i, fj = j; break; }
   if (fi == d) return kFlat;  // cannot happen for an interior vertex
   bool flat = true;
-  for (uint32_t k = 0; k < d && flat; ++k) flat = orient3d(p, nb[fi], nb[fj], nb[k]) == 0;
+  for (uint32_t k = 0; k < d && flat; ++k)  // (k = fi, fj are on the plane: skip the exact zero)
+    flat = k == fi || k == fj || orient3d(p, nb[fi], nb[fj], nb[k]) == 0;
   if (flat) return kFlat;
   // p is strictly below (above) the upper (lower) hull of its neighbours iff some
   // triangle of neighbours contains p in the plane and has p strictly below (above) it.
@@ -100,7 +101,8 @@ double normal_angle(const double* const t1[3], const double* const t2[3]) {
 }
 
 double edge_length(const double* a, const double* b) {
-  return std::hypot(b[0] - a[0], b[1] - a[1]);  // symmetric: |a - b| = |b - a| exactly
+  const double dx = b[0] - a[0], dy = b[1] - a[1];  // symmetric: (-d)^2 = d^2 exactly
+  return std::sqrt(dx * dx + dy * dy);              // sqrt is correctly rounded everywhere
 }
 
 double order_free_sum(std::vector<double> values) {
@@ -112,10 +114,8 @@ double order_free_sum(std::vector<double> values) {
 
 double enclosing_circle(const double* a, const double* b, const double* c, const double* d) {
   // Sorted, so that the radius does not depend on the order of the arguments.
-  const double* q[4] = {a, b, c, d};
-  std::sort(q, q + 4, xy_less);
-  const Point2 p[4] = {Point2(q[0][0], q[0][1]), Point2(q[1][0], q[1][1]), Point2(q[2][0], q[2][1]),
-                       Point2(q[3][0], q[3][1])};
+  const double* p[4] = {a, b, c, d};
+  std::sort(p, p + 4, xy_less);
   // The smallest enclosing circle has two or three of the points on its boundary:
   // the smallest candidate that contains all four (decided exactly) is the answer.
   double best = INFINITY;
@@ -123,18 +123,25 @@ double enclosing_circle(const double* a, const double* b, const double* c, const
     for (int j = i + 1; j < 4; ++j) {
       bool ok = true;
       for (int k = 0; k < 4 && ok; ++k)
-        if (k != i && k != j) ok = CGAL::side_of_bounded_circle(p[i], p[j], p[k]) != CGAL::ON_UNBOUNDED_SIDE;
-      if (ok) best = std::min(best, 0.5 * std::sqrt(CGAL::squared_distance(p[i], p[j])));
+        if (k != i && k != j) ok = diametral_sign(p[i], p[j], p[k]) >= 0;
+      if (ok) best = std::min(best, 0.5 * edge_length(p[i], p[j]));
     }
   for (int skip = 0; skip < 4; ++skip) {
-    int t[3], n = 0;
+    const double* t[3];
+    int n = 0;
     for (int k = 0; k < 4; ++k)
-      if (k != skip) t[n++] = k;
-    if (CGAL::orientation(p[t[0]], p[t[1]], p[t[2]]) == CGAL::COLLINEAR) continue;
-    if (CGAL::side_of_bounded_circle(p[t[0]], p[t[1]], p[t[2]], p[skip]) == CGAL::ON_UNBOUNDED_SIDE) continue;
-    best = std::min(best, std::sqrt(CGAL::squared_radius(p[t[0]], p[t[1]], p[t[2]])));
+      if (k != skip) t[n++] = p[k];
+    const int o = orient2d(t[0], t[1], t[2]);
+    if (o == 0 || in_circle_sign(t[0], t[1], t[2], p[skip]) * o < 0) continue;
+    best = std::min(best, circumradius(t[0], t[1], t[2]));
   }
   return best;
+}
+
+double circumradius(const double* a, const double* b, const double* c) {
+  // |ab| |bc| |ca| / (4 area), each factor computed the same way on every platform.
+  const double area2 = std::abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+  return edge_length(a, b) * edge_length(b, c) * edge_length(c, a) / (2 * area2);
 }
 
 Stars build_stars(const Mesh& m) {

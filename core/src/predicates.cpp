@@ -1,35 +1,84 @@
 #include "hodt/predicates.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "hodt/kernel.hpp"
 
 namespace hodt {
 namespace {
+// Semi-static filters (Shewchuk, "Adaptive precision floating-point arithmetic",
+// error bounds A): in round-to-nearest the double evaluation's sign is right when
+// |det| exceeds the bound; otherwise CGAL decides exactly. The bounds assume no
+// underflow, so tiny permanents also go to CGAL.
+constexpr double kEps = 0x1p-53;
+constexpr double kOrient2dBound = (3.0 + 16.0 * kEps) * kEps;
+constexpr double kOrient3dBound = (7.0 + 56.0 * kEps) * kEps;
+constexpr double kInCircleBound = (10.0 + 96.0 * kEps) * kEps;
+constexpr double kTiny = 0x1p-900;
+inline int sign_of(double d) { return (d > 0) - (d < 0); }
+
 Point2 p2(const double* p) { return Point2(p[0], p[1]); }
 Point3 p3(const double* p) { return Point3(p[0], p[1], p[2]); }
 int sign(CGAL::Sign s) { return static_cast<int>(s); }
 }  // namespace
 
 int orient2d(const double* a, const double* b, const double* c) {
+  const double l = (a[0] - c[0]) * (b[1] - c[1]), r = (a[1] - c[1]) * (b[0] - c[0]);
+  const double det = l - r, sum = std::abs(l) + std::abs(r);
+  if (std::abs(det) > kOrient2dBound * sum && sum > kTiny) return sign_of(det);
   return sign(CGAL::orientation(p2(a), p2(b), p2(c)));
 }
 
 int orient3d(const double* a, const double* b, const double* c, const double* d) {
+  const double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
+  const double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
+  const double adz = a[2] - d[2], bdz = b[2] - d[2], cdz = c[2] - d[2];
+  const double bc = bdx * cdy - cdx * bdy, ca = cdx * ady - adx * cdy, ab = adx * bdy - bdx * ady;
+  // Shewchuk's orient3d is positive when d is below the plane of counterclockwise
+  // a, b, c; ours is positive above, hence the minus.
+  const double det = adz * bc + bdz * ca + cdz * ab;
+  const double perm = (std::abs(bdx * cdy) + std::abs(cdx * bdy)) * std::abs(adz) +
+                      (std::abs(cdx * ady) + std::abs(adx * cdy)) * std::abs(bdz) +
+                      (std::abs(adx * bdy) + std::abs(bdx * ady)) * std::abs(cdz);
+  if (std::abs(det) > kOrient3dBound * perm && perm > kTiny) return -sign_of(det);
   return sign(CGAL::orientation(p3(a), p3(b), p3(c), p3(d)));
 }
 
-int compare_xy(const double* a, const double* b) {
-  return sign(CGAL::compare_xy(p2(a), p2(b)));
+int compare_xy(const double* a, const double* b) {  // comparisons of doubles are exact
+  return a[0] < b[0] ? -1 : a[0] > b[0] ? 1 : a[1] < b[1] ? -1 : a[1] > b[1] ? 1 : 0;
+}
+
+int in_circle_sign(const double* a, const double* b, const double* c, const double* d) {
+  const double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
+  const double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
+  const double alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy, clift = cdx * cdx + cdy * cdy;
+  const double bc = bdx * cdy - cdx * bdy, ca = cdx * ady - adx * cdy, ab = adx * bdy - bdx * ady;
+  const double det = alift * bc + blift * ca + clift * ab;
+  const double perm = (std::abs(bdx * cdy) + std::abs(cdx * bdy)) * alift +
+                      (std::abs(cdx * ady) + std::abs(adx * cdy)) * blift +
+                      (std::abs(adx * bdy) + std::abs(bdx * ady)) * clift;
+  if (std::abs(det) > kInCircleBound * perm && perm > kTiny) return sign_of(det);
+  return sign(CGAL::side_of_oriented_circle(p2(a), p2(b), p2(c), p2(d)));
+}
+
+int diametral_sign(const double* p, const double* q, const double* r) {
+  const double t1 = (p[0] - r[0]) * (q[0] - r[0]), t2 = (p[1] - r[1]) * (q[1] - r[1]);
+  const double dot = t1 + t2, sum = std::abs(t1) + std::abs(t2);
+  // Each product is within eps of exact (the differences are rounded too: 3 eps in
+  // all per term), the sum adds one more rounding: 4 eps of the sum is safe.
+  if (std::abs(dot) > 4.5 * kEps * sum && sum > kTiny) return dot < 0 ? 1 : -1;
+  const CGAL::Bounded_side s = CGAL::side_of_bounded_circle(p2(p), p2(q), p2(r));
+  return s == CGAL::ON_BOUNDED_SIDE ? 1 : s == CGAL::ON_BOUNDARY ? 0 : -1;
 }
 
 // Mirrors Triangulation_2::side_of_oriented_circle(p0, p1, p2, p, perturb = true)
 // so that this predicate and CGAL's Delaunay triangulation decide degenerate
 // (cocircular) cases the same way.
 bool in_circle(const double* a, const double* b, const double* c, const double* d) {
+  const int s = in_circle_sign(a, b, c, d);
+  if (s != 0) return s > 0;
   const Point2 p0 = p2(a), p1 = p2(b), q2 = p2(c), p = p2(d);
-  const CGAL::Oriented_side os = CGAL::side_of_oriented_circle(p0, p1, q2, p);
-  if (os != CGAL::ON_ORIENTED_BOUNDARY) return os == CGAL::ON_POSITIVE_SIDE;
   const Point2* pts[4] = {&p0, &p1, &q2, &p};
   std::sort(pts, pts + 4, [](const Point2* u, const Point2* v) {
     return CGAL::compare_xy(*u, *v) == CGAL::SMALLER;

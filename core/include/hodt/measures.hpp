@@ -32,6 +32,8 @@ double area_ratio(double area1, double area2);
 double normal_angle(const double* const t1[3], const double* const t2[3]);
 // Radius of the smallest circle containing the four points (plane).
 double enclosing_circle(const double* a, const double* b, const double* c, const double* d);
+// Radius of the circle through three non-collinear points (plane).
+double circumradius(const double* a, const double* b, const double* c);
 // Plane length of a segment.
 double edge_length(const double* a, const double* b);
 // A sum that does not depend on the order of its terms (sorted, then added), so

@@ -19,6 +19,13 @@ int orient3d(const double* a, const double* b, const double* c, const double* d)
 // answers "on the circle" and agrees with every decision the triangulation made.
 bool in_circle(const double* a, const double* b, const double* c, const double* d);
 
+// Unperturbed in-circle sign: +1 if d is strictly inside the circle through a, b, c
+// (counterclockwise), 0 on it, -1 outside.
+int in_circle_sign(const double* a, const double* b, const double* c, const double* d);
+
+// Position of r against the circle with diameter pq: +1 inside, 0 on, -1 outside.
+int diametral_sign(const double* p, const double* q, const double* r);
+
 // Lexicographic xy order, exact: -1, 0, +1.
 int compare_xy(const double* a, const double* b);
 

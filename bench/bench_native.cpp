@@ -1,0 +1,78 @@
+// Native side of `npm run bench`: times the same steps the wasm side times through
+// the JS API, on the same points (a binary file of doubles x, y, z, ... written by
+// scripts/bench.mjs). Prints one JSON object of median milliseconds.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "hodt/delaunay.hpp"
+#include "hodt/error.hpp"
+#include "hodt/format.hpp"
+#include "hodt/solve.hpp"
+#include "hodt/terrain.hpp"
+
+using namespace hodt;
+using Clock = std::chrono::steady_clock;
+
+static double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+static double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::cerr << "usage: hodt_bench POINTS.bin REPS [OBJECTIVE...]\n";
+    return 2;
+  }
+  std::ifstream in(argv[1], std::ios::binary);
+  std::vector<double> xyz((std::istreambuf_iterator<char>(in)), {});
+  {
+    std::ifstream again(argv[1], std::ios::binary);
+    again.seekg(0, std::ios::end);
+    xyz.resize(static_cast<size_t>(again.tellg()) / sizeof(double));
+    again.seekg(0);
+    again.read(reinterpret_cast<char*>(xyz.data()), static_cast<std::streamsize>(xyz.size() * sizeof(double)));
+  }
+  const int reps = std::stoi(argv[2]);
+  std::vector<double> triangulate, structure;
+  Terrain terrain;
+  for (int r = 0; r < reps; ++r) {
+    auto t0 = Clock::now();
+    const TerrainPoints p = validate_points(xyz);
+    Mesh dt = delaunay(p.xyz);
+    triangulate.push_back(ms_since(t0));
+    t0 = Clock::now();
+    FirstOrder fo = first_order(std::move(dt));
+    structure.push_back(ms_since(t0));
+    if (r == 0) terrain = Terrain::from_points(xyz);
+  }
+  std::string out = "{\"triangulate\": " + format_number(median(triangulate)) +
+                    ", \"structure\": " + format_number(median(structure)) + ", \"quads\": " +
+                    std::to_string(terrain.structure().num_quads()) + ", \"objectives\": {";
+  for (int k = 3; k < argc; ++k) {
+    const auto o = parse_objective(argv[k]);
+    if (!o) return 2;
+    std::vector<double> t;
+    std::string error;
+    for (int r = 0; r < reps && error.empty(); ++r) {
+      SolveOptions opt;
+      opt.method = Method::Exact;
+      const auto t0 = Clock::now();
+      try {
+        solve(terrain.structure(), *o, opt);
+      } catch (const std::exception& e) {
+        error = e.what();
+      }
+      t.push_back(ms_since(t0));
+    }
+    out += std::string(k > 3 ? ", " : "") + "\"" + argv[k] + "\": " + (error.empty() ? format_number(median(t)) : "null");
+  }
+  std::cout << out << "}}\n";
+}
