@@ -1,6 +1,7 @@
 // The embind layer: converts typed arrays in and out of the core's types and turns
 // the core's exceptions into JS errors. No logic of its own: everything is in core/.
 #include <emscripten/bind.h>
+#include <emscripten/heap.h>
 #include <emscripten/val.h>
 
 #include "hodt/brute_force.hpp"
@@ -261,4 +262,6 @@ EMSCRIPTEN_BINDINGS(hodt) {
   emscripten::function("readPoints", &readPoints);
   emscripten::function("runCli", &runCli);
   emscripten::function("objectiveTable", &objectiveTable);
+  // Bytes of wasm memory reserved so far: memory only grows, so this is the peak.
+  emscripten::function("heapSize", +[]() { return static_cast<double>(emscripten_get_heap_size()); });
 }

@@ -2,6 +2,9 @@
 
 #include "hodt/delaunay.hpp"
 #include "hodt/error.hpp"
+#include "hodt/spatial_order.hpp"
+
+#include <algorithm>
 
 namespace hodt {
 
@@ -9,8 +12,16 @@ Terrain Terrain::from_points(const std::vector<double>& xyz, Dedupe dedupe, cons
   TerrainPoints pts = validate_points(xyz, dedupe, labels);
   Terrain t;
   t.num_input_ = static_cast<uint32_t>(xyz.size() / 3);
-  if (pts.input_index.size() != t.num_input_) t.input_index_ = std::move(pts.input_index);
-  t.fo_ = first_order(delaunay(std::move(pts.xyz)));
+  // Vertices are numbered along a space-filling curve (cache-friendly); every
+  // index leaving the terrain goes back through input_index_.
+  const std::vector<uint32_t> order = spatial_order(pts.xyz);
+  std::vector<double> sorted(pts.xyz.size());
+  t.input_index_.resize(order.size());
+  for (size_t k = 0; k < order.size(); ++k) {
+    std::copy_n(&pts.xyz[3 * size_t(order[k])], 3, &sorted[3 * k]);
+    t.input_index_[k] = pts.input_index[order[k]];
+  }
+  t.fo_ = first_order(delaunay(std::move(sorted)));
   return t;
 }
 

@@ -60,6 +60,7 @@ export interface HodtModule {
     read: (path: string) => string | Error,
   ): { exitCode: number; stdout: string; stderr: string };
   objectiveTable(): RawObjective[];
+  heapSize(): number;
 }
 export interface ModuleOptions {
   wasmBinary?: ArrayBuffer | Uint8Array;

@@ -1,0 +1,102 @@
+// `npm run bench`: hodt native, hodt wasm (in this Node process) and delaunator on
+// the same points, side by side, in one run. Medians of several repetitions.
+// `npm run bench -- --json` prints only the JSON summary.
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, writeFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import Delaunator from 'delaunator';
+import { loadModule } from '../dist/load.js';
+
+const root = fileURLToPath(new URL('..', import.meta.url));
+const jsonOnly = process.argv.includes('--json');
+const quick = process.argv.includes('--quick');
+const log = (...a) => { if (!jsonOnly) console.log(...a); };
+const tmp = mkdtempSync(join(tmpdir(), 'hodt-bench-'));
+
+const PIPELINE_OBJECTIVE = 'minmax-edge-area-ratio';
+const EXACT = ['max-convex-vertices', 'minmax-edge-area-ratio', 'minmax-edge-normal-angle', 'minmax-edge-enclosing-circle',
+  'minmax-vertex-area-ratio', 'minmax-vertex-normal-angle', 'min-local-minima', 'min-local-extrema',
+  'min-total-edge-length', 'minmax-triangle-area', 'max-convex-edges', 'min-mixed-vertices', 'minmax-degree'];
+
+function rng(seed) {
+  let s = seed >>> 0;
+  return () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
+}
+// Point sets: uniform; DEM-like (smooth hills sampled at random places); a grid
+// (every cell cocircular) with DEM heights.
+const hill = (x, y) => Math.sin(3 * x) * Math.cos(2.3 * y) + 0.5 * Math.sin(7.1 * x + 5.3 * y) + 0.2 * Math.cos(13 * x * y);
+const KINDS = {
+  uniform(n, r) { return Float64Array.from({ length: 3 * n }, r); },
+  dem(n, r) {
+    const p = new Float64Array(3 * n);
+    for (let i = 0; i < n; ++i) { const x = r(), y = r(); p.set([x, y, hill(x, y) + 0.01 * r()], 3 * i); }
+    return p;
+  },
+  grid(n) {
+    const w = Math.round(Math.sqrt(n)), p = new Float64Array(3 * w * w);
+    for (let j = 0; j < w; ++j) for (let i = 0; i < w; ++i) p.set([i, j, hill(i / w, j / w)], 3 * (j * w + i));
+    return p;
+  },
+};
+
+const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
+const time = (f) => { const t0 = performance.now(); const r = f(); return [performance.now() - t0, r]; };
+
+const summary = { date: new Date().toISOString(), machine: `${process.platform} ${process.arch}, node ${process.version}`, runs: [] };
+const sizes = quick ? [1e3, 1e4] : [1e3, 1e4, 1e5, 1e6];
+
+for (const kind of Object.keys(KINDS)) {
+  for (const n of sizes) {
+    const reps = n >= 1e6 ? 1 : n >= 1e5 ? 3 : 5;
+    const xyz = KINDS[kind](n, rng(n + kind.length));
+    const objectives = kind === 'grid' ? [PIPELINE_OBJECTIVE] : EXACT;
+    // delaunator: the triangulation everyone knows, alone.
+    const coords = new Float64Array(2 * (xyz.length / 3));
+    for (let i = 0; i < xyz.length / 3; ++i) coords[2 * i] = xyz[3 * i], coords[2 * i + 1] = xyz[3 * i + 1];
+    const dl = median(Array.from({ length: reps }, () => time(() => new Delaunator(coords))[0]));
+    // hodt native, same points.
+    const file = join(tmp, 'points.bin');
+    writeFileSync(file, Buffer.from(xyz.buffer));
+    const nat = JSON.parse(spawnSync(`${root}/build/native/hodt_bench`, [file, String(reps), ...objectives], { encoding: 'utf8', maxBuffer: 1 << 24 }).stdout);
+    // hodt wasm: a fresh module per size so that its heap size is this run's peak.
+    const module = await loadModule();
+    const terrainMs = [], solveMs = Object.fromEntries(objectives.map((o) => [o, []]));
+    let quads = 0;
+    for (let r = 0; r < reps; ++r) {
+      const [ms, t] = time(() => module.fromPoints(xyz, false));
+      terrainMs.push(ms);
+      quads = t.numQuads();
+      for (const o of objectives) {
+        try {
+          solveMs[o].push(time(() => t.solve(o, 'exact', 0.25, false))[0]);
+        } catch { solveMs[o].push(NaN); }
+      }
+      t.delete();
+    }
+    const wasm = { terrain: median(terrainMs), objectives: Object.fromEntries(objectives.map((o) => [o, median(solveMs[o])])) };
+    const heap = module.heapSize();
+    const pipeWasm = wasm.terrain + wasm.objectives[PIPELINE_OBJECTIVE];
+    const pipeNative = nat.terrain + nat.objectives[PIPELINE_OBJECTIVE];
+    const run = { kind, n: xyz.length / 3, quads, delaunatorMs: dl, native: nat, wasm, pipelineWasmMs: pipeWasm, pipelineNativeMs: pipeNative,
+      wasmOverDelaunator: pipeWasm / dl, wasmOverNative: pipeWasm / pipeNative, heapBytesPerPoint: heap / (xyz.length / 3) };
+    summary.runs.push(run);
+    log(`\n${kind} n=${run.n} (${quads} quads): delaunator ${dl.toFixed(1)} ms | hodt terrain native ${nat.terrain.toFixed(1)} ms, wasm ${wasm.terrain.toFixed(1)} ms`);
+    log(`  pipeline (terrain + ${PIPELINE_OBJECTIVE}): native ${pipeNative.toFixed(1)} ms, wasm ${pipeWasm.toFixed(1)} ms; wasm/delaunator ${run.wasmOverDelaunator.toFixed(2)}, wasm/native ${run.wasmOverNative.toFixed(2)}; wasm heap ${run.heapBytesPerPoint.toFixed(0)} B/point`);
+    for (const o of objectives)
+      log(`  exact ${o.padEnd(30)} native ${String(nat.objectives[o]?.toFixed(1)).padStart(9)} ms   wasm ${String(wasm.objectives[o]?.toFixed(1)).padStart(9)} ms`);
+  }
+}
+rmSync(tmp, { recursive: true, force: true });
+
+const at = (kind, n) => summary.runs.find((r) => r.kind === kind && r.n >= n * 0.99 && r.n <= n * 1.01);
+const big = at('uniform', 1e6);
+summary.pipeline_1M_wasm_over_delaunator = big?.wasmOverDelaunator ?? null;
+summary.pipeline_1M_wasm_over_native = big?.wasmOverNative ?? null;
+summary.heap_bytes_per_point_1M = big?.heapBytesPerPoint ?? null;
+summary.edit_10k_p50_ms = null;  // live edits: not measured yet (incremental updates pending)
+summary.edit_10k_p95_ms = null;
+writeFileSync(`${root}/bench-results.json`, JSON.stringify(summary, null, 2) + '\n');
+if (jsonOnly) console.log(JSON.stringify(summary));
+else log(`\nsummary written to bench-results.json`);
