@@ -1,7 +1,7 @@
 // Builds everything, incrementally: the native core, tests and CLI (g++), the wasm
 // module (Emscripten), and the TypeScript library and CLI (tsc) into dist/.
 import { execSync } from 'node:child_process';
-import { chmodSync, copyFileSync, existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { chmodSync, existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
@@ -14,6 +14,20 @@ function copyIfChanged(from, to) {
   if (existsSync(to) && readFileSync(to).equals(data)) return;
   writeFileSync(to, data);
 }
+
+// One build at a time in this tree (ninja runs on one build folder must not overlap).
+const lock = `${root}/build/.lock`;
+mkdirSync(`${root}/build`, { recursive: true });
+for (let waited = 0; ; waited += 1) {
+  try {
+    mkdirSync(lock);
+    break;
+  } catch {
+    if (waited > 900) throw new Error(`build: ${lock} held for 15 minutes; remove it if no build is running`);
+    execSync('sleep 1');
+  }
+}
+process.on('exit', () => rmSync(lock, { recursive: true, force: true }));
 
 const native = `${root}/build/native`, wasm = `${root}/build/wasm`;
 if (!existsSync(`${native}/build.ninja`)) run(`cmake -S . -B build/native -G Ninja -DCMAKE_BUILD_TYPE=Release`);
