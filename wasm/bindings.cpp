@@ -112,7 +112,8 @@ class TerrainHandle {
     const auto& v = t_.delaunay_values();
     return copy_out("Float64Array", std::vector<double>(v.begin(), v.end()));
   }
-  val solve(const std::string& objective, const std::string& method, double epsilon, bool trace) const {
+  // progress: undefined, or a JS function (done, total) returning false to cancel.
+  val solve(const std::string& objective, const std::string& method, double epsilon, bool trace, val progress) const {
     return guarded([&] {
       SolveOptions options;
       const auto m = parse_method(method);
@@ -120,6 +121,11 @@ class TerrainHandle {
       options.method = *m;
       options.epsilon = epsilon;
       options.trace = trace;
+      if (progress.typeOf().as<std::string>() == "function")
+        options.progress = [progress](double done, double total) {
+          const val r = progress(done, total);
+          return !(r.isFalse());
+        };
       const Objective o = objective_of(objective);
       Solution s = hodt::solve(t_.structure(), o, options);
       s.delaunay_value = t_.delaunay_values()[static_cast<size_t>(o)];

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "hodt/approx.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/error.hpp"
 #include "hodt/exact.hpp"
@@ -45,14 +46,24 @@ Solution solve_factor_graph(const FirstOrder& fo, Objective objective, const Sol
 }
 
 Solution dispatch(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
+  if (options.method == Method::BruteForce) return brute_force(fo, objective);
+  // Polynomial objectives are always solved exactly (approx would only be worse).
+  if (has_polynomial_exact(objective)) return solve_polynomial(fo, objective, ExactOptions{options.trace});
   switch (options.method) {
-    case Method::BruteForce:
-      return brute_force(fo, objective);
     case Method::Exact:
-    case Method::Auto:
-    case Method::Approx:  // the approximation schemes arrive with the NP-hard issue
-      if (has_polynomial_exact(objective)) return solve_polynomial(fo, objective, ExactOptions{options.trace});
       return solve_factor_graph(fo, objective, options);
+    case Method::Approx:
+      return approximate(fo, objective, options);
+    case Method::Auto:
+      try {  // exact when every component's decomposition fits the memory cap
+        return solve_factor_graph(fo, objective, options);
+      } catch (const LimitError& e) {
+        Solution s = approximate(fo, objective, options);
+        s.details = std::string("exact refused (") + e.what() + "); " + s.details;
+        return s;
+      }
+    default:
+      break;
   }
   throw std::logic_error("unknown method");
 }

@@ -25,6 +25,8 @@ struct Solution {
   bool optimal = false;          // value is proven optimal
   std::optional<double> bound;   // proven bound on the optimum, when not optimal
   double time_ms = 0;
+  bool local_search_improved = false;    // approximations: did the local search help?
+  std::string details;                   // what ran, in a few words (for reports)
   std::optional<CriticalPair> critical;  // min-max pair objectives
   std::vector<ThresholdStep> trace;      // bottleneck search, when asked for
 };

@@ -39,7 +39,13 @@ export interface RawTerrain {
   measures(choice?: Uint8Array | null): RawMeasures;
   evaluate(choice?: Uint8Array | null): Float64Array;
   delaunayValues(): Float64Array;
-  solve(objective: string, method: string, epsilon: number, trace: boolean): RawSolution;
+  solve(
+    objective: string,
+    method: string,
+    epsilon: number,
+    trace: boolean,
+    progress?: (done: number, total: number) => boolean | void,
+  ): RawSolution;
   enumerateAll(): Float64Array;
   statsJson(): string;
   delete(): void;

@@ -1,0 +1,18 @@
+// Approximations with certified bounds for the NP-hard objectives.
+//  - max-convex-edges: Baker's scheme (Theorem 7), value >= (1 - epsilon) OPT.
+//  - min-mixed-vertices: Baker's scheme on the non-mixed count (Theorem 8):
+//    non-mixed(value) >= (1 - epsilon) non-mixed(OPT).
+//  - minmax-degree: local search from the degree-balanced choice; every first order
+//    triangulation is within a factor 2 of optimal (a vertex in k quads has at least
+//    k fixed edges, so its degree is at most twice its fixed degree, and the largest
+//    fixed degree is a lower bound), and the result reports that lower bound.
+// Each is followed by a local search that can only improve the value.
+#pragma once
+#include "hodt/solution.hpp"
+#include "hodt/solve.hpp"
+
+namespace hodt {
+
+Solution approximate(const FirstOrder& fo, Objective o, const SolveOptions& options);
+
+}  // namespace hodt

@@ -1,0 +1,54 @@
+// Baker's approximation scheme over a factor graph (paper, Section 4): the quads
+// get layers (peeling depth from the hull); for each shift i a cut every lambda
+// layers drops the factors that straddle it, the remaining thick layers are
+// independent and solved exactly by the factor graph DP, and the best shift wins.
+//
+// Guarantee (maximising a sum of non-negative factors): a factor whose scope spans
+// s layers is dropped in at most s of the lambda shifts, so some shift drops at
+// most s/lambda of the optimum; with lambda = ceil(s_max / epsilon) the best shift
+// keeps at least (1 - epsilon) OPT. Bound: the optimum is at most any shift's
+// relaxed optimum plus the largest values of the factors it dropped; the run
+// reports the smallest such bound, so value <= OPT <= bound is certified.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "hodt/factor_graph.hpp"
+#include "hodt/first_order.hpp"
+
+namespace hodt {
+
+// Layer of each quad: the smallest depth of its corners, where depth is the
+// number of Delaunay edges from the hull (vertex BFS): an outerplanarity peeling.
+std::vector<uint32_t> quad_layers(const FirstOrder& fo);
+
+struct BakerShift {
+  uint32_t shift;
+  double relaxed;   // sum of the thick layers' optima (dropped factors count 0)
+  double value;     // true objective of the union of their choices
+  double bound;     // relaxed + max of each dropped factor: >= OPT
+  uint32_t dropped; // factors dropped by the cut
+};
+
+struct BakerResult {
+  Choice choice;
+  double value;          // the model's value of choice
+  double bound;          // certified upper bound on the optimum
+  uint32_t lambda;       // layers per period
+  std::vector<BakerShift> shifts;
+  uint32_t width;        // widest thick-layer decomposition solved
+  bool local_search_improved = false;
+};
+
+// g: Sense::Max, Combine::Sum, non-negative tables (throws std::logic_error else).
+// factors with a scope of more than max_scope variables are always dropped (the
+// paper's degree cap for non-mixed vertices). Throws LimitError if a thick layer is
+// wider than limits.max_width.
+BakerResult baker(const FactorGraph& g, const std::vector<uint32_t>& layer, double epsilon,
+                  const DpLimits& limits, uint32_t max_scope = UINT32_MAX);
+
+// Local search that only improves: single flips, then pairs of quads sharing a
+// factor, until no move helps. Returns true if it improved the value.
+bool improve_locally(const FactorGraph& g, Choice& choice, const Progress& progress = {});
+
+}  // namespace hodt

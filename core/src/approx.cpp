@@ -1,0 +1,113 @@
+#include "hodt/approx.hpp"
+
+#include <algorithm>
+
+#include "hodt/baker.hpp"
+#include "hodt/error.hpp"
+#include "hodt/factor_models.hpp"
+#include "hodt/min_max_degree.hpp"
+#include "hodt/skeleton.hpp"
+
+namespace hodt {
+
+namespace {
+
+// The count of non-mixed interior vertices, as a maximised sum: 1 - mixed per factor.
+FactorGraph non_mixed_model(const FirstOrder& fo, const FactorGraph& mixed) {
+  const uint32_t interior = fo.base.num_vertices() - static_cast<uint32_t>(fo.base.hull.size());
+  FactorGraph g = mixed;
+  g.sense = Sense::Max;
+  g.constant = interior - mixed.constant - static_cast<double>(mixed.factors.size());
+  for (Factor& f : g.factors)
+    for (double& v : f.table) v = 1 - v;
+  return g;
+}
+
+Solution baker_solution(const FirstOrder& fo, Objective o, const SolveOptions& options) {
+  DpLimits limits;
+  limits.max_width = options.max_width;
+  limits.progress = options.progress;
+  const FactorGraph model = factor_model(fo, o);
+  const bool mixed = o == Objective::MinMixedVertices;
+  const FactorGraph g = mixed ? non_mixed_model(fo, model) : model;
+  BakerResult r = baker(g, quad_layers(fo), options.epsilon, limits);
+  Solution s;
+  s.objective = o;
+  s.method = "approx";
+  s.choice = std::move(r.choice);
+  const bool improved = improve_locally(g, s.choice, options.progress);
+  s.local_search_improved = improved;
+  s.value = evaluate(o, triangulate(fo, s.choice));
+  const uint32_t interior = fo.base.num_vertices() - static_cast<uint32_t>(fo.base.hull.size());
+  s.bound = mixed ? interior - r.bound : r.bound;  // mixed: a lower bound on the fewest mixed
+  s.optimal = s.value == *s.bound;
+  s.details = "lambda " + std::to_string(r.lambda) + ", " + std::to_string(r.shifts.size()) +
+              " shifts, widest thick layer " + std::to_string(r.width);
+  return s;
+}
+
+// Max degree: repeatedly flip a quad at a vertex of maximum degree when that
+// lowers the number of vertices at the maximum without creating a new one.
+Solution degree_solution(const FirstOrder& fo, const SolveOptions& options) {
+  const Mesh& m = fo.base;
+  const uint32_t n = m.num_vertices(), nq = fo.num_quads();
+  const VertexIncidence vi = vertex_incidence(fo);
+  std::vector<uint32_t> degree(n, 0);
+  for (uint32_t e = 0; e < m.triangles.size(); ++e)
+    if (m.halfedges[e] < static_cast<int32_t>(e)) ++degree[m.origin(e)], ++degree[m.target(e)];
+  Choice x(nq, 0);
+  auto ends = [&](uint32_t q, bool side) {
+    const Quad& k = fo.quads[q];
+    return side ? std::pair{k.c, k.d} : std::pair{k.a, k.b};
+  };
+  auto flip = [&](uint32_t q) {
+    auto [u, w] = ends(q, x[q]);
+    --degree[u], --degree[w];
+    x[q] ^= 1;
+    auto [p, r] = ends(q, x[q]);
+    ++degree[p], ++degree[r];
+  };
+  for (int round = 0; round < 1000; ++round) {
+    if (options.progress && !options.progress(round, 1000)) throw Cancelled();
+    const uint32_t top = *std::max_element(degree.begin(), degree.end());
+    bool moved = false;
+    for (uint32_t v = 0; v < n; ++v) {
+      if (degree[v] != top) continue;
+      for (const uint32_t* q = vi.quads_begin(v); q != vi.quads_end(v); ++q) {
+        auto [u, w] = ends(*q, x[*q]);
+        if (u != v && w != v) continue;  // the chosen diagonal does not touch v
+        auto [p, r] = ends(*q, !x[*q]);
+        if (degree[p] + 1 >= top || degree[r] + 1 >= top) continue;
+        flip(*q);
+        moved = true;
+        break;
+      }
+    }
+    if (!moved) break;
+  }
+  Solution s;
+  s.objective = Objective::MinmaxDegree;
+  s.method = "approx";
+  s.choice = std::move(x);
+  s.value = evaluate(Objective::MinmaxDegree, triangulate(fo, s.choice));
+  s.bound = degree_bounds(fo).lower;
+  s.optimal = s.value == *s.bound;
+  s.details = "local search; proven ratio 2 (value <= 2 * bound)";
+  return s;
+}
+
+}  // namespace
+
+Solution approximate(const FirstOrder& fo, Objective o, const SolveOptions& options) {
+  switch (o) {
+    case Objective::MaxConvexEdges:
+    case Objective::MinMixedVertices:
+      return baker_solution(fo, o, options);
+    case Objective::MinmaxDegree:
+      return degree_solution(fo, options);
+    default:
+      throw std::logic_error("approximate: polynomial objectives are solved exactly");
+  }
+}
+
+}  // namespace hodt
