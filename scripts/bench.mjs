@@ -70,7 +70,7 @@ for (const kind of Object.keys(KINDS)) {
       quads = t.numQuads();
       for (const o of objectives) {
         try {
-          solveMs[o].push(time(() => t.solve(o, 'exact', 0.25, false))[0]);
+          solveMs[o].push(time(() => t.solve(o, 'exact', 0.25, false, undefined))[0]);
         } catch { solveMs[o].push(NaN); }
       }
       t.delete();
@@ -86,6 +86,39 @@ for (const kind of Object.keys(KINDS)) {
     log(`  pipeline (terrain + ${PIPELINE_OBJECTIVE}): native ${pipeNative.toFixed(1)} ms, wasm ${pipeWasm.toFixed(1)} ms; wasm/delaunator ${run.wasmOverDelaunator.toFixed(2)}, wasm/native ${run.wasmOverNative.toFixed(2)}; wasm heap ${run.heapBytesPerPoint.toFixed(0)} B/point`);
     for (const o of objectives)
       log(`  exact ${o.padEnd(30)} native ${String(nat.objectives[o]?.toFixed(1)).padStart(9)} ms   wasm ${String(wasm.objectives[o]?.toFixed(1)).padStart(9)} ms`);
+  }
+}
+// The NP-hard objectives' approximation schemes on grids up to 200 x 200: DEM
+// heights, and the paper's hardness surface f = xy - (x^2 + y^2) / 10 where the
+// exact engine refuses (one component, width about the grid side).
+const NP = ['max-convex-edges', 'min-mixed-vertices', 'minmax-degree'];
+const saddle = (w) => {
+  const p = new Float64Array(3 * w * w);
+  for (let j = 0; j < w; ++j) for (let i = 0; i < w; ++i) { const x = i - w / 2, y = j - w / 2; p.set([i, j, x * y - (x * x + y * y) / 10], 3 * (j * w + i)); }
+  return p;
+};
+summary.approx = [];
+for (const [kind, make] of [['grid', (w) => KINDS.grid(w * w)], ['saddle', saddle]]) {
+  for (const w of quick ? [50] : [50, 100, 200]) {
+    const xyz = make(w);
+    const file = join(tmp, 'points.bin');
+    writeFileSync(file, Buffer.from(xyz.buffer));
+    const nat = JSON.parse(spawnSync(`${root}/build/native/hodt_bench`, [file, '1', '--approx', ...NP], { encoding: 'utf8', maxBuffer: 1 << 24 }).stdout);
+    const module = await loadModule();
+    const t = module.fromPoints(xyz, false);
+    const row = { kind, n: w * w, quads: t.numQuads(), native: nat.objectives, wasm: {}, results: {} };
+    for (const o of NP) {
+      const [ms, s] = time(() => t.solve(o, 'approx', 0.25, false, undefined));
+      row.wasm[o] = ms;
+      row.results[o] = { value: s.value, bound: s.bound, delaunay: s.delaunayValue, details: s.details };
+    }
+    t.delete();
+    summary.approx.push(row);
+    log(`\napprox (epsilon 0.25) on ${kind} ${w}x${w} (${row.quads} quads)`);
+    for (const o of NP) {
+      const r = row.results[o];
+      log(`  ${o.padEnd(20)} native ${String(nat.objectives[o]?.toFixed(1)).padStart(8)} ms  wasm ${row.wasm[o].toFixed(1).padStart(8)} ms  value ${r.value} bound ${r.bound} (Delaunay ${r.delaunay}; ${r.details})`);
+    }
   }
 }
 rmSync(tmp, { recursive: true, force: true });

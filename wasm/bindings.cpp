@@ -140,6 +140,8 @@ class TerrainHandle {
       out.set("flipped", count_flipped(s.choice));
       out.set("timeMs", s.time_ms);
       out.set("choice", copy_out("Uint8Array", s.choice));
+      out.set("localSearchImproved", s.local_search_improved);
+      out.set("details", s.details);
       if (s.critical) {
         val c = val::object();
         c.set("first", copy_out("Uint32Array", t_.to_input(std::vector<uint32_t>(s.critical->first.begin(), s.critical->first.end()))));

@@ -20,6 +20,16 @@ std::string stats_json(const Terrain& t) {
 }
 
 namespace {
+std::string json_escape(const std::string& in) {
+  std::string out;
+  for (char c : in) {
+    if (c == '"' || c == '\\') out += '\\', out += c;
+    else if (static_cast<unsigned char>(c) < 0x20) out += ' ';
+    else out += c;
+  }
+  return out;
+}
+
 std::string triangle_json(const Terrain& t, const Tri& tri) {
   return "[" + std::to_string(t.to_input(tri[0])) + ", " + std::to_string(t.to_input(tri[1])) + ", " +
          std::to_string(t.to_input(tri[2])) + "]";
@@ -36,6 +46,8 @@ std::string solution_json(const Terrain& t, const Solution& r, bool with_triangl
                   ", \"bound\": " + (r.bound ? format_number(*r.bound) : "null") +
                   ", \"flipped\": " + std::to_string(count_flipped(r.choice)) +
                   ", \"timeMs\": " + format_number(r.time_ms);
+  if (r.method == "approx") s += std::string(", \"localSearchImproved\": ") + (r.local_search_improved ? "true" : "false");
+  if (!r.details.empty()) s += ", \"details\": \"" + json_escape(r.details) + "\"";
   if (r.critical)
     s += ", \"critical\": {\"first\": " + triangle_json(t, r.critical->first) + ", \"second\": " +
          triangle_json(t, r.critical->second) + ", \"value\": " + format_number(r.critical->value) + "}";

@@ -65,6 +65,19 @@ inline std::vector<double> jittered_grid(int w, int h, double jitter, uint64_t s
   return p;
 }
 
+// The paper's hardness surface (Section 3.3) on a unit grid: f(x, y) = xy - (x^2 +
+// y^2) / 10 makes every edge between two cells depend on both cells' diagonals,
+// so the quads form one component of treewidth about the grid side.
+inline std::vector<double> saddle_grid(int w) {
+  std::vector<double> p;
+  for (int j = 0; j < w; ++j)
+    for (int i = 0; i < w; ++i) {
+      const double x = i - w / 2.0, y = j - w / 2.0;
+      p.insert(p.end(), {double(i), double(j), x * y - (x * x + y * y) / 10});
+    }
+  return p;
+}
+
 // n points on a circle (all cocircular) plus its centre.
 inline std::vector<double> cocircular_points(int n, uint64_t seed) {
   Rng r(seed);

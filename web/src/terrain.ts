@@ -154,7 +154,7 @@ export class Terrain implements Disposable {
   /** Optimises an objective over the first order triangulations. */
   solve(objective: ObjectiveId, options: SolveOptions = {}): Solution {
     return guard(() => {
-      const s = this.#handle.solve(objective, options.method ?? 'auto', options.epsilon ?? 0.25, options.trace ?? false);
+      const s = this.#handle.solve(objective, options.method ?? 'auto', options.epsilon ?? 0.25, options.trace ?? false, undefined);
       return { ...s, objective: s.objective as ObjectiveId };
     });
   }

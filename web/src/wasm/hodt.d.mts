@@ -23,6 +23,8 @@ export interface RawSolution {
   timeMs: number;
   choice: Uint8Array;
   critical: { first: Uint32Array; second: Uint32Array; value: number } | null;
+  localSearchImproved: boolean;
+  details: string;
   trace: { threshold: number; satisfiable: boolean; clauses: number; forced: number; immediateNo: boolean }[];
 }
 export interface RawTerrain {
@@ -44,7 +46,7 @@ export interface RawTerrain {
     method: string,
     epsilon: number,
     trace: boolean,
-    progress?: (done: number, total: number) => boolean | void,
+    progress: ((done: number, total: number) => boolean | void) | undefined,
   ): RawSolution;
   enumerateAll(): Float64Array;
   statsJson(): string;

@@ -1,0 +1,98 @@
+// Approximation schemes: the guarantee and the certified bound, against the optimum
+// (brute force on small instances, the exact engine on jittered grids).
+#include <doctest/doctest.h>
+
+#include "generators.hpp"
+#include "hodt/approx.hpp"
+#include "hodt/brute_force.hpp"
+#include "hodt/delaunay.hpp"
+#include "hodt/error.hpp"
+#include "hodt/points.hpp"
+#include "hodt/solve.hpp"
+
+using namespace hodt;
+using namespace hodt::test;
+
+namespace {
+
+uint32_t interior(const FirstOrder& fo) { return fo.base.num_vertices() - static_cast<uint32_t>(fo.base.hull.size()); }
+
+void check_approx(const FirstOrder& fo, Objective o, double opt, double eps) {
+  SolveOptions options;
+  options.method = Method::Approx;
+  options.epsilon = eps;
+  const Solution s = solve(fo, o, options);
+  REQUIRE(s.bound);
+  CHECK(s.value == evaluate(o, triangulate(fo, s.choice)));
+  switch (o) {
+    case Objective::MaxConvexEdges:
+      CHECK(s.value >= (1 - eps) * opt - 1e-9);
+      CHECK(s.value <= opt);
+      CHECK(*s.bound >= opt);
+      break;
+    case Objective::MinMixedVertices: {
+      const double n = interior(fo);
+      CHECK(n - s.value >= (1 - eps) * (n - opt) - 1e-9);  // non-mixed within (1 - eps)
+      CHECK(s.value >= opt);
+      CHECK(*s.bound <= opt);
+      break;
+    }
+    case Objective::MinmaxDegree:
+      CHECK(s.value >= opt);
+      CHECK(*s.bound <= opt);
+      CHECK(s.value <= 2 * *s.bound);
+      break;
+    default:
+      break;
+  }
+}
+
+}  // namespace
+
+TEST_CASE("approximations on small instances: guarantee and bound against brute force") {
+  int done = 0;
+  for (uint64_t seed = 1; done < 1000; ++seed) {
+    Rng r(seed);
+    const int n = 8 + r.below(10);
+    const std::vector<double> p = seed % 3 == 0 ? uniform_points(n, seed) : seed % 3 == 1 ? dem_points(n, seed) : jittered_grid(4, 3 + r.below(2), 0.3, seed);
+    const FirstOrder fo = first_order(delaunay(validate_points(p).xyz));
+    if (fo.num_quads() > 10) continue;
+    ++done;
+    for (Objective o : {Objective::MaxConvexEdges, Objective::MinMixedVertices, Objective::MinmaxDegree}) {
+      const double opt = brute_force(fo, o).value;
+      for (double eps : {0.5, 0.34, 0.25}) check_approx(fo, o, opt, eps);
+    }
+  }
+}
+
+TEST_CASE("approximations on jittered grids against the exact engine") {
+  for (uint64_t seed = 1; seed <= 6; ++seed) {
+    const FirstOrder fo = first_order(delaunay(jittered_grid(14, 12, 0.35, seed)));
+    for (Objective o : {Objective::MaxConvexEdges, Objective::MinMixedVertices, Objective::MinmaxDegree}) {
+      SolveOptions exact;
+      exact.method = Method::Exact;
+      const double opt = solve(fo, o, exact).value;
+      for (double eps : {0.5, 0.34, 0.25}) check_approx(fo, o, opt, eps);
+    }
+  }
+}
+
+TEST_CASE("auto runs exact when it fits, else approx, and says which") {
+  const FirstOrder fo = first_order(delaunay(uniform_points(2000, 3)));
+  SolveOptions options;
+  options.method = Method::Auto;
+  const Solution s = solve(fo, Objective::MaxConvexEdges, options);
+  CHECK(s.method == "exact");
+  CHECK(s.optimal);
+  // The hardness surface: one wide component, refused by exact, approximated.
+  const FirstOrder grid = first_order(delaunay(saddle_grid(24)));
+  SolveOptions exact;
+  exact.method = Method::Exact;
+  CHECK_THROWS_WITH_AS(solve(grid, Objective::MaxConvexEdges, exact), doctest::Contains("tree decomposition of width"), LimitError);
+  const Solution a = solve(grid, Objective::MaxConvexEdges, options);
+  CHECK(a.method == "approx");
+  CHECK(a.details.find("exact refused") != std::string::npos);
+  REQUIRE(a.bound);
+  CHECK(a.value <= *a.bound);
+  CHECK(a.value >= (1 - options.epsilon) * *a.bound);  // the bound is within the guarantee
+}
