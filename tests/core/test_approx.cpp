@@ -96,3 +96,22 @@ TEST_CASE("auto runs exact when it fits, else approx, and says which") {
   CHECK(a.value <= *a.bound);
   CHECK(a.value >= (1 - options.epsilon) * *a.bound);  // the bound is within the guarantee
 }
+
+TEST_CASE("long runs report progress and can be cancelled") {
+  const FirstOrder grid = first_order(delaunay(saddle_grid(30)));
+  SolveOptions options;
+  options.method = Method::Approx;
+  int calls = 0;
+  options.progress = [&](double done, double total) {
+    ++calls;
+    CHECK(done <= total);
+    return true;
+  };
+  solve(grid, Objective::MaxConvexEdges, options);
+  CHECK(calls > 0);
+  options.progress = [](double, double) { return false; };
+  CHECK_THROWS_AS(solve(grid, Objective::MaxConvexEdges, options), Cancelled);
+  options.method = Method::Exact;
+  const FirstOrder random = first_order(delaunay(uniform_points(3000, 5)));
+  CHECK_THROWS_AS(solve(random, Objective::MinMixedVertices, options), Cancelled);
+}

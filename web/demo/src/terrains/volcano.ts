@@ -10,7 +10,7 @@ export const volcanoGrid: HeightGrid = {
   spacing: 10,
 };
 
-/** The demo's terrain: about 1500 points sampled from the volcano, x, y, z in metres. */
+/** About `count` points sampled from the volcano (jittered), x, y, z in metres. */
 export function volcanoPoints(count = 1500, seed = 7): Float64Array {
   return jitteredSample(volcanoGrid, count, seed);
 }

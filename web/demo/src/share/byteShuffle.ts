@@ -1,0 +1,48 @@
+/**
+ * Byte shuffling of doubles, lossless: byte k of every value is stored together,
+ * so the similar sign/exponent bytes of nearby coordinates form long runs that
+ * deflate compresses well (the trick of Blosc and HDF5's shuffle filter).
+ */
+export function shuffleDoubles(values: Float64Array): Uint8Array {
+  const bytes = new Uint8Array(values.buffer, values.byteOffset, values.byteLength);
+  const n = values.length;
+  const out = new Uint8Array(8 * n);
+  for (let i = 0; i < n; i++) {
+    for (let b = 0; b < 8; b++) out[b * n + i] = bytes[8 * i + b]!;
+  }
+  return out;
+}
+
+export function unshuffleDoubles(shuffled: Uint8Array): Float64Array {
+  if (shuffled.length % 8 !== 0) throw new Error('point data is not a whole number of doubles');
+  const n = shuffled.length / 8;
+  const values = new Float64Array(n);
+  const bytes = new Uint8Array(values.buffer);
+  for (let i = 0; i < n; i++) {
+    for (let b = 0; b < 8; b++) bytes[8 * i + b] = shuffled[b * n + i]!;
+  }
+  return values;
+}
+
+/** Coordinates x, y, z per point reordered as all x, all y, all z (and back). */
+export function toColumns(xyz: Float64Array): Float64Array {
+  const n = xyz.length / 3;
+  const out = new Float64Array(xyz.length);
+  for (let i = 0; i < n; i++) {
+    out[i] = xyz[3 * i]!;
+    out[n + i] = xyz[3 * i + 1]!;
+    out[2 * n + i] = xyz[3 * i + 2]!;
+  }
+  return out;
+}
+
+export function fromColumns(columns: Float64Array): Float64Array {
+  const n = columns.length / 3;
+  const out = new Float64Array(columns.length);
+  for (let i = 0; i < n; i++) {
+    out[3 * i] = columns[i]!;
+    out[3 * i + 1] = columns[n + i]!;
+    out[3 * i + 2] = columns[2 * n + i]!;
+  }
+  return out;
+}
