@@ -1,17 +1,27 @@
 /** Base class of every error hodt throws; `message` is the core's own text. */
 export class HodtError extends Error {
-  constructor(message: string) {
-    super(message);
+  constructor(message: string, options?: { cause?: unknown }) {
+    super(message, options);
     this.name = new.target.name;
   }
 }
-/** Bad input: malformed file, NaN coordinate, duplicate point, invalid choice. */
+/** Bad input: malformed file, NaN coordinate, duplicate point, invalid choice or
+ * option (an unknown objective or method, an unsupported order). */
 export class InputError extends HodtError {}
 /** A valid request the library refuses: too many quads for brute force, a tree
  * decomposition wider than the memory cap, out of memory. */
 export class LimitError extends HodtError {}
-/** The run was cancelled (abort signal). */
-export class CancelledError extends HodtError {}
+/**
+ * The run was cancelled: its AbortSignal was aborted (`cause` is the signal's
+ * reason) or the progress callback returned false. Its `name` is 'AbortError', as
+ * for an aborted fetch(), so code that checks `e.name === 'AbortError'` works too.
+ */
+export class CancelledError extends HodtError {
+  constructor(message = 'cancelled', options?: { cause?: unknown }) {
+    super(message, options);
+    this.name = 'AbortError';
+  }
+}
 /** A bug in hodt: please report it with the input. */
 export class InternalError extends HodtError {}
 

@@ -2,25 +2,28 @@
  * hodt: optimal first order Delaunay triangulations of terrains.
  *
  *   const hodt = await loadHodt();
- *   using terrain = hodt.terrain(xyz);           // Float64Array x, y, z, ...
+ *   using terrain = hodt.terrain(xyz);              // Float64Array x, y, z, ...
  *   const best = terrain.solve('min-local-minima');
- *   terrain.triangulation(best.choice).triangles // Uint32Array for three.js
+ *   best.triangles                                  // Uint32Array for three.js
+ *
+ * Reference: docs/api.md.
  */
-import { guard, InputError } from './errors.js';
+import { guard } from './errors.js';
 import { loadModule, type LoadOptions } from './load.js';
-import { OBJECTIVE_IDS, type ObjectiveInfo } from './objectives.js';
+import type { ObjectiveInfo } from './objectives.js';
+import { type PointInput, toXyz } from './points.js';
 import { Terrain } from './terrain.js';
 import type { HodtModule } from './wasm/hodt.mjs';
 
 export * from './errors.js';
-export * from './objectives.js';
+export { OBJECTIVE_IDS, type Method, type ObjectiveId, type ObjectiveInfo, type ObjectiveValues } from './objectives.js';
 export * from './terrain.js';
 export type { LoadOptions } from './load.js';
-
-export type PointInput = Float64Array | ArrayLike<number> | ReadonlyArray<{ x: number; y: number; z: number }>;
+export type { Point3, PointInput } from './points.js';
+export type { ProgressCallback, SolveOptions } from './solve.js';
 
 export interface TerrainOptions {
-  /** What to do with two points at the same (x, y): throw (default) or keep the first. */
+  /** Two points at the same (x, y): throw InputError (default) or keep the first. */
   dedupe?: 'error' | 'first';
 }
 
@@ -31,7 +34,14 @@ export interface ParsedPoints {
   lines: Int32Array;
 }
 
-/** The loaded library. Create it once with loadHodt(); it holds no per-terrain state. */
+/** The result of running the command line in-process. */
+export interface CliResult {
+  exitCode: number;
+  stdout: string;
+  stderr: string;
+}
+
+/** The loaded library (from loadHodt()). It holds no per-terrain state. */
 export class Hodt {
   readonly #module: HodtModule;
   /** The 13 objectives with their sense and a one-line summary. */
@@ -40,30 +50,32 @@ export class Hodt {
   /** @internal use loadHodt() */
   constructor(module: HodtModule) {
     this.#module = module;
-    this.objectives = module.objectiveTable() as ObjectiveInfo[];
+    this.objectives = Object.freeze(module.objectiveTable() as ObjectiveInfo[]);
   }
 
-  /** Builds the Delaunay triangulation and first order structure of points. */
+  /** Builds the Delaunay triangulation of the points and its first order
+   * structure. The points are copied; dispose() the terrain when done. */
   terrain(points: PointInput, options: TerrainOptions = {}): Terrain {
     const xyz = toXyz(points);
-    return guard(() => new Terrain(this.#module, this.#module.fromPoints(xyz, options.dedupe === 'first')));
+    return guard(() => new Terrain(this.#module.fromPoints(xyz, options.dedupe === 'first'), xyz.slice()));
   }
 
-  /** A singly-flippable triangulation: your triangles plus designated flippable
-   * edges (pairs of point indices); every objective applies to it unchanged. */
+  /** A singly-flippable triangulation: your triangles (point indices, three per
+   * triangle) plus designated flippable edges (pairs of point indices); every
+   * objective applies to it unchanged. */
   fromTriangulation(points: PointInput, triangles: ArrayLike<number>, flippableEdges: ArrayLike<number> = []): Terrain {
     const xyz = toXyz(points);
     return guard(
       () =>
         new Terrain(
-          this.#module,
           this.#module.fromTriangulation(xyz, Uint32Array.from(triangles), Uint32Array.from(flippableEdges)),
+          xyz.slice(),
         ),
     );
   }
 
-  /** Parses a point file (CSV/TSV/whitespace, JSON, ESRI ASCII grid). Errors name
-   * the file, line and value. */
+  /** Parses the text of a point file: CSV/TSV/whitespace x y z, JSON [[x, y, z],
+   * ...] or an ESRI ASCII grid. Errors name the file, line and value. */
   readPoints(text: string, name = 'input'): ParsedPoints {
     return guard(() => {
       const r = this.#module.readPoints(text, name);
@@ -71,35 +83,27 @@ export class Hodt {
     });
   }
 
-  /** Runs the `hodt` command line in-process (used by the npm bin). */
-  runCli(args: string[], read: (path: string) => string | Error) {
+  /** Runs the `hodt` command line in-process (the npm bin uses it); `read`
+   * returns a file's text, or an Error whose message the CLI reports. */
+  runCli(args: string[], read: (path: string) => string | Error): CliResult {
     return this.#module.runCli(args, read);
   }
 }
 
-function toXyz(points: PointInput): Float64Array {
-  if (points instanceof Float64Array) return points;
-  const first = (points as ArrayLike<unknown>)[0];
-  if (first !== null && typeof first === 'object') {
-    const list = points as ReadonlyArray<{ x: number; y: number; z: number }>;
-    const xyz = new Float64Array(list.length * 3);
-    list.forEach((p, i) => {
-      if (p === null || typeof p !== 'object') throw new InputError(`point ${i}: expected {x, y, z}`);
-      xyz[3 * i] = Number(p.x);
-      xyz[3 * i + 1] = Number(p.y);
-      xyz[3 * i + 2] = Number(p.z);
-    });
-    return xyz;
-  }
-  return Float64Array.from(points as ArrayLike<number>);
-}
-
 let loading: Promise<Hodt> | null = null;
 
-/** Loads the wasm module (once; later calls return the same instance). */
+/**
+ * Loads the wasm module: once; later calls return the same instance and ignore
+ * their options. If loading fails the promise rejects with a HodtError, and the
+ * next call tries again.
+ */
 export function loadHodt(options: LoadOptions = {}): Promise<Hodt> {
-  loading ??= loadModule(options).then((m) => new Hodt(m));
+  loading ??= loadModule(options).then(
+    (m) => new Hodt(m),
+    (e: unknown) => {
+      loading = null;
+      throw e;
+    },
+  );
   return loading;
 }
-
-export { OBJECTIVE_IDS };

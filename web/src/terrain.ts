@@ -1,44 +1,38 @@
-import type { HodtModule, RawTerrain } from './wasm/hodt.mjs';
 import { guard, InputError } from './errors.js';
-import { type Method, type ObjectiveId, type ObjectiveValues, toValues } from './objectives.js';
+import { type ObjectiveId, type ObjectiveValues, toValues } from './objectives.js';
+import { type SolveOptions, solveRaw } from './solve.js';
+import type { RawTerrain } from './wasm/hodt.mjs';
 
 /** One byte per flippable quad: 0 keeps the Delaunay diagonal, 1 flips it. */
 export type Choice = Uint8Array;
 
 export interface Triangulation {
-  /** Vertex indices (input indices), three per triangle, counterclockwise. */
+  /** Point indices (into the points you gave), three per triangle,
+   * counterclockwise seen from +z: a BufferGeometry index as is. */
   triangles: Uint32Array;
   /** Twin of each halfedge (halfedge e of triangle floor(e / 3)), -1 on the hull. */
   halfedges: Int32Array;
-  /** Hull vertices, counterclockwise. */
+  /** Hull vertices (point indices), counterclockwise. */
   hull: Uint32Array;
 }
 
 /** Edge shapes, per halfedge. */
 export const EdgeShape = { Convex: 0, Reflex: 1, Flat: 2, Hull: 3 } as const;
-/** Vertex classes, per vertex; boundary vertices are not classified. */
-export const VertexClass = { Convex: 0, Concave: 1, Flat: 2, Mixed: 3, Boundary: 4 } as const;
-/** Local extrema, per vertex (interior vertices only). */
+/** Vertex classes, per point; boundary vertices are not classified; Dropped marks a
+ * duplicate point left out by `dedupe: 'first'`. */
+export const VertexClass = { Convex: 0, Concave: 1, Flat: 2, Mixed: 3, Boundary: 4, Dropped: 255 } as const;
+/** Local extrema, per point (interior vertices only). */
 export const Extremum = { None: 0, Minimum: 1, Maximum: 2 } as const;
 
 export interface Measures {
-  /** Per halfedge: EdgeShape. */
+  /** Per halfedge (as in Triangulation.halfedges): an EdgeShape value. */
   edgeShape: Uint8Array;
-  /** Per vertex of the triangulation (see Terrain.vertexIndex): VertexClass. */
+  /** Per point (index as in Triangulation.triangles): a VertexClass value. */
   vertexClass: Uint8Array;
-  /** Per vertex: Extremum. */
+  /** Per point: an Extremum value. */
   extremum: Uint8Array;
-  /** Per vertex: number of neighbours. */
+  /** Per point: number of neighbours (0 for a dropped duplicate). */
   degree: Uint32Array;
-}
-
-export interface SolveOptions {
-  /** brute-force (all 2^m choices), exact, approx or auto (default). */
-  method?: Method;
-  /** Approximation schemes: within a factor (1 - epsilon) of optimal. Default 0.25. */
-  epsilon?: number;
-  /** Min-max pair objectives: record every threshold the search tested. */
-  trace?: boolean;
 }
 
 /** One threshold of the bottleneck search (paper, Section 2.1). */
@@ -61,36 +55,55 @@ export interface Solution {
   method: string;
   /** Objective value of the returned triangulation. */
   value: number;
-  /** Value of the Delaunay (base) triangulation. */
+  /** Value of the Delaunay triangulation, for comparison. */
   delaunayValue: number;
-  /** True if value is proven optimal. */
+  /** True if `value` is proven optimal. */
   optimal: boolean;
-  /** A proven bound on the optimum when not optimal, else null. */
+  /** When not optimal: a proven bound on the optimum (the optimum is at least as
+   * good as `value` and no better than `bound`); null when optimal or unknown. */
   bound: number | null;
+  /** The optimised triangulation: point indices, three per triangle,
+   * counterclockwise (same as `terrain.triangulation(choice).triangles`). */
+  triangles: Uint32Array;
+  /** The choice that gives the triangulation (one byte per quad). */
+  choice: Choice;
   /** Number of quads not on their Delaunay diagonal. */
   flipped: number;
+  /** Time the core spent, in milliseconds. */
   timeMs: number;
-  /** The choice that gives the triangulation. */
-  choice: Choice;
-  /** Min-max pair objectives: the two triangles (input indices) attaining the value. */
+  /** Min-max pair objectives: the two triangles (point indices) attaining the value. */
   critical: { first: Uint32Array; second: Uint32Array; value: number } | null;
-  /** The tested thresholds, in order (with `trace: true`). */
+  /** The tested thresholds, in order (with `trace: true`), else empty. */
   trace: ThresholdStep[];
 }
 
+/** The `stats` document of the CLI. */
+export interface TerrainStats {
+  points: number;
+  triangles: number;
+  edges: number;
+  flippable: number;
+  hullVertices: number;
+  delaunay: ObjectiveValues;
+}
+
 /**
- * A terrain: points, their Delaunay triangulation and its first order structure.
- * It holds wasm memory: call dispose() (or declare it with `using`) when done.
- * Every array it returns is a copy that you own; none points into wasm memory.
+ * A terrain: points, their Delaunay triangulation and its first order structure
+ * (the m flippable quads). Make one with `hodt.terrain()`.
+ *
+ * It holds wasm memory that JavaScript's garbage collector does not see: call
+ * dispose() when done, or declare it with `using`. Every array it returns is a new
+ * copy that you own (never a view of wasm memory), and every point index refers to
+ * the points as you gave them.
  */
 export class Terrain implements Disposable {
   #raw: RawTerrain | null;
-  #module: HodtModule;
+  readonly #input: Float64Array;
 
-  /** @internal use Hodt.terrain() */
-  constructor(module: HodtModule, raw: RawTerrain) {
-    this.#module = module;
+  /** @internal use Hodt.terrain() or Hodt.fromTriangulation() */
+  constructor(raw: RawTerrain, input: Float64Array) {
     this.#raw = raw;
+    this.#input = input;
   }
 
   get #handle(): RawTerrain {
@@ -98,7 +111,12 @@ export class Terrain implements Disposable {
     return this.#raw;
   }
 
-  /** Number of points in the triangulation (after dropping duplicates, if asked). */
+  /** Number of points you gave. */
+  get numInputPoints(): number {
+    return this.#handle.numInputPoints();
+  }
+  /** Number of vertices of the triangulation (fewer than numInputPoints only when
+   * duplicates were dropped). */
   get numPoints(): number {
     return this.#handle.numPoints();
   }
@@ -110,15 +128,18 @@ export class Terrain implements Disposable {
   get isDelaunay(): boolean {
     return this.#handle.isDelaunay();
   }
-  /** xyz of the points of the triangulation, in vertex order (see vertexIndex). */
+  /** The points as you gave them: x, y, z per point (a BufferGeometry position
+   * attribute, after conversion to Float32Array). */
   get points(): Float64Array {
-    return this.#handle.points();
+    void this.#handle;
+    return this.#input.slice();
   }
-  /** Input index of each vertex (the identity unless duplicates were dropped). */
+  /** Indices of the points that are vertices of the triangulation, ascending (all
+   * of them unless duplicates were dropped). */
   get vertexIndex(): Uint32Array {
-    return this.#handle.inputIndex();
+    return this.#handle.inputIndex().sort();
   }
-  /** Four input indices per quad: a, b (Delaunay diagonal), c, d (the other). */
+  /** Four point indices per quad: a, b (the Delaunay diagonal), c, d (the other). */
   get quads(): Uint32Array {
     return this.#handle.quads();
   }
@@ -126,24 +147,37 @@ export class Terrain implements Disposable {
   get quadEdges(): Uint32Array {
     return this.#handle.quadEdges();
   }
-  /** For each triangle of any choice's triangulation, its quad or -1 if fixed. */
+  /** For each triangle slot (of any choice's triangulation), its quad or -1 if
+   * the triangle is the same in every first order triangulation. */
   get quadOfTriangle(): Int32Array {
     return this.#handle.quadOfTriangle();
   }
 
-  /** The Delaunay triangulation (choice all zeros). */
+  /** The Delaunay triangulation (the choice of all zeros). */
   delaunay(): Triangulation {
     return guard(() => this.#handle.triangulation(null));
   }
-  /** The triangulation of a choice. Triangle slots are stable across choices. */
+  /** The triangulation of a choice (default: Delaunay). Triangle slots are the
+   * same for every choice: only the triangles of flipped quads change. */
   triangulation(choice?: Choice): Triangulation {
     return guard(() => this.#handle.triangulation(choice ?? null));
   }
   /** Edge shapes, vertex classes, extrema and degrees of a choice's triangulation. */
   measures(choice?: Choice): Measures {
-    return guard(() => this.#handle.measures(choice ?? null));
+    return guard(() => {
+      const raw = this.#handle;
+      const m = raw.measures(choice ?? null);
+      const index = raw.inputIndex();
+      const n = raw.numInputPoints();
+      return {
+        edgeShape: m.edgeShape,
+        vertexClass: scatter(new Uint8Array(n).fill(VertexClass.Dropped), m.vertexClass, index),
+        extremum: scatter(new Uint8Array(n), m.extremum, index),
+        degree: scatter(new Uint32Array(n), m.degree, index),
+      };
+    });
   }
-  /** Values of all 13 objectives for a choice's triangulation. */
+  /** Values of all 13 objectives for a choice's triangulation (default: Delaunay). */
   evaluate(choice?: Choice): ObjectiveValues {
     return guard(() => toValues(this.#handle.evaluate(choice ?? null)));
   }
@@ -151,28 +185,49 @@ export class Terrain implements Disposable {
   delaunayValues(): ObjectiveValues {
     return guard(() => toValues(this.#handle.delaunayValues()));
   }
-  /** Optimises an objective over the first order triangulations. */
+  /**
+   * Optimises an objective over the first order triangulations. Synchronous: it
+   * blocks the thread it runs on (run it in a Worker to keep a page responsive).
+   * Throws InputError (bad options), LimitError (refused, with the reason) or
+   * CancelledError (see SolveOptions.signal and .progress).
+   */
   solve(objective: ObjectiveId, options: SolveOptions = {}): Solution {
-    return guard(() => {
-      const s = this.#handle.solve(objective, options.method ?? 'auto', options.epsilon ?? 0.25, options.trace ?? false, undefined);
-      return { ...s, objective: s.objective as ObjectiveId };
-    });
+    const raw = this.#handle;
+    const s = solveRaw(raw, objective, options);
+    const { triangles } = guard(() => raw.triangulation(s.choice));
+    return {
+      objective: s.objective as ObjectiveId,
+      sense: s.sense,
+      method: s.method,
+      value: s.value,
+      delaunayValue: s.delaunayValue,
+      optimal: s.optimal,
+      bound: s.bound,
+      triangles,
+      choice: s.choice,
+      flipped: s.flipped,
+      timeMs: s.timeMs,
+      critical: s.critical,
+      trace: s.trace,
+    };
   }
   /** Values of every objective for all 2^m choices (m <= 24): entry
-   * [c * 13 + k] is objective k (OBJECTIVE_IDS order) for choice bits c. */
+   * [c * 13 + k] is objective k (OBJECTIVE_IDS order) for the choice whose bit q
+   * is quad q's entry. */
   enumerateAll(): Float64Array {
     return guard(() => this.#handle.enumerateAll());
   }
   /** The CLI's `stats` document. */
-  stats(): { points: number; triangles: number; edges: number; flippable: number; hullVertices: number; delaunay: ObjectiveValues } {
-    return JSON.parse(this.#handle.statsJson());
+  stats(): TerrainStats {
+    return JSON.parse(this.#handle.statsJson()) as TerrainStats;
   }
 
-  /** Frees the wasm memory. Idempotent; the terrain is unusable afterwards. */
+  /** Frees the wasm memory. Idempotent; any other use afterwards throws InputError. */
   dispose(): void {
     this.#raw?.delete();
     this.#raw = null;
   }
+  /** Same as dispose(), for `using terrain = hodt.terrain(points)`. */
   [Symbol.dispose](): void {
     this.dispose();
   }
@@ -180,8 +235,10 @@ export class Terrain implements Disposable {
   get disposed(): boolean {
     return this.#raw === null;
   }
-  /** @internal */
-  get module(): HodtModule {
-    return this.#module;
-  }
+}
+
+/** out[index[v]] = values[v]: per-vertex values into point order. */
+function scatter<T extends Uint8Array | Uint32Array>(out: T, values: ArrayLike<number>, index: Uint32Array): T {
+  for (let v = 0; v < index.length; ++v) out[index[v]!] = values[v]!;
+  return out;
 }

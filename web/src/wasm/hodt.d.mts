@@ -37,9 +37,9 @@ export interface RawTerrain {
   quads(): Uint32Array;
   quadEdges(): Uint32Array;
   quadOfTriangle(): Int32Array;
-  triangulation(choice?: Uint8Array | null): RawChoiceResult;
-  measures(choice?: Uint8Array | null): RawMeasures;
-  evaluate(choice?: Uint8Array | null): Float64Array;
+  triangulation(choice: Uint8Array | null): RawChoiceResult;
+  measures(choice: Uint8Array | null): RawMeasures;
+  evaluate(choice: Uint8Array | null): Float64Array;
   delaunayValues(): Float64Array;
   solve(
     objective: string,
@@ -73,6 +73,10 @@ export interface HodtModule {
 export interface ModuleOptions {
   wasmBinary?: ArrayBuffer | Uint8Array;
   locateFile?: (path: string, prefix: string) => string;
+  instantiateWasm?: (
+    imports: WebAssembly.Imports,
+    receive: (instance: WebAssembly.Instance, module: WebAssembly.Module) => void,
+  ) => WebAssembly.Exports | {};
 }
 declare function createHodtModule(options?: ModuleOptions): Promise<HodtModule>;
 export default createHodtModule;
