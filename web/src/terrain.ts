@@ -71,6 +71,11 @@ export interface Solution {
   flipped: number;
   /** Time the core spent, in milliseconds. */
   timeMs: number;
+  /** Approximations: whether the local search after the scheme improved its result. */
+  localSearchImproved: boolean;
+  /** What the solver wants you to know (for example why 'auto' fell back to the
+   * approximation), or ''. */
+  details: string;
   /** Min-max pair objectives: the two triangles (point indices) attaining the value. */
   critical: { first: Uint32Array; second: Uint32Array; value: number } | null;
   /** The tested thresholds, in order (with `trace: true`), else empty. */
@@ -207,6 +212,8 @@ export class Terrain implements Disposable {
       choice: s.choice,
       flipped: s.flipped,
       timeMs: s.timeMs,
+      localSearchImproved: s.localSearchImproved,
+      details: s.details,
       critical: s.critical,
       trace: s.trace,
     };
@@ -219,7 +226,7 @@ export class Terrain implements Disposable {
   }
   /** The CLI's `stats` document. */
   stats(): TerrainStats {
-    return JSON.parse(this.#handle.statsJson()) as TerrainStats;
+    return JSON.parse(this.#handle.statsJson(0)) as TerrainStats;
   }
 
   /** Frees the wasm memory. Idempotent; any other use afterwards throws InputError. */

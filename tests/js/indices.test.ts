@@ -1,0 +1,66 @@
+// Every index the API returns refers to the points as given, whatever the
+// terrain's internal (spatial) vertex order.
+import { beforeAll, describe, expect, it } from 'vitest';
+import { EdgeShape, type Hodt, loadHodt, VertexClass } from '../../web/src/index.js';
+
+let hodt: Hodt;
+beforeAll(async () => {
+  hodt = await loadHodt();
+});
+
+// A bump: a square grid whose centre point is the only local maximum.
+function bump(side: number): Float64Array {
+  const xyz: number[] = [];
+  const c = (side - 1) / 2;
+  for (let j = 0; j < side; ++j)
+    for (let i = 0; i < side; ++i) xyz.push(i + 0.01 * Math.sin(7 * i + 3 * j), j + 0.01 * Math.cos(5 * i - j), -((i - c) ** 2 + (j - c) ** 2));
+  return Float64Array.from(xyz);
+}
+
+describe('point indices', () => {
+  it('points are the input, copied', () => {
+    const xyz = bump(5);
+    using t = hodt.terrain(xyz);
+    const p = t.points;
+    expect(Array.from(p)).toEqual(Array.from(xyz));
+    p[0] = 99;
+    expect(t.points[0]).toBe(xyz[0]);
+    expect(t.numInputPoints).toBe(25);
+  });
+
+  it('per-point measures are indexed like the triangles', () => {
+    const side = 7;
+    const xyz = bump(side);
+    using t = hodt.terrain(xyz);
+    const m = t.measures();
+    const centre = (side * side - 1) / 2;
+    expect(m.vertexClass.length).toBe(side * side);
+    expect(m.extremum[centre]).toBe(2); // the only maximum
+    expect(m.extremum.filter((e) => e === 2).length).toBe(1);
+    // Degrees agree with the triangles.
+    const { triangles, halfedges } = t.delaunay();
+    const neighbours = Array.from({ length: side * side }, () => new Set<number>());
+    for (let k = 0; k < triangles.length; ++k) {
+      const a = triangles[k]!, b = triangles[k - (k % 3) + ((k + 1) % 3)]!;
+      neighbours[a]!.add(b);
+      neighbours[b]!.add(a);
+    }
+    expect(Array.from(m.degree)).toEqual(neighbours.map((s) => s.size));
+    // Corners are on the hull.
+    expect(m.vertexClass[0]).toBe(VertexClass.Boundary);
+    expect(m.edgeShape.length).toBe(halfedges.length);
+    for (let e = 0; e < halfedges.length; ++e) if (halfedges[e] === -1) expect(m.edgeShape[e]).toBe(EdgeShape.Hull);
+  });
+
+  it('dropped duplicates are marked, and vertexIndex lists the kept points', () => {
+    const xyz = [0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 0, 9, 1, 1, 1, 0.5, 0.4, 2];
+    using t = hodt.terrain(xyz, { dedupe: 'first' });
+    expect(t.numInputPoints).toBe(6);
+    expect(t.numPoints).toBe(5);
+    expect(Array.from(t.vertexIndex)).toEqual([0, 1, 2, 4, 5]);
+    const m = t.measures();
+    expect(m.vertexClass[3]).toBe(VertexClass.Dropped);
+    expect(m.degree[3]).toBe(0);
+    expect(m.degree[5]).toBe(4);
+  });
+});

@@ -1,0 +1,130 @@
+// Terrain.solve options: order, progress, AbortSignal, and the triangles it returns.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { CancelledError, type Hodt, HodtError, InputError, loadHodt, type Terrain } from '../../web/src/index.js';
+
+let hodt: Hodt;
+let terrain: Terrain;
+
+function randomPoints(n: number, seed: number): Float64Array {
+  let s = seed;
+  const r = () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
+  return Float64Array.from({ length: 3 * n }, r);
+}
+
+beforeAll(async () => {
+  hodt = await loadHodt();
+  terrain = hodt.terrain(randomPoints(400, 11));
+});
+afterAll(() => terrain.dispose());
+
+describe('solution', () => {
+  it('carries the optimised triangles, same as triangulation(choice)', () => {
+    const s = terrain.solve('min-local-minima');
+    expect(s.triangles).toBeInstanceOf(Uint32Array);
+    expect(Array.from(s.triangles)).toEqual(Array.from(terrain.triangulation(s.choice).triangles));
+    expect(s.triangles.length).toBe(terrain.delaunay().triangles.length);
+    expect(s).toMatchObject({ objective: 'min-local-minima', sense: 'min', optimal: true, bound: null, details: '' });
+    expect(typeof s.delaunayValue).toBe('number');
+    expect(s.value).toBeLessThanOrEqual(s.delaunayValue);
+  });
+  it('approximations report a bound and details', () => {
+    const s = terrain.solve('max-convex-edges', { method: 'approx', epsilon: 0.5 });
+    expect(s.method).toBe('approx');
+    expect(s.details).toMatch(/lambda/);
+    expect(typeof s.localSearchImproved).toBe('boolean');
+    if (!s.optimal) expect(s.bound).toBeGreaterThanOrEqual(s.value);
+  });
+});
+
+describe('order', () => {
+  it('accepts order 1 (the default)', () => {
+    expect(terrain.solve('min-local-minima', { order: 1 }).optimal).toBe(true);
+  });
+  it('refuses other orders with a clear InputError', () => {
+    expect(() => terrain.solve('min-local-minima', { order: 2 })).toThrow(InputError);
+    expect(() => terrain.solve('min-local-minima', { order: 2 })).toThrow(
+      'order 2 is not supported: hodt optimises first order Delaunay triangulations only (order: 1)',
+    );
+    expect(() => terrain.solve('min-local-minima', { order: 0 })).toThrow('order is 0, expected a positive integer');
+    expect(() => terrain.solve('min-local-minima', { order: 1.5 })).toThrow(InputError);
+  });
+});
+
+describe('bad options are InputErrors naming the value', () => {
+  it('method, objective, epsilon', () => {
+    expect(() => terrain.solve('min-local-minima', { method: 'fast' as never })).toThrow(/unknown method 'fast'; valid methods: brute-force, exact, approx, auto/);
+    expect(() => terrain.solve('nope' as never)).toThrow(/unknown objective 'nope'/);
+    expect(() => terrain.solve('max-convex-edges', { epsilon: 2 })).toThrow(/epsilon is 2, expected a number in \(0, 1\)/);
+    expect(() => terrain.solve('max-convex-edges', { epsilon: '0.1' as never })).toThrow(InputError);
+  });
+});
+
+describe('progress', () => {
+  it('is called during long runs with (done, total)', () => {
+    const calls: [number, number][] = [];
+    terrain.solve('max-convex-edges', { method: 'exact', progress: (done, total) => void calls.push([done, total]) });
+    expect(calls.length).toBeGreaterThan(0);
+    for (const [done, total] of calls) {
+      expect(done).toBeGreaterThanOrEqual(0);
+      expect(total).toBeGreaterThan(0);
+    }
+  });
+  it('returning false cancels with CancelledError (name AbortError)', () => {
+    let error: unknown;
+    try {
+      terrain.solve('max-convex-edges', { method: 'exact', progress: () => false });
+    } catch (e) {
+      error = e;
+    }
+    expect(error).toBeInstanceOf(CancelledError);
+    expect(error).toBeInstanceOf(HodtError);
+    expect((error as Error).name).toBe('AbortError');
+  });
+  it('an exception in the callback cancels the run and comes out unchanged', () => {
+    const mine = new RangeError('mine');
+    expect(() =>
+      terrain.solve('max-convex-edges', {
+        method: 'exact',
+        progress: () => {
+          throw mine;
+        },
+      }),
+    ).toThrow(mine);
+    // The terrain is still usable afterwards.
+    expect(terrain.solve('max-convex-edges', { method: 'exact' }).optimal).toBe(true);
+  });
+});
+
+describe('AbortSignal', () => {
+  it('an aborted signal stops the run before it starts, with the reason as cause', () => {
+    const reason = new Error('user left');
+    let error: unknown;
+    try {
+      terrain.solve('min-local-minima', { signal: AbortSignal.abort(reason) });
+    } catch (e) {
+      error = e;
+    }
+    expect(error).toBeInstanceOf(CancelledError);
+    expect((error as Error).name).toBe('AbortError');
+    expect((error as Error).cause).toBe(reason);
+  });
+  it('aborting during the run (from progress) cancels at the next progress step', () => {
+    const controller = new AbortController();
+    let steps = 0;
+    expect(() =>
+      terrain.solve('max-convex-edges', {
+        method: 'approx',
+        signal: controller.signal,
+        progress: () => {
+          if (++steps === 2) controller.abort();
+        },
+      }),
+    ).toThrow(CancelledError);
+    expect(steps).toBe(2);
+  });
+  it('a signal that is never aborted changes nothing', () => {
+    const a = terrain.solve('max-convex-edges', { method: 'exact', signal: new AbortController().signal });
+    const b = terrain.solve('max-convex-edges', { method: 'exact' });
+    expect(a.value).toBe(b.value);
+  });
+});
