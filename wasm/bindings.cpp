@@ -7,6 +7,7 @@
 #include "hodt/brute_force.hpp"
 #include "hodt/cli.hpp"
 #include "hodt/error.hpp"
+#include "hodt/higher_order.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/read_points.hpp"
 #include "hodt/report.hpp"
@@ -45,6 +46,10 @@ auto guarded(F f) -> decltype(f()) {
   val error = val::global("Error").new_(message);
   error.set("name", kind);
   error.throw_();
+}
+
+void check_order(uint32_t k) {
+  if (k < 1 || k > 64) throw InputError("order is " + std::to_string(k) + ", expected an integer from 1 to 64");
 }
 
 Objective objective_of(const std::string& id) {
@@ -175,7 +180,25 @@ class TerrainHandle {
       return copy_out("Float64Array", flat);
     });
   }
-  std::string statsJson() const { return stats_json(t_); }
+  std::string statsJson(uint32_t order) const { return stats_json(t_, order); }
+  // Useful k-OD edges (pairs) and triangles (triples), input indices.
+  val usefulEdges(uint32_t k) const {
+    return guarded([&] {
+      check_order(k);
+      std::vector<uint32_t> flat;
+      for (auto [u, v] : useful_edges(t_.delaunay_mesh(), k)) flat.insert(flat.end(), {u, v});
+      return copy_out("Uint32Array", t_.to_input(flat));
+    });
+  }
+  val usefulTriangles(uint32_t k) const {
+    return guarded([&] {
+      check_order(k);
+      const auto edges = useful_edges(t_.delaunay_mesh(), k);
+      std::vector<uint32_t> flat;
+      for (const auto& tri : useful_triangles(t_.delaunay_mesh(), k, edges)) flat.insert(flat.end(), tri.begin(), tri.end());
+      return copy_out("Uint32Array", t_.to_input(flat));
+    });
+  }
 
  private:
   Choice choice_of(const val& v) const {
@@ -264,7 +287,9 @@ EMSCRIPTEN_BINDINGS(hodt) {
       .function("delaunayValues", &TerrainHandle::delaunayValues)
       .function("solve", &TerrainHandle::solve)
       .function("enumerateAll", &TerrainHandle::enumerateAll)
-      .function("statsJson", &TerrainHandle::statsJson);
+      .function("statsJson", &TerrainHandle::statsJson)
+      .function("usefulEdges", &TerrainHandle::usefulEdges)
+      .function("usefulTriangles", &TerrainHandle::usefulTriangles);
   emscripten::function("fromPoints", &fromPoints, emscripten::allow_raw_pointers());
   emscripten::function("fromTriangulation", &fromTriangulation, emscripten::allow_raw_pointers());
   emscripten::function("readPoints", &readPoints);

@@ -12,7 +12,7 @@ namespace hodt {
 namespace {
 
 const char* kUsage =
-    "usage: hodt stats FILE [--dedupe first]\n"
+    "usage: hodt stats FILE [--order K] [--dedupe first]\n"
     "       hodt solve FILE --objective ID [--method brute-force|exact|approx|auto]\n"
     "                  [--epsilon E] [--order K] [--triangles] [--trace] [--dedupe first]\n"
     "FILE: CSV/TSV/whitespace 'x y z' lines (optional header), JSON [[x,y,z],...],\n"
@@ -48,7 +48,7 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
     bool have_file = false, triangles = false;
     SolveOptions options;
     Dedupe dedupe = Dedupe::Error;
-    int order = 1;
+    int order = 0;  // 0: not given
     for (size_t i = 1; i < args.size(); ++i) {
       const std::string& a = args[i];
       auto value = [&]() -> const std::string& {
@@ -77,7 +77,8 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
       else throw Usage("unexpected argument '" + a + "'");
     }
     if (!have_file) throw Usage(command + ": missing FILE (hodt --help)");
-    if (order != 1) throw LimitError("--order " + std::to_string(order) + " is not supported yet; only order 1");
+    if (command == "solve" && order > 1)
+      throw LimitError("solve --order " + std::to_string(order) + " is not supported yet: solvers optimise over first order triangulations");
     std::optional<Objective> objective;
     if (command == "solve") {
       if (objective_id.empty()) throw Usage("solve needs --objective ID; valid objectives: " + objective_ids());
@@ -98,7 +99,7 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
       throw InputError(name + ": " + e.what());
     }
     if (command == "stats") {
-      r.out = stats_json(terrain) + "\n";
+      r.out = stats_json(terrain, static_cast<uint32_t>(order)) + "\n";
     } else {
       Solution s = solve(terrain.structure(), *objective, options);
       s.delaunay_value = terrain.delaunay_values()[static_cast<size_t>(*objective)];

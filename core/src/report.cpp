@@ -1,10 +1,11 @@
 #include "hodt/report.hpp"
 
 #include "hodt/format.hpp"
+#include "hodt/higher_order.hpp"
 
 namespace hodt {
 
-std::string stats_json(const Terrain& t) {
+std::string stats_json(const Terrain& t, uint32_t order) {
   const Mesh& m = t.structure().base;
   const size_t hull_edges = m.hull.size();
   const size_t edges = (m.triangles.size() + hull_edges) / 2;
@@ -16,7 +17,14 @@ std::string stats_json(const Terrain& t) {
   const auto& v = t.delaunay_values();
   for (size_t k = 0; k < kNumObjectives; ++k)
     s += (k ? ", \"" : "\"") + std::string(objectives()[k].id) + "\": " + format_number(v[k]);
-  return s + "}}";
+  s += "}";
+  if (order > 0) {
+    const auto edges = useful_edges(t.delaunay_mesh(), order);
+    const auto triangles = useful_triangles(t.delaunay_mesh(), order, edges);
+    s += ", \"order\": " + std::to_string(order) + ", \"usefulEdges\": " + std::to_string(edges.size()) +
+         ", \"usefulTriangles\": " + std::to_string(triangles.size());
+  }
+  return s + "}";
 }
 
 namespace {

@@ -49,6 +49,12 @@ void Terrain::check_choice(const Choice& choice) const {
       throw InputError("choice[" + std::to_string(q) + "] is " + std::to_string(choice[q]) + ", expected 0 or 1");
 }
 
+const Mesh& Terrain::delaunay_mesh() const {
+  if (fo_.is_delaunay) return fo_.base;
+  if (!delaunay_) delaunay_ = std::make_shared<const Mesh>(delaunay(fo_.base.coords));
+  return *delaunay_;
+}
+
 const std::array<double, kNumObjectives>& Terrain::delaunay_values() const {
   if (!have_delaunay_values_) {
     delaunay_values_ = evaluate_all(fo_.base);

@@ -144,3 +144,28 @@ describe('exact methods from the CLI', () => {
     }
   });
 });
+
+describe('higher order: hodt stats --order K', () => {
+  it('adds useful edge and triangle counts; order 1 is Delaunay plus the flipped diagonals', () => {
+    const plain = JSON.parse(hodt(['stats', fixture('uniform-300.csv')]).out);
+    expect(plain.usefulEdges).toBeUndefined();
+    const one = JSON.parse(hodt(['stats', fixture('uniform-300.csv'), '--order', '1']).out);
+    expect(one.usefulEdges).toBe(one.edges + one.flippable);
+    let last = one;
+    for (const k of [2, 3, 4, 8]) {
+      const j = JSON.parse(hodt(['stats', fixture('dem-hills-400.txt'), '--order', String(k)]).out);
+      expect(j.order).toBe(k);
+      expect(j.usefulEdges).toBeGreaterThanOrEqual(k === 2 ? 0 : last.usefulEdges);
+      expect(j.usefulTriangles).toBeGreaterThan(0);
+      expect(withoutTime(hodt(['stats', fixture('dem-hills-400.txt'), '--order', String(k)]).out)).toEqual(
+        withoutTime(native(['stats', fixture('dem-hills-400.txt'), '--order', String(k)]).out),
+      );
+      last = j;
+    }
+  });
+  it('rejects a bad order', () => {
+    const r = hodt(['stats', fixture('uniform-12.csv'), '--order', '0']);
+    expect(r.code).toBe(2);
+    expect(r.err).toMatch(/--order expects an integer from 1 to 64/);
+  });
+});

@@ -8,7 +8,8 @@
 namespace hodt {
 
 // {"points", "triangles", "edges", "flippable", "hullVertices", "delaunay": {id: value}}
-std::string stats_json(const Terrain& terrain);
+// With order k > 1 (or k given): also "usefulEdges" and "usefulTriangles" counts.
+std::string stats_json(const Terrain& terrain, uint32_t order = 0);
 // {"objective", "sense", "method", "value", "delaunayValue", "optimal", "bound",
 //  "flipped", "timeMs"[, "critical": {"first", "second", "value"}]
 //  [, "trace": [{"threshold", "satisfiable", "clauses"}, ...]][, "triangles"]}

@@ -3,6 +3,7 @@
 // *_input functions translate to the caller's input indices.
 #pragma once
 #include <array>
+#include <memory>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -32,6 +33,8 @@ class Terrain {
   // Checks a choice from outside (length m, bytes 0/1); throws InputError.
   void check_choice(const Choice& choice) const;
   const std::array<double, kNumObjectives>& delaunay_values() const;
+  // The Delaunay triangulation of the points (the base, unless the user gave one).
+  const Mesh& delaunay_mesh() const;
 
  private:
   FirstOrder fo_;
@@ -39,6 +42,7 @@ class Terrain {
   uint32_t num_input_ = 0;
   mutable std::array<double, kNumObjectives> delaunay_values_{};
   mutable bool have_delaunay_values_ = false;
+  mutable std::shared_ptr<const Mesh> delaunay_;  // only for user triangulations
 };
 
 }  // namespace hodt

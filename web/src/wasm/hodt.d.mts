@@ -49,7 +49,9 @@ export interface RawTerrain {
     progress: ((done: number, total: number) => boolean | void) | undefined,
   ): RawSolution;
   enumerateAll(): Float64Array;
-  statsJson(): string;
+  statsJson(order: number): string;
+  usefulEdges(order: number): Uint32Array;
+  usefulTriangles(order: number): Uint32Array;
   delete(): void;
   isDeleted(): boolean;
 }

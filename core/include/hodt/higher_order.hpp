@@ -1,0 +1,34 @@
+// Higher order Delaunay: useful k-OD edges and triangles (paper, Section 4.3;
+// Gudmundsson, Hammar, van Kreveld [10]: Definitions 2, 3, Lemmas 1, 2).
+//
+// A triangle is k-OD if its circumcircle holds at most k points. By Lemma 1 an edge
+// uv is a useful k-OD edge (in some k-OD triangulation) iff the triangles u v s1 and
+// u v s2 are k-OD, where s1 is the point left of uv whose circle through u, v holds
+// no point left of uv (s2 likewise on the right; a side without points is skipped).
+// By Lemma 2 such an edge crosses at most 2k - 1 Delaunay edges, so candidates are
+// found by walking the Delaunay triangulation from each vertex through at most
+// 2k - 1 edges, keeping the wedge of directions that cross them all. s1 is among the
+// left ends of the crossed edges; it is confirmed (and corrected, if ever needed) by
+// walking the points inside its circle. Every decision is an exact predicate.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "hodt/mesh.hpp"
+
+namespace hodt {
+
+// Useful k-OD edges of the points of a Delaunay mesh, as sorted pairs (u < v).
+std::vector<std::pair<uint32_t, uint32_t>> useful_edges(const Mesh& delaunay, uint32_t k);
+
+// k-OD triangles all of whose edges are useful k-OD edges, as sorted triples.
+std::vector<std::array<uint32_t, 3>> useful_triangles(const Mesh& delaunay, uint32_t k,
+                                                      const std::vector<std::pair<uint32_t, uint32_t>>& edges);
+
+// Is every triangle of the mesh k-OD (at most k points in its circumcircle)?
+// (Scans with the Delaunay mesh's circle walk; `delaunay` must hold the same points.)
+bool is_k_order(const Mesh& triangulation, const Mesh& delaunay, uint32_t k);
+
+}  // namespace hodt

@@ -1,0 +1,148 @@
+#include "hodt/higher_order.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include "hodt/circle_count.hpp"
+#include "hodt/measures.hpp"
+#include "hodt/predicates.hpp"
+
+namespace hodt {
+
+namespace {
+
+struct Walker {
+  const Mesh& m;
+  uint32_t u;
+  uint32_t max_crossings;
+  std::vector<uint32_t> left, right;  // ends of the crossed edges, along the path
+  // Called for each candidate w with the crossed edges' left and right ends.
+  std::vector<std::pair<uint32_t, std::pair<std::vector<uint32_t>, std::vector<uint32_t>>>> found;
+
+  const double* p(uint32_t v) const { return m.point(v); }
+
+  // Rays from u inside the open wedge (right of ray u->wl, left of ray u->wr) cross
+  // halfedge h, which runs from its right end to its left end seen from u.
+  void cross(uint32_t h, uint32_t wr, uint32_t wl) {
+    const int32_t f = m.halfedges[h];
+    if (f < 0 || left.size() >= max_crossings) return;
+    const uint32_t r = m.origin(h), l = m.target(h);
+    left.push_back(l);
+    right.push_back(r);
+    const uint32_t ff = static_cast<uint32_t>(f);
+    const uint32_t w = m.apex(ff);  // triangle l, r, w beyond the edge
+    const bool inside_right = orient2d(p(u), p(wr), p(w)) > 0;  // w left of ray u->wr
+    const bool inside_left = orient2d(p(u), p(wl), p(w)) < 0;   // w right of ray u->wl
+    // Edges of the far triangle: r -> w (next of ff) and w -> l (prev of ff), with
+    // their right and left ends as seen from u.
+    const uint32_t rw = next_halfedge(ff), wl_edge = prev_halfedge(ff);
+    // Halfedge ff runs l -> r; next(ff) runs r -> w; prev(ff) runs w -> l. Seen from
+    // u, crossing r -> w goes from right end r to left end w: we need the twin
+    // orientation "right end first", which is the halfedge itself (u is on the
+    // other side of it), and likewise w -> l.
+    if (inside_right && inside_left) {
+      found.push_back({w, {left, right}});
+      cross(rw, wr, w);
+      cross(wl_edge, w, wl);
+    } else if (!inside_left) {  // w on or beyond the left ray: rays leave through r -> w
+      cross(rw, wr, wl);
+    } else {  // w on or beyond the right ray: rays leave through w -> l
+      cross(wl_edge, wr, wl);
+    }
+    left.pop_back();
+    right.pop_back();
+  }
+};
+
+// The point among `side` whose circle with a, b (a, b, s counterclockwise) is the
+// smallest cap: no other point of `side` inside it.
+uint32_t smallest_cap(const Mesh& m, uint32_t a, uint32_t b, const std::vector<uint32_t>& side) {
+  uint32_t best = side[0];
+  for (uint32_t s : side)
+    if (s != best && in_circle(m.point(a), m.point(b), m.point(best), m.point(s))) best = s;
+  return best;
+}
+
+// Is the triangle a, b, s (counterclockwise) k-OD, with s the smallest cap on its
+// side of ab? Walks the points inside its circle; a point inside on s's side of ab
+// means s was not the smallest cap: move to it and look again.
+bool cap_is_k_order(const Mesh& m, CircleCounter& circles, uint32_t a, uint32_t b, uint32_t s, uint32_t k) {
+  for (;;) {
+    const uint32_t count = circles.count(a, b, s, k);
+    uint32_t better = s;
+    for (uint32_t w : circles.inside())
+      if (orient2d(m.point(a), m.point(b), m.point(w)) > 0 &&
+          (better == s || in_circle(m.point(a), m.point(b), m.point(better), m.point(w))))
+        better = w;
+    if (better == s) return count <= k;
+    s = better;
+  }
+}
+
+}  // namespace
+
+std::vector<std::pair<uint32_t, uint32_t>> useful_edges(const Mesh& m, uint32_t k) {
+  const uint32_t n = m.num_vertices();
+  const std::vector<int32_t> start = vertex_halfedges(m);
+  CircleCounter circles(m);
+  std::vector<std::pair<uint32_t, uint32_t>> out;
+  for (uint32_t u = 0; u < n; ++u) {
+    Walker walk{m, u, k == 0 ? 0 : 2 * k - 1, {}, {}, {}};
+    uint32_t e = static_cast<uint32_t>(start[u]);
+    for (;;) {  // every triangle around u: u, a, b counterclockwise
+      const uint32_t a = m.target(e), b = m.apex(e);
+      if (a > u) walk.found.push_back({a, {{}, {}}});
+      walk.cross(next_halfedge(e), a, b);
+      const int32_t t = m.halfedges[prev_halfedge(e)];
+      if (t < 0) {
+        if (b > u) walk.found.push_back({b, {{}, {}}});
+        break;
+      }
+      e = static_cast<uint32_t>(t);
+      if (e == static_cast<uint32_t>(start[u])) break;
+    }
+    for (auto& [w, sides] : walk.found) {
+      if (w < u) continue;  // found from the smaller end too
+      auto& [left, right] = sides;
+      if (left.empty()) {  // a Delaunay edge: useful for every k >= 0
+        out.push_back({u, w});
+        continue;
+      }
+      // Lemma 1 on each side (both sides have points: uw crosses edges).
+      const uint32_t s1 = smallest_cap(m, u, w, left);
+      const uint32_t s2 = smallest_cap(m, w, u, right);
+      if (cap_is_k_order(m, circles, u, w, s1, k) && cap_is_k_order(m, circles, w, u, s2, k)) out.push_back({u, w});
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::vector<std::array<uint32_t, 3>> useful_triangles(const Mesh& m, uint32_t k,
+                                                      const std::vector<std::pair<uint32_t, uint32_t>>& edges) {
+  const uint32_t n = m.num_vertices();
+  std::vector<std::vector<uint32_t>> adj(n);
+  for (auto [u, v] : edges) adj[u].push_back(v), adj[v].push_back(u);
+  for (auto& a : adj) std::sort(a.begin(), a.end());
+  CircleCounter circles(m);
+  std::vector<std::array<uint32_t, 3>> out;
+  for (auto [u, v] : edges)
+    for (uint32_t w : adj[v]) {
+      if (w <= v || !std::binary_search(adj[u].begin(), adj[u].end(), w)) continue;
+      const int o = orient2d(m.point(u), m.point(v), m.point(w));
+      if (o == 0) continue;
+      const uint32_t count = o > 0 ? circles.count(u, v, w, k) : circles.count(u, w, v, k);
+      if (count <= k) out.push_back({u, v, w});
+    }
+  return out;
+}
+
+bool is_k_order(const Mesh& t, const Mesh& delaunay, uint32_t k) {
+  CircleCounter circles(delaunay);
+  for (uint32_t i = 0; i < t.num_triangles(); ++i)
+    if (circles.count(t.triangles[3 * i], t.triangles[3 * i + 1], t.triangles[3 * i + 2], k) > k) return false;
+  return true;
+}
+
+}  // namespace hodt
