@@ -64,3 +64,19 @@ describe('point indices', () => {
     expect(m.degree[5]).toBe(4);
   });
 });
+
+describe('higher order: useful edges and triangles', () => {
+  it('order 1: the Delaunay edges plus the other diagonals of the quads', () => {
+    let s = 5;
+    const r = () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
+    using t = hodt.terrain(Float64Array.from({ length: 300 }, r));
+    const stats = t.stats(1);
+    const edges = t.usefulEdges(1), triangles = t.usefulTriangles(1);
+    expect(edges.length).toBe(2 * (stats.edges + t.numQuads));
+    expect(triangles.length).toBeGreaterThanOrEqual(3 * (stats.triangles + 2 * t.numQuads));
+    expect(stats).toMatchObject({ order: 1, usefulEdges: edges.length / 2, usefulTriangles: triangles.length / 3 });
+    expect(t.usefulEdges(3).length).toBeGreaterThan(edges.length);
+    expect(() => t.usefulEdges(0)).toThrow('order is 0, expected a positive integer');
+    expect(t.stats().order).toBeUndefined();
+  });
+});

@@ -38,14 +38,19 @@ function aborted(signal: AbortSignal): CancelledError {
   return new CancelledError('aborted', { cause: signal.reason });
 }
 
+/** Throws InputError unless order is a positive integer. */
+export function checkOrder(order: unknown): asserts order is number {
+  if (typeof order !== 'number' || !Number.isInteger(order) || order < 1) {
+    throw new InputError(`order is ${String(order)}, expected a positive integer`);
+  }
+}
+
 function checkOptions(objective: unknown, options: SolveOptions): void {
   if (typeof objective !== 'string') throw new InputError(`objective is ${String(objective)}, expected an objective id`);
   const { method = 'auto', epsilon = 0.25, order = 1 } = options;
   if (typeof method !== 'string') throw new InputError(`method is ${String(method)}, expected brute-force, exact, approx or auto`);
   if (typeof epsilon !== 'number') throw new InputError(`epsilon is ${String(epsilon)}, expected a number in (0, 1)`);
-  if (typeof order !== 'number' || !Number.isInteger(order) || order < 1) {
-    throw new InputError(`order is ${String(order)}, expected a positive integer`);
-  }
+  checkOrder(order);
   if (order !== 1) {
     throw new InputError(`order ${order} is not supported: hodt optimises first order Delaunay triangulations only (order: 1)`);
   }

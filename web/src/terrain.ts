@@ -1,6 +1,6 @@
 import { guard, InputError } from './errors.js';
 import { type ObjectiveId, type ObjectiveValues, toValues } from './objectives.js';
-import { type SolveOptions, solveRaw } from './solve.js';
+import { checkOrder, type SolveOptions, solveRaw } from './solve.js';
 import type { RawTerrain } from './wasm/hodt.mjs';
 
 /** One byte per flippable quad: 0 keeps the Delaunay diagonal, 1 flips it. */
@@ -84,12 +84,19 @@ export interface Solution {
 
 /** The `stats` document of the CLI. */
 export interface TerrainStats {
+  /** Vertices of the triangulation. */
   points: number;
   triangles: number;
   edges: number;
+  /** Flippable quads (m). */
   flippable: number;
   hullVertices: number;
+  /** Values of the 13 objectives for the Delaunay triangulation. */
   delaunay: ObjectiveValues;
+  /** With stats(order): the order k and the counts of useful k-OD edges and triangles. */
+  order?: number;
+  usefulEdges?: number;
+  usefulTriangles?: number;
 }
 
 /**
@@ -224,9 +231,28 @@ export class Terrain implements Disposable {
   enumerateAll(): Float64Array {
     return guard(() => this.#handle.enumerateAll());
   }
-  /** The CLI's `stats` document. */
-  stats(): TerrainStats {
-    return JSON.parse(this.#handle.statsJson(0)) as TerrainStats;
+  /** The CLI's `stats` document; with an order k, also the numbers of useful k-OD
+   * edges and triangles (like `hodt stats --order K`). */
+  stats(order?: number): TerrainStats {
+    if (order !== undefined) checkOrder(order);
+    const raw = this.#handle;
+    return guard(() => JSON.parse(raw.statsJson(order ?? 0)) as TerrainStats);
+  }
+  /** Useful order-k Delaunay edges: pairs of point indices, the edges that appear
+   * in some triangulation whose triangles' circumcircles hold at most k points
+   * each (order 1: the Delaunay edges plus the quads' other diagonals). */
+  usefulEdges(order: number): Uint32Array {
+    checkOrder(order);
+    const raw = this.#handle;
+    return guard(() => raw.usefulEdges(order));
+  }
+  /** Useful order-k Delaunay triangles: triples of point indices, the triangles
+   * whose circumcircle holds at most k points and whose three edges are useful
+   * order-k edges. */
+  usefulTriangles(order: number): Uint32Array {
+    checkOrder(order);
+    const raw = this.#handle;
+    return guard(() => raw.usefulTriangles(order));
   }
 
   /** Frees the wasm memory. Idempotent; any other use afterwards throws InputError. */
