@@ -128,3 +128,16 @@ describe('evaluation and brute force', () => {
     t.dispose();
   });
 });
+
+describe('error names survive minification', () => {
+  it('are spelled out, not taken from the class name', async () => {
+    const { HodtError, InputError, LimitError, CancelledError, InternalError } = await import('../../web/src/errors.js');
+    expect(new HodtError('x').name).toBe('HodtError');
+    expect(new InputError('x').name).toBe('InputError');
+    expect(new LimitError('x').name).toBe('LimitError');
+    expect(new InternalError('x').name).toBe('InternalError');
+    expect(new CancelledError().name).toBe('AbortError');
+    expect(new CancelledError().message).toBe('cancelled');
+    expect(new InputError('x')).toBeInstanceOf(HodtError);
+  });
+});

@@ -1,29 +1,37 @@
+// Names are spelled out: minifiers rename classes, so `new.target.name` would not do.
+
 /** Base class of every error hodt throws; `message` is the core's own text. */
 export class HodtError extends Error {
+  override name = 'HodtError';
   constructor(message: string, options?: { cause?: unknown }) {
     super(message, options);
-    this.name = new.target.name;
   }
 }
 /** Bad input: malformed file, NaN coordinate, duplicate point, invalid choice or
  * option (an unknown objective or method, an unsupported order). */
-export class InputError extends HodtError {}
+export class InputError extends HodtError {
+  override name = 'InputError';
+}
 /** A valid request the library refuses: too many quads for brute force, a tree
  * decomposition wider than the memory cap, out of memory. */
-export class LimitError extends HodtError {}
+export class LimitError extends HodtError {
+  override name = 'LimitError';
+}
 /**
  * The run was cancelled: its AbortSignal was aborted (`cause` is the signal's
  * reason) or the progress callback returned false. Its `name` is 'AbortError', as
  * for an aborted fetch(), so code that checks `e.name === 'AbortError'` works too.
  */
 export class CancelledError extends HodtError {
+  override name = 'AbortError';
   constructor(message = 'cancelled', options?: { cause?: unknown }) {
     super(message, options);
-    this.name = 'AbortError';
   }
 }
 /** A bug in hodt: please report it with the input. */
-export class InternalError extends HodtError {}
+export class InternalError extends HodtError {
+  override name = 'InternalError';
+}
 
 /** Turns an error thrown by the wasm module into the matching typed error. */
 export function toHodtError(e: unknown): unknown {
