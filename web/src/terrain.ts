@@ -1,3 +1,6 @@
+// Terrain implements Disposable: make its declarations compile in projects whose
+// lib lacks it (TypeScript >= 5.2 knows this lib; it only adds types).
+/// <reference lib="esnext.disposable" preserve="true" />
 import { guard, InputError } from './errors.js';
 import { type ObjectiveId, type ObjectiveValues, toValues } from './objectives.js';
 import { checkOrder, type SolveOptions, solveRaw } from './solve.js';

@@ -6,33 +6,16 @@
  *   const geometry = terrainGeometry(THREE, terrain.points, terrain.delaunay().triangles);
  *   setTriangles(geometry, terrain.solve('min-local-minima').triangles);
  *
- * This module never imports three: you pass your THREE (or just its BufferGeometry
- * and BufferAttribute classes), so it works with any three version from 0.150
- * and does not need three's types.
+ * This module never imports three at run time: you pass your THREE (or an object
+ * with its BufferGeometry and BufferAttribute classes), so the core entry point
+ * and this one work with any three from 0.150. Only its types come from three
+ * (with TypeScript, have @types/three installed).
  */
+import type * as Three from 'three';
 import { InputError } from './errors.js';
 
-/** What hodt uses of a three.js BufferAttribute. */
-export interface BufferAttributeLike {
-  readonly array: ArrayLike<number> & { set(values: ArrayLike<number>, offset?: number): void };
-  needsUpdate: boolean;
-}
-
-/** What hodt uses of a three.js BufferGeometry. */
-export interface BufferGeometryLike<A extends BufferAttributeLike = BufferAttributeLike> {
-  setIndex(index: A): unknown;
-  setAttribute(name: string, attribute: A): unknown;
-  getIndex(): BufferAttributeLike | null;
-  computeVertexNormals(): void;
-  computeBoundingBox(): void;
-  computeBoundingSphere(): void;
-}
-
 /** The classes hodt needs from three: pass `THREE` itself (`import * as THREE from 'three'`). */
-export interface ThreeClasses<G extends BufferGeometryLike<A>, A extends BufferAttributeLike> {
-  BufferGeometry: new () => G;
-  BufferAttribute: new (array: Float32Array | Uint32Array, itemSize: number) => A;
-}
+export type ThreeClasses = Pick<typeof Three, 'BufferGeometry' | 'BufferAttribute'>;
 
 export interface GeometryOptions {
   /** Which three.js axis the terrain's heights (z) go to. 'z' (default) keeps x, y,
@@ -51,12 +34,12 @@ export interface GeometryOptions {
  * normals. The geometry is yours (three's `geometry.dispose()` frees its GPU
  * buffers); it does not refer to the terrain.
  */
-export function terrainGeometry<G extends BufferGeometryLike<A>, A extends BufferAttributeLike>(
-  THREE: ThreeClasses<G, A>,
+export function terrainGeometry(
+  THREE: ThreeClasses,
   points: ArrayLike<number>,
   triangles: Uint32Array,
   options: GeometryOptions = {},
-): G {
+): Three.BufferGeometry {
   const { up = 'z', origin = [0, 0, 0] } = options;
   const [ox, oy, oz] = origin;
   const n = Math.floor(points.length / 3);
@@ -90,7 +73,7 @@ export function terrainGeometry<G extends BufferGeometryLike<A>, A extends Buffe
  * its index in place (every first order triangulation of a terrain has the same
  * number of triangles), marks it for upload and recomputes the normals.
  */
-export function setTriangles(geometry: BufferGeometryLike, triangles: Uint32Array): void {
+export function setTriangles(geometry: Three.BufferGeometry, triangles: Uint32Array): void {
   const index = geometry.getIndex();
   if (!index) throw new InputError('the geometry has no index: make it with terrainGeometry()');
   if (index.array.length !== triangles.length) {
