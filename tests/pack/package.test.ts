@@ -1,0 +1,247 @@
+// The npm package end to end: npm pack, npm install of the tarball in an empty
+// project (no network), then Node, the CLI, TypeScript and a bundled page in
+// Chromium under a Content-Security-Policy without 'unsafe-eval'.
+import { execFileSync, spawnSync } from 'node:child_process';
+import { cpSync, readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import type { Browser } from 'playwright-core';
+import { build, createServer } from 'vite';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { launch, watchedPage } from './chromium.js';
+import { checkBuilt, linkFromRepo, packAndInstall, type Project, repo } from './project.js';
+import { serveStatic } from './serve.js';
+
+const here = join(repo, 'tests/pack');
+const fixture = join(repo, 'tests/fixtures/uniform-50.csv');
+const tsc = join(repo, 'node_modules/typescript/bin/tsc');
+// What a strict production host sends: scripts and wasm from the origin only, no eval.
+const CSP = "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; worker-src 'self'";
+const CSP_WITHOUT_WASM = "default-src 'self'; script-src 'self'; worker-src 'self'";
+
+let project: Project;
+let browser: Browser | undefined;
+
+beforeAll(() => {
+  checkBuilt();
+  project = packAndInstall();
+}, 180_000);
+
+afterAll(async () => {
+  await browser?.close();
+  if (process.env.HODT_KEEP_PACK) console.log(`kept ${project.dir}`);
+  else project?.remove();
+});
+
+const inProject = (cmd: string, args: string[]) =>
+  spawnSync(cmd, args, { cwd: project.dir, encoding: 'utf8', env: { ...process.env, NODE_OPTIONS: '' } });
+
+describe('the tarball', () => {
+  it('holds the JS, the types, the wasm and the CLI, and nothing else', () => {
+    const paths = project.files.map((f) => f.path).sort();
+    for (const f of ['package.json', 'README.md', 'dist/index.js', 'dist/index.d.ts', 'dist/three.js', 'dist/three.d.ts', 'dist/cli.js', 'dist/wasm/hodt.mjs', 'dist/wasm/hodt.d.mts', 'dist/wasm/hodt.wasm']) {
+      expect(paths).toContain(f);
+    }
+    for (const p of paths) expect(p).toMatch(/^(package\.json|README\.md|docs\/api\.md|dist\/.+\.(js|d\.ts|mjs|d\.mts|wasm))$/);
+    const cli = project.files.find((f) => f.path === 'dist/cli.js')!;
+    expect(cli.mode & 0o111).not.toBe(0);
+  });
+
+  it('every export and the bin point at packed files', () => {
+    const pkg = JSON.parse(readFileSync(join(project.dir, 'node_modules/hodt/package.json'), 'utf8'));
+    const targets: string[] = [];
+    const collect = (v: unknown): void => {
+      if (typeof v === 'string') targets.push(v);
+      else if (v && typeof v === 'object') Object.values(v).forEach(collect);
+    };
+    collect(pkg.exports);
+    collect(pkg.bin);
+    const paths = new Set(project.files.map((f) => `./${f.path}`));
+    for (const t of targets) expect(paths, t).toContain(t.startsWith('./') ? t : `./${t}`);
+    expect(pkg.type).toBe('module');
+    expect(pkg.sideEffects).toBe(false);
+  });
+
+  it('has no eval or new Function (a page can forbid unsafe-eval)', () => {
+    for (const f of project.files.filter((f) => /\.(m?js)$/.test(f.path))) {
+      const text = readFileSync(join(project.dir, 'node_modules/hodt', f.path), 'utf8');
+      expect(text, f.path).not.toMatch(/new Function\s*\(|\beval\s*\(/);
+    }
+  });
+
+  it('the library never imports three or Node built-ins statically (the CLI may)', () => {
+    for (const f of project.files.filter((f) => f.path.endsWith('.js') && f.path !== 'dist/cli.js')) {
+      const text = readFileSync(join(project.dir, 'node_modules/hodt', f.path), 'utf8');
+      const specifiers = [...text.matchAll(/(?:^|[\s;])(?:import|export)\b[^'"]*?from\s*['"]([^'"]+)['"]|import\(\s*['"]([^'"]+)['"]/gm)].map((m) => m[1] ?? m[2]);
+      for (const s of specifiers) expect(s, `${f.path} imports ${s}`).toMatch(/^\.\.?\//);
+    }
+  });
+});
+
+describe('Node', () => {
+  it('imports the package by name and solves a terrain (without three installed)', () => {
+    const r = inProject('node', [join(here, 'node-smoke.mjs'), fixture]);
+    expect(r.stderr).toBe('');
+    expect(r.status).toBe(0);
+    const out = JSON.parse(r.stdout);
+    expect(out).toMatchObject({ points: 50, isUint32: true, optimal: true, three: null });
+    expect(out.triangles).toBeGreaterThan(50);
+    expect(out.value).toBeLessThanOrEqual(out.delaunayValue);
+    expect(Object.keys(out.values)).toHaveLength(13);
+    for (const v of Object.values(out.values)) expect(Number.isFinite(v)).toBe(true);
+    expect(out.aborted).toEqual({ cancelled: true, name: 'AbortError' });
+    expect(out.input).toEqual({ input: true, hodt: true, name: 'InputError', message: 'point 2: y is NaN, expected a finite number' });
+  });
+
+  it('hodt/three builds a geometry with the project\'s three', () => {
+    linkFromRepo(project.dir, ['three']);
+    const r = inProject('node', [join(here, 'node-smoke.mjs'), fixture, 'three']);
+    expect(r.status, r.stderr).toBe(0);
+    const out = JSON.parse(r.stdout);
+    expect(out.three).toEqual({ isBufferGeometry: true, index: out.triangles * 3, position: 50 });
+  });
+});
+
+describe('CLI (npm bin)', () => {
+  it('npx hodt stats FILE prints the stats JSON', () => {
+    const r = inProject('npx', ['--no', 'hodt', 'stats', fixture]);
+    expect(r.status, r.stderr).toBe(0);
+    const j = JSON.parse(r.stdout);
+    expect(j.points).toBe(50);
+    expect(Object.keys(j.delaunay)).toHaveLength(13);
+  });
+  it('npx hodt solve reads standard input and reports bad files with exit code 2', () => {
+    const ok = spawnSync('npx', ['--no', 'hodt', 'solve', '-', '--objective', 'min-local-minima'], {
+      cwd: project.dir,
+      encoding: 'utf8',
+      input: readFileSync(fixture, 'utf8'),
+    });
+    expect(ok.status, ok.stderr).toBe(0);
+    expect(JSON.parse(ok.stdout)).toMatchObject({ objective: 'min-local-minima', optimal: true });
+    const bad = inProject('npx', ['--no', 'hodt', 'stats', join(repo, 'tests/fixtures/bad-nan.csv')]);
+    expect(bad.status).toBe(2);
+    expect(bad.stderr).toMatch(/bad-nan\.csv/);
+  });
+});
+
+describe('TypeScript', () => {
+  beforeAll(() => {
+    cpSync(join(here, 'examples'), join(project.dir, 'examples'), { recursive: true });
+    linkFromRepo(project.dir, ['three', '@types/three', '@types/node']);
+  });
+  const check = (config: string, extra: string[] = []) => {
+    const r = spawnSync('node', [tsc, '-p', `examples/${config}`, ...extra], { cwd: project.dir, encoding: 'utf8' });
+    expect(r.stdout + r.stderr).toBe('');
+    expect(r.status).toBe(0);
+  };
+  it('the documentation examples compile in strict mode (NodeNext resolution)', () => check('tsconfig.json'));
+  it('the documentation examples compile in strict mode (Bundler resolution)', () => check('tsconfig.bundler.json'));
+  it('a strict project without @types/node, esnext lib or skipLibCheck compiles', () => check('tsconfig.minimal.json'));
+  it('the README Node example runs', () => {
+    check('tsconfig.json', ['--noEmit', 'false', '--outDir', 'examples/out']);
+    const r = inProject('node', ['examples/out/node.js', fixture]);
+    expect(r.status, r.stderr).toBe(0);
+    expect(r.stdout).toMatch(/^\d+ flippable quads; local minima: Delaunay \d+, optimal \d+\nUint32Array\(\d+\)/);
+  });
+});
+
+describe('browser (Vite bundle, Chromium, strict CSP)', () => {
+  let dist: string;
+  beforeAll(async () => {
+    cpSync(join(here, 'page'), join(project.dir, 'page'), { recursive: true });
+    cpSync(join(here, 'examples'), join(project.dir, 'examples'), { recursive: true });
+    linkFromRepo(project.dir, ['three']);
+    dist = join(project.dir, 'page-dist');
+    const root = join(project.dir, 'page');
+    await build({
+      root,
+      configFile: false,
+      logLevel: 'warn',
+      base: './', // relative URLs: the same build is served under any path
+      build: {
+        outDir: dist,
+        emptyOutDir: true,
+        chunkSizeWarningLimit: 2000,
+        rollupOptions: { input: { main: join(root, 'index.html'), example: join(root, 'example.html') } },
+      },
+    });
+    browser = await launch();
+  }, 180_000);
+
+  it('the bundle holds one hodt.wasm, and no eval', () => {
+    const files = execFileSync('find', [dist, '-type', 'f'], { encoding: 'utf8' }).trim().split('\n');
+    expect(files.filter((f) => f.endsWith('.wasm'))).toHaveLength(1);
+    for (const f of files.filter((f) => f.endsWith('.js'))) expect(readFileSync(f, 'utf8'), f).not.toMatch(/new Function\s*\(|\beval\s*\(/);
+  });
+
+  it("solves on the page and in a module worker with script-src 'self' 'wasm-unsafe-eval'", async () => {
+    const server = await serveStatic(dist, CSP);
+    try {
+      const w = await watchedPage(browser!);
+      await w.page.goto(server.url);
+      await w.page.waitForFunction(() => (window as { __smoke?: unknown }).__smoke, null, { timeout: 60_000 });
+      const smoke = await w.page.evaluate(() => (window as { __smoke?: Record<string, unknown> }).__smoke!);
+      expect(smoke.error).toBeUndefined();
+      expect(smoke).toMatchObject({ ok: true, optimal: true, aborted: 'AbortError', inputError: 'InputError' });
+      expect(smoke.indexCount).toBe((smoke.triangles as number) * 3);
+      expect(smoke.worker).toMatchObject({ kind: 'solved', value: smoke.exactValue, triangles: smoke.triangles });
+      expect(await w.violations()).toEqual([]);
+      expect(w.errors).toEqual([]);
+      expect(w.warnings.filter((m) => /wasm|WebAssembly|Content Security/i.test(m))).toEqual([]);
+      await w.page.close();
+    } finally {
+      await server.close();
+    }
+  });
+
+  it('the README three.js example renders under the same CSP', async () => {
+    const server = await serveStatic(dist, CSP);
+    try {
+      const w = await watchedPage(browser!);
+      await w.page.goto(`${server.url}example.html`);
+      await w.page.waitForSelector('canvas', { timeout: 60_000 });
+      expect(await w.violations()).toEqual([]);
+      expect(w.errors).toEqual([]);
+      await w.page.close();
+    } finally {
+      await server.close();
+    }
+  });
+
+  it("control: without 'wasm-unsafe-eval' the same page is blocked (the header is in force)", async () => {
+    const server = await serveStatic(dist, CSP_WITHOUT_WASM);
+    try {
+      const w = await watchedPage(browser!);
+      await w.page.goto(server.url);
+      await w.page.waitForFunction(() => (window as { __smoke?: unknown }).__smoke, null, { timeout: 60_000 });
+      const smoke = await w.page.evaluate(() => (window as { __smoke?: Record<string, unknown> }).__smoke!);
+      expect(smoke.ok).toBe(false);
+      expect(String(smoke.error)).toMatch(/^HodtError: could not load hodt\.wasm/);
+      expect((await w.violations()).some((v) => v.startsWith('script-src'))).toBe(true);
+      await w.page.close();
+    } finally {
+      await server.close();
+    }
+  });
+
+  it('works in the Vite dev server with no configuration', async () => {
+    const server = await createServer({
+      root: join(project.dir, 'page'),
+      configFile: false,
+      logLevel: 'warn',
+      server: { host: '127.0.0.1', port: 0, hmr: false, fs: { allow: [project.dir] } },
+    });
+    await server.listen();
+    try {
+      const w = await watchedPage(browser!);
+      await w.page.goto(server.resolvedUrls!.local[0]!);
+      await w.page.waitForFunction(() => (window as { __smoke?: unknown }).__smoke, null, { timeout: 60_000 });
+      const smoke = await w.page.evaluate(() => (window as { __smoke?: Record<string, unknown> }).__smoke!);
+      expect(smoke.error).toBeUndefined();
+      expect(smoke).toMatchObject({ ok: true, worker: { kind: 'solved' } });
+      expect(w.errors).toEqual([]);
+      await w.page.close();
+    } finally {
+      await server.close();
+    }
+  });
+});
