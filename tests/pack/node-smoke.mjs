@@ -1,6 +1,8 @@
-// Run with plain Node inside the temporary project: `node node-smoke.mjs POINTS [three]`.
-// Uses the installed package by its name, as a user would, and prints one JSON line.
+// Copied into the temporary project and run there with plain Node:
+// `node node-smoke.mjs POINTS [three]`. Uses the installed package by its name, as
+// a user would, and prints one JSON line.
 import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
 import { CancelledError, HodtError, InputError, loadHodt, OBJECTIVE_IDS } from 'hodt';
 import { setTriangles, terrainGeometry } from 'hodt/three'; // must not need three itself
 
@@ -34,6 +36,7 @@ if (mode === 'three') {
 }
 const out = {
   node: process.versions.node,
+  resolved: createRequire(import.meta.url).resolve('hodt'),
   points: terrain.numPoints,
   quads: terrain.numQuads,
   triangles: best.triangles.length / 3,

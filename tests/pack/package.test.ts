@@ -34,6 +34,8 @@ afterAll(async () => {
 
 const inProject = (cmd: string, args: string[]) =>
   spawnSync(cmd, args, { cwd: project.dir, encoding: 'utf8', env: { ...process.env, NODE_OPTIONS: '' } });
+// More Node binaries to run the Node check with, e.g. HODT_NODES=/opt/node18/bin/node.
+const extraNodes = (process.env.HODT_NODES ?? '').split(':').filter(Boolean);
 
 describe('the tarball', () => {
   it('holds the JS, the types, the wasm and the CLI, and nothing else', () => {
@@ -78,11 +80,13 @@ describe('the tarball', () => {
 });
 
 describe('Node', () => {
-  it('imports the package by name and solves a terrain (without three installed)', () => {
-    const r = inProject('node', [join(here, 'node-smoke.mjs'), fixture]);
+  beforeAll(() => cpSync(join(here, 'node-smoke.mjs'), join(project.dir, 'node-smoke.mjs')));
+  it.each(['node', ...extraNodes])('%s imports the package by name and solves a terrain (without three installed)', (node) => {
+    const r = inProject(node, ['node-smoke.mjs', fixture]);
     expect(r.stderr).toBe('');
     expect(r.status).toBe(0);
     const out = JSON.parse(r.stdout);
+    expect(out.resolved).toBe(join(project.dir, 'node_modules/hodt/dist/index.js'));
     expect(out).toMatchObject({ points: 50, isUint32: true, optimal: true, three: null });
     expect(out.triangles).toBeGreaterThan(50);
     expect(out.value).toBeLessThanOrEqual(out.delaunayValue);
@@ -94,7 +98,7 @@ describe('Node', () => {
 
   it('hodt/three builds a geometry with the project\'s three', () => {
     linkFromRepo(project.dir, ['three']);
-    const r = inProject('node', [join(here, 'node-smoke.mjs'), fixture, 'three']);
+    const r = inProject('node', ['node-smoke.mjs', fixture, 'three']);
     expect(r.status, r.stderr).toBe(0);
     const out = JSON.parse(r.stdout);
     expect(out.three).toEqual({ isBufferGeometry: true, index: out.triangles * 3, position: 50 });

@@ -1,0 +1,59 @@
+// What hodt costs a page: `node tests/pack/sizes.mjs` after `npm run build`.
+// Raw, gzip (zlib level 9) and brotli sizes of the wasm, the Emscripten glue, the
+// library JS as shipped, and of what a Vite production build of
+// `import { loadHodt } from 'hodt'` emits (minified). Prints a Markdown table.
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { brotliCompressSync, constants, gzipSync } from 'node:zlib';
+
+const repo = fileURLToPath(new URL('../../', import.meta.url));
+const dist = join(repo, 'dist');
+
+const gzip = (b) => gzipSync(b, { level: 9 }).length;
+const brotli = (b) => brotliCompressSync(b, { params: { [constants.BROTLI_PARAM_QUALITY]: 11 } }).length;
+const kB = (n) => `${(n / 1024).toFixed(1)} kB`;
+const rows = [];
+const row = (what, buffers) => {
+  const all = Buffer.concat(buffers);
+  // Files are compressed one by one, as a server sends them.
+  const sum = (f) => buffers.reduce((s, b) => s + f(b), 0);
+  rows.push([what, kB(all.length), kB(sum(gzip)), kB(sum(brotli))]);
+};
+const read = (f) => readFileSync(join(dist, f));
+
+const library = readdirSync(dist).filter((f) => f.endsWith('.js') && !['cli.js', 'three.js'].includes(f));
+row('`dist/wasm/hodt.wasm`', [read('wasm/hodt.wasm')]);
+row('`dist/wasm/hodt.mjs` (Emscripten glue)', [read('wasm/hodt.mjs')]);
+row(`library JS as shipped (${library.length} files, unminified)`, library.map(read));
+row('`hodt/three` as shipped', [read('three.js')]);
+
+// A user's production bundle: Vite (Rolldown, minified) of one import.
+const { build } = await import(join(repo, 'node_modules/vite/dist/node/index.js'));
+const tmp = mkdtempSync(join(tmpdir(), 'hodt-sizes-'));
+try {
+  const entry = join(tmp, 'entry.js');
+  writeFileSync(entry, `import { loadHodt } from ${JSON.stringify(join(dist, 'index.js'))};\nglobalThis.hodt = await loadHodt();\n`);
+  const out = await build({
+    root: tmp,
+    configFile: false,
+    logLevel: 'silent',
+    build: { write: false, target: 'es2022', rollupOptions: { input: entry } },
+  });
+  const output = (Array.isArray(out) ? out[0] : out).output;
+  const js = output.filter((o) => o.type === 'chunk').map((o) => Buffer.from(o.code));
+  const wasm = output.filter((o) => o.fileName.endsWith('.wasm')).map((o) => Buffer.from(o.source));
+  row('Vite build of `import { loadHodt } from "hodt"`: JS (minified)', js);
+  row('same build: wasm', wasm);
+  row('**total a page downloads**', [...js, ...wasm]);
+} finally {
+  rmSync(tmp, { recursive: true, force: true });
+}
+
+const [pack] = JSON.parse(execFileSync('npm', ['pack', '--dry-run', '--json'], { cwd: repo, encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] }));
+
+console.log('| what | raw | gzip -9 | brotli |\n|---|---:|---:|---:|');
+for (const r of rows) console.log(`| ${r.join(' | ')} |`);
+console.log(`\nnpm tarball: ${kB(pack.size)} (${pack.entryCount} files, ${kB(pack.unpackedSize)} unpacked)`);
