@@ -2,7 +2,7 @@
 // project (no network), then Node, the CLI, TypeScript and a bundled page in
 // Chromium under a Content-Security-Policy without 'unsafe-eval'.
 import { execFileSync, spawnSync } from 'node:child_process';
-import { cpSync, readFileSync } from 'node:fs';
+import { cpSync, readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Browser } from 'playwright-core';
 import { build, createServer } from 'vite';
@@ -137,6 +137,18 @@ describe('TypeScript', () => {
     expect(r.stdout + r.stderr).toBe('');
     expect(r.status).toBe(0);
   };
+  it('every TypeScript example in docs/api.md is one of those files', () => {
+    const examples = readdirSync(join(here, 'examples'))
+      .filter((f) => f.endsWith('.ts'))
+      .map((f) => readFileSync(join(here, 'examples', f), 'utf8'));
+    const docs = readFileSync(join(repo, 'docs/api.md'), 'utf8');
+    const blocks = [...docs.matchAll(/```ts\n([\s\S]*?)```/g)].map((m) => m[1]!).filter((b) => /^import /m.test(b));
+    expect(blocks.length).toBeGreaterThanOrEqual(5);
+    for (const block of blocks) {
+      const code = block.replace(/\n\/\/ \.\.\..*\n$/, '\n'); // a trailing "// ..." marks a shortened example
+      expect(examples.some((e) => e.includes(code)), code).toBe(true);
+    }
+  });
   it('the documentation examples compile in strict mode (NodeNext resolution)', () => check('tsconfig.json'));
   it('the documentation examples compile in strict mode (Bundler resolution)', () => check('tsconfig.bundler.json'));
   it('a strict project without @types/node, esnext lib or skipLibCheck compiles', () => check('tsconfig.minimal.json'));

@@ -1,24 +1,16 @@
-// docs/api.md: loading options, solve options, cancellation, errors, ownership.
+// docs/api.md "Solving": options, cancellation, errors, ownership.
 import { CancelledError, HodtError, InputError, LimitError, loadHodt, type Solution } from 'hodt';
 
-// Where the wasm comes from: default next to the JS; or a URL, or the bytes.
-const hodt = await loadHodt({ wasmUrl: new URL('/assets/hodt.wasm', 'https://example.com') });
-
-const points = [
-  { x: 0, y: 0, z: 1 },
-  { x: 1, y: 0, z: 2 },
-  { x: 0, y: 1, z: 0 },
-  { x: 1, y: 1, z: 3 },
-  { x: 0.4, y: 0.6, z: 5 },
-];
+const hodt = await loadHodt();
+const points = [{ x: 0, y: 0, z: 1 }, { x: 1, y: 0, z: 2 }, { x: 0, y: 1, z: 0 }, { x: 1, y: 1, z: 3 }, { x: 0.4, y: 0.6, z: 5 }];
 const terrain = hodt.terrain(points, { dedupe: 'first' });
 try {
   const controller = new AbortController();
   const deadline = performance.now() + 2000;
   const best: Solution = terrain.solve('max-convex-edges', {
-    method: 'auto', // 'exact' | 'approx' | 'brute-force' | 'auto'
-    epsilon: 0.1, // approximations: within (1 - epsilon) of the optimum
-    order: 1, // first order Delaunay triangulations (the only order supported)
+    method: 'auto',
+    epsilon: 0.1,
+    order: 1,
     signal: controller.signal,
     progress: (done, total) => {
       console.log(`${done} / ${total}`);
@@ -26,8 +18,8 @@ try {
     },
   });
   console.log(best.value, best.delaunayValue, best.optimal, best.bound, best.triangles.length / 3);
-  const { edgeShape, vertexClass, degree } = terrain.measures(best.choice);
-  console.log(edgeShape.length, vertexClass[4], degree[4], terrain.evaluate(best.choice)['max-convex-edges']);
+  const { vertexClass, degree } = terrain.measures(best.choice); // per point, like the triangles
+  console.log(vertexClass[4], degree[4], terrain.evaluate(best.choice)['max-convex-edges']);
 } catch (e) {
   if (e instanceof CancelledError) console.log('stopped', e.cause);
   else if (e instanceof LimitError) console.log('refused:', e.message);
