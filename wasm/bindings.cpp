@@ -8,6 +8,7 @@
 #include "hodt/cli.hpp"
 #include "hodt/error.hpp"
 #include "hodt/higher_order.hpp"
+#include "hodt/k_order.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/read_points.hpp"
 #include "hodt/report.hpp"
@@ -117,6 +118,45 @@ class TerrainHandle {
     const auto& v = t_.delaunay_values();
     return copy_out("Float64Array", std::vector<double>(v.begin(), v.end()));
   }
+  // The JS object of a solution (all arrays copied out of the heap).
+  val solution_value(const Solution& s) const {
+    const Objective o = s.objective;
+    val out = val::object();
+    out.set("objective", std::string(info(o).id));
+    out.set("sense", std::string(info(o).sense == Sense::Min ? "min" : "max"));
+    out.set("method", s.method);
+    out.set("value", s.value);
+    out.set("delaunayValue", s.delaunay_value);
+    out.set("optimal", s.optimal);
+    out.set("bound", s.bound ? val(*s.bound) : val::null());
+    out.set("flipped", s.mesh ? s.non_delaunay_edges : count_flipped(s.choice));
+    out.set("timeMs", s.time_ms);
+    out.set("choice", copy_out("Uint8Array", s.choice));
+    out.set("localSearchImproved", s.local_search_improved);
+    out.set("details", s.details);
+    if (s.critical) {
+      val c = val::object();
+      c.set("first", copy_out("Uint32Array", t_.to_input(std::vector<uint32_t>(s.critical->first.begin(), s.critical->first.end()))));
+      c.set("second", copy_out("Uint32Array", t_.to_input(std::vector<uint32_t>(s.critical->second.begin(), s.critical->second.end()))));
+      c.set("value", s.critical->value);
+      out.set("critical", c);
+    } else {
+      out.set("critical", val::null());
+    }
+    val steps = val::array();
+    for (const ThresholdStep& t : s.trace) {
+      val step = val::object();
+      step.set("threshold", t.threshold);
+      step.set("satisfiable", t.satisfiable);
+      step.set("clauses", t.clauses);
+      step.set("forced", t.forced);
+      step.set("immediateNo", t.immediate_no);
+      steps.call<void>("push", step);
+    }
+    out.set("trace", steps);
+    return out;
+  }
+
   // progress: undefined, or a JS function (done, total) returning false to cancel.
   val solve(const std::string& objective, const std::string& method, double epsilon, bool trace, val progress) const {
     return guarded([&] {
@@ -134,40 +174,7 @@ class TerrainHandle {
       const Objective o = objective_of(objective);
       Solution s = hodt::solve(t_.structure(), o, options);
       s.delaunay_value = t_.delaunay_values()[static_cast<size_t>(o)];
-      val out = val::object();
-      out.set("objective", std::string(info(o).id));
-      out.set("sense", std::string(info(o).sense == Sense::Min ? "min" : "max"));
-      out.set("method", s.method);
-      out.set("value", s.value);
-      out.set("delaunayValue", s.delaunay_value);
-      out.set("optimal", s.optimal);
-      out.set("bound", s.bound ? val(*s.bound) : val::null());
-      out.set("flipped", count_flipped(s.choice));
-      out.set("timeMs", s.time_ms);
-      out.set("choice", copy_out("Uint8Array", s.choice));
-      out.set("localSearchImproved", s.local_search_improved);
-      out.set("details", s.details);
-      if (s.critical) {
-        val c = val::object();
-        c.set("first", copy_out("Uint32Array", t_.to_input(std::vector<uint32_t>(s.critical->first.begin(), s.critical->first.end()))));
-        c.set("second", copy_out("Uint32Array", t_.to_input(std::vector<uint32_t>(s.critical->second.begin(), s.critical->second.end()))));
-        c.set("value", s.critical->value);
-        out.set("critical", c);
-      } else {
-        out.set("critical", val::null());
-      }
-      val steps = val::array();
-      for (const ThresholdStep& t : s.trace) {
-        val step = val::object();
-        step.set("threshold", t.threshold);
-        step.set("satisfiable", t.satisfiable);
-        step.set("clauses", t.clauses);
-        step.set("forced", t.forced);
-        step.set("immediateNo", t.immediate_no);
-        steps.call<void>("push", step);
-      }
-      out.set("trace", steps);
-      return out;
+      return solution_value(s);
     });
   }
   // Values of all objectives for all 2^m choices, row-major (choice index, objective).
@@ -178,6 +185,22 @@ class TerrainHandle {
       flat.reserve(rows.size() * kNumObjectives);
       for (const auto& r : rows) flat.insert(flat.end(), r.begin(), r.end());
       return copy_out("Float64Array", flat);
+    });
+  }
+  // Optimises over k-th order Delaunay triangulations (k >= 2); the result also
+  // carries the triangles (input indices), since it is not a choice of diagonals.
+  val solveHigherOrder(const std::string& objective, uint32_t order, val progress) const {
+    return guarded([&] {
+      check_order(order);
+      SolveOptions options;
+      if (progress.typeOf().as<std::string>() == "function")
+        options.progress = [progress](double done, double total) { return !progress(done, total).isFalse(); };
+      const Objective o = objective_of(objective);
+      Solution s = k_order_solution(t_.structure(), o, order, options);
+      val out = solution_value(s);
+      out.set("order", order);
+      out.set("triangles", copy_out("Uint32Array", t_.to_input(s.mesh->triangles)));
+      return out;
     });
   }
   std::string statsJson(uint32_t order) const { return stats_json(t_, order); }
@@ -289,6 +312,7 @@ EMSCRIPTEN_BINDINGS(hodt) {
       .function("enumerateAll", &TerrainHandle::enumerateAll)
       .function("statsJson", &TerrainHandle::statsJson)
       .function("usefulEdges", &TerrainHandle::usefulEdges)
+      .function("solveHigherOrder", &TerrainHandle::solveHigherOrder)
       .function("usefulTriangles", &TerrainHandle::usefulTriangles);
   emscripten::function("fromPoints", &fromPoints, emscripten::allow_raw_pointers());
   emscripten::function("fromTriangulation", &fromTriangulation, emscripten::allow_raw_pointers());

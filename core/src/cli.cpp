@@ -3,6 +3,7 @@
 #include <cstdlib>
 
 #include "hodt/error.hpp"
+#include "hodt/k_order.hpp"
 #include "hodt/read_points.hpp"
 #include "hodt/report.hpp"
 #include "hodt/solve.hpp"
@@ -77,8 +78,6 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
       else throw Usage("unexpected argument '" + a + "'");
     }
     if (!have_file) throw Usage(command + ": missing FILE (hodt --help)");
-    if (command == "solve" && order > 1)
-      throw LimitError("solve --order " + std::to_string(order) + " is not supported yet: solvers optimise over first order triangulations");
     std::optional<Objective> objective;
     if (command == "solve") {
       if (objective_id.empty()) throw Usage("solve needs --objective ID; valid objectives: " + objective_ids());
@@ -101,7 +100,8 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
     if (command == "stats") {
       r.out = stats_json(terrain, static_cast<uint32_t>(order)) + "\n";
     } else {
-      Solution s = solve(terrain.structure(), *objective, options);
+      Solution s = order > 1 ? k_order_solution(terrain.structure(), *objective, static_cast<uint32_t>(order), options)
+                             : solve(terrain.structure(), *objective, options);
       s.delaunay_value = terrain.delaunay_values()[static_cast<size_t>(*objective)];
       r.out = solution_json(terrain, s, triangles, options.trace) + "\n";
     }

@@ -49,12 +49,13 @@ uint32_t helped(const FirstOrder& fo, const std::vector<int8_t>& kind, uint32_t 
 }  // namespace
 
 Choice fewest_local_minima(const FirstOrder& fo) {
-  const Mesh& m = fo.base;
+  // Only the diagonal through a lowest vertex can help; take the flipped one only
+  // when it helps some potential minimum (fewer flips, the same value).
+  const std::vector<int8_t> kind = potential_extrema(fo);
   Choice c(fo.num_quads(), 0);
   for (uint32_t q = 0; q < fo.num_quads(); ++q) {
-    const Quad& k = fo.quads[q];
-    // The diagonal through a lowest vertex (Delaunay's if both are).
-    c[q] = std::min(z(m, k.c), z(m, k.d)) < std::min(z(m, k.a), z(m, k.b));
+    uint32_t h[2];
+    c[q] = helped(fo, kind, q, true, h, true) > 0 && helped(fo, kind, q, false, h, true) == 0;
   }
   return c;
 }

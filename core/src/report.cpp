@@ -52,8 +52,9 @@ std::string solution_json(const Terrain& t, const Solution& r, bool with_triangl
                   ", \"delaunayValue\": " + format_number(r.delaunay_value) +
                   ", \"optimal\": " + (r.optimal ? "true" : "false") +
                   ", \"bound\": " + (r.bound ? format_number(*r.bound) : "null") +
-                  ", \"flipped\": " + std::to_string(count_flipped(r.choice)) +
+                  ", \"flipped\": " + std::to_string(r.mesh ? r.non_delaunay_edges : count_flipped(r.choice)) +
                   ", \"timeMs\": " + format_number(r.time_ms);
+  if (r.order > 1) s += ", \"order\": " + std::to_string(r.order);
   if (r.method == "approx") s += std::string(", \"localSearchImproved\": ") + (r.local_search_improved ? "true" : "false");
   if (!r.details.empty()) s += ", \"details\": \"" + json_escape(r.details) + "\"";
   if (r.critical)
@@ -68,7 +69,7 @@ std::string solution_json(const Terrain& t, const Solution& r, bool with_triangl
     s += "]";
   }
   if (with_triangles) {
-    const std::vector<uint32_t> tris = t.to_input(triangulate(t.structure(), r.choice).triangles);
+    const std::vector<uint32_t> tris = t.to_input(r.mesh ? r.mesh->triangles : triangulate(t.structure(), r.choice).triangles);
     s += ", \"triangles\": [";
     for (size_t k = 0; k < tris.size(); k += 3)
       s += (k ? ", [" : "[") + std::to_string(tris[k]) + ", " + std::to_string(tris[k + 1]) + ", " +

@@ -169,3 +169,24 @@ describe('higher order: hodt stats --order K', () => {
     expect(r.err).toMatch(/--order expects an integer from 1 to 64/);
   });
 });
+
+describe('higher order: hodt solve --order K', () => {
+  it('exact by enumeration on small inputs, k-OD and no worse than first order', () => {
+    let previous = Infinity;
+    for (const k of [1, 2, 3]) {
+      const args = ['solve', fixture('uniform-12.csv'), '--objective', 'min-local-minima', '--order', String(k), '--triangles'];
+      const j = JSON.parse(hodt(args).out);
+      expect(j.optimal).toBe(true);
+      expect(j.value).toBeLessThanOrEqual(previous);
+      previous = j.value;
+      expect(withoutTime(hodt(args).out)).toEqual(withoutTime(native(args).out));
+    }
+  });
+  it('a heuristic with a bound on larger inputs', () => {
+    const j = JSON.parse(hodt(['solve', fixture('dem-hills-400.txt'), '--objective', 'min-local-minima', '--order', '4']).out);
+    expect(j.method).toBe('heuristic');
+    expect(j.order).toBe(4);
+    expect(j.bound).toBeLessThanOrEqual(j.value);
+    expect(j.value).toBeLessThanOrEqual(j.delaunayValue);
+  });
+});

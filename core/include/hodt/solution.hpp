@@ -29,6 +29,11 @@ struct Solution {
   std::string details;                   // what ran, in a few words (for reports)
   std::optional<CriticalPair> critical;  // min-max pair objectives
   std::vector<ThresholdStep> trace;      // bottleneck search, when asked for
+  // Higher order (k > 1): the triangulation itself (not a choice of diagonals), and
+  // the number of its edges that are not Delaunay edges.
+  uint32_t order = 1;
+  std::optional<Mesh> mesh;
+  uint32_t non_delaunay_edges = 0;
 };
 
 }  // namespace hodt

@@ -51,6 +51,11 @@ export interface RawTerrain {
   enumerateAll(): Float64Array;
   statsJson(order: number): string;
   usefulEdges(order: number): Uint32Array;
+  solveHigherOrder(
+    objective: string,
+    order: number,
+    progress: ((done: number, total: number) => boolean | void) | undefined,
+  ): RawSolution & { order: number; triangles: Uint32Array };
   usefulTriangles(order: number): Uint32Array;
   delete(): void;
   isDeleted(): boolean;
