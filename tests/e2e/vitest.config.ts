@@ -1,5 +1,5 @@
-// Optional config for the browser tests: `npx vitest run --config tests/e2e/vitest.config.ts`.
-// demo.test.ts sets its own timeouts, so `npx vitest run tests/e2e` works without it.
+// The browser tests: `npx vitest run --config tests/e2e/vitest.config.ts`.
+// One file at a time: each starts its own Vite server and Chromium.
 import { defineConfig } from 'vitest/config';
 
 export default defineConfig({

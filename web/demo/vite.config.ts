@@ -23,9 +23,11 @@ export default defineConfig({
   // Pre-bundle up front so the first visit never triggers a reload.
   optimizeDeps: {
     entries: ['index.html'],
-    include: ['three', 'three/examples/jsm/controls/OrbitControls.js', 'three/examples/jsm/lines/LineSegments2.js',
+    include: ['three', 'fflate', 'three/examples/jsm/controls/OrbitControls.js', 'three/examples/jsm/lines/LineSegments2.js',
       'three/examples/jsm/lines/LineSegmentsGeometry.js', 'three/examples/jsm/lines/LineMaterial.js'],
   },
+  // The solver runs in a module worker (src/solver/worker.ts).
+  worker: { format: 'es' },
   build: {
     target: 'es2022',
     outDir: here('../../build/demo'),

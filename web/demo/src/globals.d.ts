@@ -1,8 +1,35 @@
 export {};
 
+/** Test hooks the page publishes on window.__hodt (read by tests/e2e). */
+export interface HodtTestHooks {
+  /** True once the first terrain is drawn. */
+  ready: boolean;
+  points: number;
+  triangles: number;
+  quads: number;
+  flipped: number;
+  /** A solve is running in the worker. */
+  solving: boolean;
+  /** Number of solves finished (solved, failed or cancelled) so far. */
+  solves: number;
+  objective: string;
+  method: string;
+  /** The last solution in the CLI's JSON format (parsed), or null. */
+  solution: Record<string, unknown> | null;
+  /** The shown choice, one '0'/'1' per quad. */
+  choice: string;
+  selected: number | null;
+  /** The message on screen, if any. */
+  notice: string | null;
+  pointsCsv(): string;
+  /** Page (client) coordinates of a data point in the plan view. */
+  planToClient(x: number, y: number): { x: number; y: number };
+  point(i: number): { x: number; y: number; z: number };
+  link(): string | null;
+}
+
 declare global {
   interface Window {
-    /** Set once the first frame is drawn; read by tests/e2e. */
-    __hodt?: { ready: boolean; points: number; quads: number; triangles: number };
+    __hodt?: HodtTestHooks;
   }
 }

@@ -10,8 +10,8 @@ export function toBase64Url(bytes: Uint8Array): string {
 
 /** Throws on characters outside the base64url alphabet. */
 export function fromBase64Url(text: string): Uint8Array {
-  if (!/^[A-Za-z0-9_-]*$/.test(text)) throw new Error('the link contains characters that are not base64url');
-  if (text.length % 4 === 1) throw new Error('the link data has an impossible length (was it cut off?)');
+  if (!/^[A-Za-z0-9_-]*$/.test(text)) throw new Error('it contains characters that are not base64url (was it changed?)');
+  if (text.length % 4 === 1) throw new Error('its data has an impossible length (was it cut off?)');
   const padded = text.replace(/-/g, '+').replace(/_/g, '/') + '='.repeat((4 - (text.length % 4)) % 4);
   const binary = atob(padded);
   const out = new Uint8Array(binary.length);

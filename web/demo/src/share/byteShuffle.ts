@@ -1,25 +1,28 @@
 /**
- * Byte shuffling of doubles, lossless: byte k of every value is stored together,
- * so the similar sign/exponent bytes of nearby coordinates form long runs that
- * deflate compresses well (the trick of Blosc and HDF5's shuffle filter).
+ * Lossless byte shuffling of doubles: byte k of every value is stored together,
+ * so the similar sign and exponent bytes of nearby coordinates form long runs that
+ * deflate compresses well (the trick of Blosc and HDF5's shuffle filter). Values
+ * are written little-endian whatever the machine.
  */
 export function shuffleDoubles(values: Float64Array): Uint8Array {
-  const bytes = new Uint8Array(values.buffer, values.byteOffset, values.byteLength);
   const n = values.length;
+  const le = new DataView(new ArrayBuffer(8));
   const out = new Uint8Array(8 * n);
   for (let i = 0; i < n; i++) {
-    for (let b = 0; b < 8; b++) out[b * n + i] = bytes[8 * i + b]!;
+    le.setFloat64(0, values[i]!, true);
+    for (let b = 0; b < 8; b++) out[b * n + i] = le.getUint8(b);
   }
   return out;
 }
 
 export function unshuffleDoubles(shuffled: Uint8Array): Float64Array {
-  if (shuffled.length % 8 !== 0) throw new Error('point data is not a whole number of doubles');
+  if (shuffled.length % 8 !== 0) throw new Error('the point data is not a whole number of doubles');
   const n = shuffled.length / 8;
+  const le = new DataView(new ArrayBuffer(8));
   const values = new Float64Array(n);
-  const bytes = new Uint8Array(values.buffer);
   for (let i = 0; i < n; i++) {
-    for (let b = 0; b < 8; b++) bytes[8 * i + b] = shuffled[b * n + i]!;
+    for (let b = 0; b < 8; b++) le.setUint8(b, shuffled[b * n + i]!);
+    values[i] = le.getFloat64(0, true);
   }
   return values;
 }

@@ -1,14 +1,15 @@
 import { Color } from 'three';
 
-/** Hypsometric tints, low to high: lowland greens, ochre slopes, brown, pale summit. */
+/** Hypsometric tints, low to high, muted so that the coloured edges, vertices and
+ * quads drawn over them stand out: grey-green lowlands, pale sand, grey-brown
+ * slopes, a pale summit. */
 const STOPS: ReadonlyArray<readonly [number, string]> = [
-  [0.0, '#2f6b4f'],
-  [0.2, '#5c9a5a'],
-  [0.4, '#a7c27a'],
-  [0.58, '#e6d9a0'],
-  [0.75, '#c9a06b'],
-  [0.9, '#9c7050'],
-  [1.0, '#f1ece4'],
+  [0.0, '#5f7f70'],
+  [0.25, '#8fa88f'],
+  [0.5, '#c2c4a6'],
+  [0.7, '#d2c3a6'],
+  [0.87, '#ad9b8a'],
+  [1.0, '#efece6'],
 ];
 const COLORS = STOPS.map(([t, hex]) => [t, new Color(hex)] as const);
 

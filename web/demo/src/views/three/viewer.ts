@@ -22,7 +22,8 @@ export interface Viewer {
   readonly camera: PerspectiveCamera;
   readonly renderer: WebGLRenderer;
   readonly controls: OrbitControls;
-  /** Places the camera south-west of and above the points, all of them in view. */
+  /** Places the camera south-west of and above the points, all of them in view;
+   * done again on resize until the user moves the camera. */
   frame(points: readonly Vector3[]): void;
   /** Asks for a redraw on the next animation frame. */
   invalidate(): void;
@@ -30,17 +31,7 @@ export interface Viewer {
   render(): void;
 }
 
-export interface ViewerOptions {
-  /** Width in CSS pixels covered on the left (by a panel): the view centres on the rest. */
-  insetLeft?: () => number;
-}
-
-export function createViewer(container: HTMLElement, options: ViewerOptions = {}): Viewer {
-  const insetLeft = () => {
-    const w = container.clientWidth;
-    const inset = options.insetLeft?.() ?? 0;
-    return inset < w * 0.45 ? inset : 0; // narrow screens: the panel floats over the view
-  };
+export function createViewer(container: HTMLElement): Viewer {
   const renderer = new WebGLRenderer({ antialias: true, alpha: true });
   renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
   renderer.setClearColor(new Color(0x000000), 0); // the page's gradient shows through
@@ -78,34 +69,35 @@ export function createViewer(container: HTMLElement, options: ViewerOptions = {}
     renderer.render(scene, camera);
   };
   controls.addEventListener('change', invalidate);
+  controls.addEventListener('start', () => (framed = null));
 
   const project = () => {
     const w = container.clientWidth || 1;
     const h = container.clientHeight || 1;
     camera.aspect = w / h;
-    // Shift the image right so the orbit target sits in the middle of the free area.
-    camera.setViewOffset(w, h, -insetLeft() / 2, 0, w, h);
     camera.updateProjectionMatrix();
   };
+  let framed: readonly Vector3[] | null = null; // reframed on resize until the user orbits
   const resize = () => {
     renderer.setSize(container.clientWidth || 1, container.clientHeight || 1, false);
     project();
+    if (framed && container.clientWidth) frame(framed);
     invalidate();
   };
   new ResizeObserver(resize).observe(container);
   resize();
 
   renderer.setAnimationLoop(() => {
+    if (!container.clientWidth) return; // hidden (plan view only)
     controls.update();
     if (dirty) render();
   });
 
-  const frame = (points: readonly Vector3[]) => {
+  function frame(points: readonly Vector3[]): void {
+    framed = points;
     const sphere = new Box3().setFromPoints(points as Vector3[]).getBoundingSphere(new Sphere());
     const dir = new Vector3(-0.45, -1, 1.15).normalize();
-    // The free area in normalised device coordinates: x in [left, 1], y in [-1, 1].
-    const left = -1 + (2 * insetLeft()) / (container.clientWidth || 1);
-    const fill = 0.9; // fraction of the free area the points span
+    const fill = 0.88; // fraction of the view the points span
     const target = sphere.center.clone();
     let distance = sphere.radius * 3;
     const p = new Vector3();
@@ -126,19 +118,19 @@ export function createViewer(container: HTMLElement, options: ViewerOptions = {}
         y0 = Math.min(y0, p.y);
         y1 = Math.max(y1, p.y);
       }
-      // Pan so the points' screen box is centred in the free area, then zoom to fit.
+      // Pan so the points' screen box is centred, then zoom to fit.
       const halfH = distance * Math.tan((camera.fov * Math.PI) / 360);
       const halfW = halfH * camera.aspect;
       right.setFromMatrixColumn(camera.matrixWorld, 0);
       up.setFromMatrixColumn(camera.matrixWorld, 1);
-      target.addScaledVector(right, ((x0 + x1) / 2 - (left + 1) / 2) * halfW);
+      target.addScaledVector(right, ((x0 + x1) / 2) * halfW);
       target.addScaledVector(up, ((y0 + y1) / 2) * halfH);
-      distance *= Math.max((x1 - x0) / (1 - left), (y1 - y0) / 2) / fill;
+      distance *= Math.max((x1 - x0) / 2, (y1 - y0) / 2) / fill;
     }
     controls.target.copy(target);
     controls.update();
     invalidate();
-  };
+  }
 
   return {
     scene,

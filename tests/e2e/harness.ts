@@ -1,0 +1,117 @@
+/// <reference path="../../web/demo/src/globals.d.ts" />
+// Shared set-up of the browser tests: the demo served by Vite's dev server, and
+// Debian's Chromium driven by playwright-core (never a downloaded browser).
+import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
+import type { AddressInfo } from 'node:net';
+import { fileURLToPath } from 'node:url';
+import { chromium, type Browser, type BrowserContext, type Page } from 'playwright-core';
+import { createServer, type ViteDevServer } from 'vite';
+
+export const root = fileURLToPath(new URL('../../', import.meta.url));
+export const resultsDir = `${root}test-results`;
+
+export interface Demo {
+  url: string;
+  browser: Browser;
+  close(): Promise<void>;
+}
+
+export async function startDemo(): Promise<Demo> {
+  if (!existsSync(`${root}web/src/wasm/hodt.wasm`)) throw new Error('web/src/wasm/hodt.wasm is missing: run `npm run build`');
+  const server: ViteDevServer = await createServer({
+    configFile: `${root}web/demo/vite.config.ts`,
+    logLevel: 'warn',
+    clearScreen: false,
+    server: { host: '127.0.0.1', port: 0, strictPort: false, hmr: false },
+  });
+  await server.listen();
+  const { port } = server.httpServer!.address() as AddressInfo;
+  const browser = await chromium.launch({
+    executablePath: '/usr/bin/chromium',
+    args: [
+      '--headless',
+      '--no-sandbox',
+      '--disable-gpu',
+      '--disable-background-networking',
+      '--disable-component-update',
+      '--disable-sync',
+      '--no-first-run',
+      '--enable-unsafe-swiftshader', // software WebGL without a GPU
+    ],
+  });
+  return {
+    url: `http://127.0.0.1:${port}/`,
+    browser,
+    async close() {
+      await browser.close();
+      await server.close();
+    },
+  };
+}
+
+/** A page in a fresh context that records console errors and page errors. */
+export async function openPage(
+  demo: Demo,
+  path = '',
+  viewport = { width: 1440, height: 900 },
+): Promise<{ page: Page; context: BrowserContext; errors: string[] }> {
+  const context = await demo.browser.newContext({ viewport, acceptDownloads: true });
+  const page = await context.newPage();
+  const errors: string[] = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(m.text());
+  });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(demo.url + path);
+  await settled(page, 0);
+  return { page, context, errors };
+}
+
+/** Waits until the page is drawn, no solve runs, and at least `after` + 1 solves
+ * have finished. */
+export async function settled(page: Page, after: number): Promise<void> {
+  await page.waitForFunction(
+    (n) => window.__hodt?.ready === true && !window.__hodt.solving && window.__hodt.solves > n,
+    after,
+    { timeout: 60_000 },
+  );
+}
+
+export async function hooks(page: Page) {
+  return (await page.evaluate(() => {
+    const h = window.__hodt!;
+    return { ...h, pointsCsv: h.pointsCsv() };
+  })) as Omit<NonNullable<Window['__hodt']>, 'pointsCsv'> & { pointsCsv: string };
+}
+
+export async function screenshot(page: Page, name: string): Promise<Buffer> {
+  mkdirSync(resultsDir, { recursive: true });
+  const shot = await page.screenshot();
+  writeFileSync(`${resultsDir}/${name}`, shot);
+  return shot;
+}
+
+/** Client coordinates of a spot in the plan view at least `clear` pixels from
+ * every point and inside the hull (a grid search over the points' bounding box). */
+export async function emptySpot(page: Page, clear = 16): Promise<{ x: number; y: number; dataX: number; dataY: number }> {
+  return page.evaluate((clear) => {
+    const h = window.__hodt!;
+    const pts = Array.from({ length: h.points }, (_, i) => h.point(i));
+    const screen = pts.map((p) => h.planToClient(p.x, p.y));
+    const xs = pts.map((p) => p.x);
+    const ys = pts.map((p) => p.y);
+    const [x0, x1, y0, y1] = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
+    let best = { x: 0, y: 0, dataX: 0, dataY: 0, d: -1 };
+    for (let i = 2; i < 18; i++) {
+      for (let j = 2; j < 18; j++) {
+        const dataX = x0 + ((x1 - x0) * i) / 20;
+        const dataY = y0 + ((y1 - y0) * j) / 20;
+        const s = h.planToClient(dataX, dataY);
+        const d = Math.min(...screen.map((p) => Math.hypot(p.x - s.x, p.y - s.y)));
+        if (d > best.d) best = { ...s, dataX, dataY, d };
+      }
+    }
+    if (best.d < clear) throw new Error(`no spot ${clear}px clear of every point`);
+    return best;
+  }, clear);
+}

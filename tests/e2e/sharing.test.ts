@@ -1,0 +1,68 @@
+// Sharing: the link holds the exact points and settings; opening it elsewhere
+// gives the identical triangulation and solution. Bad links show a message.
+import { afterAll, beforeAll, describe, expect, test } from 'vitest';
+import { emptySpot, hooks, openPage, screenshot, settled, startDemo, type Demo } from './harness.ts';
+
+let demo: Demo;
+beforeAll(async () => {
+  demo = await startDemo();
+});
+afterAll(async () => {
+  await demo?.close();
+});
+
+describe('sharing', () => {
+  test('a copied link opened in a fresh page gives the identical solution', async () => {
+    const { page, context, errors } = await openPage(demo);
+    let h = await hooks(page);
+    // Make the state unique: another terrain, an edit, another objective and view.
+    await page.selectOption('#terrain-kind', 'fractal');
+    await settled(page, h.solves);
+    h = await hooks(page);
+    const spot = await emptySpot(page);
+    await page.mouse.click(spot.x, spot.y);
+    await settled(page, h.solves);
+    h = await hooks(page);
+    await page.selectOption('#objective', 'minmax-edge-area-ratio');
+    await settled(page, h.solves);
+    await page.click('.segmented button[data-view="plan"]');
+    await page.click('#copy-link');
+    const link = await page.locator('#link').inputValue();
+    expect(link).toMatch(/#v1=[A-Za-z0-9_-]+$/);
+    const original = await hooks(page);
+
+    const other = await openPage(demo, link.slice(link.indexOf('#')));
+    const copy = await hooks(other.page);
+    expect(copy.pointsCsv).toBe(original.pointsCsv);
+    expect(copy.objective).toBe('minmax-edge-area-ratio');
+    expect(copy.choice).toBe(original.choice);
+    expect(copy.triangles).toBe(original.triangles);
+    expect({ ...copy.solution, timeMs: 0 }).toEqual({ ...original.solution, timeMs: 0 });
+    expect(await other.page.locator('.stage').getAttribute('data-view')).toBe('plan');
+    expect(await other.page.locator('#terrain-kind').inputValue()).toBe('custom');
+    await screenshot(other.page, 'demo-link.png');
+    expect(errors).toEqual([]);
+    expect(other.errors).toEqual([]);
+    await other.context.close();
+    await context.close();
+  });
+
+  test('corrupt, foreign and oversized links show a message and the default terrain', async () => {
+    for (const [hash, message] of [
+      ['#v1=AAAA-not-deflate', /damaged/],
+      ['#v1=abc$', /base64url/],
+      ['#v9=AAAA', /format v9/],
+      ['#hello', /no state/],
+      [`#v1=${'A'.repeat(2_000_100)}`, /too long/],
+    ] as const) {
+      const { page, context, errors } = await openPage(demo, hash);
+      const h = await hooks(page);
+      expect(h.notice, hash.slice(0, 20)).toMatch(message);
+      expect(h.points).toBeGreaterThan(100);
+      expect(await page.locator('#notice').isVisible()).toBe(true);
+      if (hash === '#v1=AAAA-not-deflate') await screenshot(page, 'demo-bad-link.png');
+      expect(errors).toEqual([]);
+      await context.close();
+    }
+  });
+});

@@ -1,0 +1,79 @@
+import type { Choice, ObjectiveValues, Terrain } from 'hodt';
+
+/** Everything the views draw for one triangulation; every index is a point
+ * index (the points as given to hodt.terrain). */
+export interface Analysis {
+  /** x, y, z per input point. */
+  points: Float64Array;
+  /** Input indices, three per triangle. */
+  triangles: Uint32Array;
+  halfedges: Int32Array;
+  hull: Uint32Array;
+  /** Per halfedge: 0 convex, 1 reflex, 2 flat, 3 hull. */
+  edgeShape: Uint8Array;
+  /** Per input point: 0 convex, 1 concave, 2 flat, 3 mixed, 4 boundary. */
+  vertexClass: Uint8Array;
+  /** Per input point: 0 none, 1 local minimum, 2 local maximum. */
+  extremum: Uint8Array;
+  degree: Uint32Array;
+  /** a, b (Delaunay diagonal), c, d per flippable quad, input indices. */
+  quads: Uint32Array;
+  quadOfTriangle: Int32Array;
+  choice: Choice;
+  /** Triangles (input indices) of the pair attaining a min-max value, if any. */
+  critical: { first: Uint32Array; second: Uint32Array } | null;
+  /** All 13 objective values of this triangulation and of Delaunay; null in a
+   * live preview (dragging), where only the picture is updated. */
+  values: ObjectiveValues | null;
+  delaunayValues: ObjectiveValues | null;
+}
+
+/** The structure of a terrain that does not depend on the choice. */
+export interface Structure {
+  quads: Uint32Array;
+  quadOfTriangle: Int32Array;
+  delaunayValues: ObjectiveValues | null;
+}
+
+/** Without values (a live preview while dragging), delaunayValues is null. */
+export function readStructure(terrain: Terrain, withValues = true): Structure {
+  return {
+    quads: terrain.quads,
+    quadOfTriangle: terrain.quadOfTriangle,
+    delaunayValues: withValues ? terrain.delaunayValues() : null,
+  };
+}
+
+export function analyse(
+  terrain: Terrain,
+  structure: Structure,
+  points: Float64Array,
+  choice: Choice,
+  critical: Analysis['critical'] = null,
+): Analysis {
+  const t = terrain.triangulation(choice);
+  const m = terrain.measures(choice);
+  return {
+    points,
+    triangles: t.triangles,
+    halfedges: t.halfedges,
+    hull: t.hull,
+    edgeShape: m.edgeShape,
+    vertexClass: m.vertexClass,
+    extremum: m.extremum,
+    degree: m.degree,
+    quads: structure.quads,
+    quadOfTriangle: structure.quadOfTriangle,
+    choice,
+    critical,
+    values: structure.delaunayValues ? terrain.evaluate(choice) : null,
+    delaunayValues: structure.delaunayValues,
+  };
+}
+
+/** Count of quads whose diagonal is not the Delaunay one. */
+export function countFlipped(choice: Choice): number {
+  let k = 0;
+  for (const c of choice) k += c ? 1 : 0;
+  return k;
+}

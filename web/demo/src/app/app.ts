@@ -1,0 +1,425 @@
+import { InputError, type Hodt, type ObjectiveInfo, type Solution } from 'hodt';
+import { Vector2 } from 'three';
+import { downloadText } from '../io/download.ts';
+import { triangulationToObj, triangulationToPly } from '../io/meshFormats.ts';
+import { pointsToCsv } from '../io/pointsCsv.ts';
+import { readTextFile } from '../io/readTextFile.ts';
+import { solutionToJson } from '../io/solutionJson.ts';
+import { decodeState, LinkError, MAX_POINTS, type SharedState } from '../share/urlState.ts';
+import { createSolverClient } from '../solver/solverClient.ts';
+import { TERRAINS } from '../terrains/catalog.ts';
+import { byId } from '../ui/dom.ts';
+import { attachDropZone } from '../ui/dropZone.ts';
+import { renderLegend } from '../ui/legend.ts';
+import { renderMeasures } from '../ui/measuresTable.ts';
+import { createNotice } from '../ui/notice.ts';
+import { createObjectivePanel, type SolveSettings } from '../ui/objectivePanel.ts';
+import { createResultCard } from '../ui/resultCard.ts';
+import { createSelectionPanel } from '../ui/selectionPanel.ts';
+import { createTerrainPanel, type ExportFormat, type TerrainSource } from '../ui/terrainPanel.ts';
+import { createToolbar } from '../ui/toolbar.ts';
+import { createPlanView } from '../views/plan/planView.ts';
+import { createTerrainScene } from '../views/three/terrainScene.ts';
+import { createViewer } from '../views/three/viewer.ts';
+import { analyse, countFlipped, type Analysis } from './analysis.ts';
+import { dropDuplicateXY } from './dedupe.ts';
+import { heightAt } from './heightAt.ts';
+import { createHistory } from './history.ts';
+import { bindKeys } from './keyboard.ts';
+import { addPoint, movePoint, pointAt, removePoint } from './pointEdits.ts';
+import type { ViewMode } from './settings.ts';
+import { buildTerrain, type Built } from './terrainBuild.ts';
+import { publishHooks } from './testHooks.ts';
+import { createUrlSync } from './urlSync.ts';
+
+type Ready = Extract<Built, { ok: true }>;
+
+export const DEFAULT_SOURCE: TerrainSource = { kind: 'volcano', count: 200, seed: 7 };
+const DEFAULT_SETTINGS: SolveSettings = { objective: 'min-local-minima', method: 'auto', epsilon: 0.25 };
+/** How long an edit waits for its solution before drawing Delaunay meanwhile. */
+const SOLUTION_GRACE_MS = 150;
+
+/** The page: state (points, settings, view, selection), its history, the
+ * solver worker, and every view and panel, kept in step. */
+export function startApp(hodt: Hodt): void {
+  const notice = createNotice();
+  const objectives = hodt.objectives;
+  const info = (id: string): ObjectiveInfo => objectives.find((o) => o.id === id)!;
+  const objectivePanel = createObjectivePanel(objectives);
+  const result = createResultCard();
+  const terrainPanel = createTerrainPanel();
+  const selectionPanel = createSelectionPanel();
+  const toolbar = createToolbar();
+  renderLegend();
+  const viewer = createViewer(byId('view-3d'));
+  const scene = createTerrainScene();
+  viewer.world.add(scene.object);
+  const solver = createSolverClient();
+
+  // ---- state -------------------------------------------------------------
+  const initial = readInitialState();
+  let points = initial.points;
+  let source = initial.source;
+  let settings: SolveSettings = { objective: initial.objective, method: initial.method, epsilon: initial.epsilon };
+  let view: ViewMode = initial.view;
+  let selected: number | null = null;
+  let current: Ready = initial.built;
+  let preview: Ready | null = null;
+  let solution: Solution | null = null;
+  let shown: Analysis | null = null;
+  let solving = false;
+  let solves = 0;
+  let solveToken = 0;
+  let reframePending = true;
+  let cameraFramed = false;
+  const history = createHistory({ points, source });
+  const urlSync = createUrlSync(
+    (): SharedState => ({ points, objective: settings.objective, method: settings.method, epsilon: settings.epsilon, view, source }),
+  );
+
+  const plan = createPlanView(byId('view-plan'), {
+    select: (i) => select(i),
+    add: (x, y) => {
+      const z = shown ? heightAt(shown, x, y) : 0;
+      commit(addPoint(points, x, y, z), 'add point', { select: points.length / 3 });
+    },
+    drag: (i, x, y, z) => dragPreview(movePoint(points, i, x, y, z)),
+    dragEnd: (i, x, y, z) => {
+      const p = pointAt(points, i);
+      const label = p.x === x && p.y === y ? 'change height' : 'move point';
+      if (p.x === x && p.y === y && p.z === z) return redraw();
+      commit(movePoint(points, i, x, y, z), label, { select: i });
+    },
+  });
+
+  // ---- drawing -----------------------------------------------------------
+  function display(a: Analysis): void {
+    shown = a;
+    const reframe = reframePending;
+    reframePending = false;
+    scene.show(a, reframe);
+    const ex = scene.frame?.exaggeration ?? 1;
+    byId('exaggeration').textContent = Math.abs(ex - 1) < 0.05 ? '' : ` · heights ×${ex < 10 ? ex.toFixed(1) : Math.round(ex)}`;
+    if (reframe) {
+      cameraFramed = false;
+      plan.show(a);
+      plan.fit();
+    } else {
+      plan.show(a);
+    }
+    frameCameraIfVisible();
+    viewer.invalidate();
+    toolbar.setCounts({
+      points: a.points.length / 3,
+      triangles: a.triangles.length / 3,
+      quads: a.quads.length / 4,
+      flipped: countFlipped(a.choice),
+    });
+    if (a.values && a.delaunayValues) renderMeasures(objectives, a.values, a.delaunayValues, settings.objective);
+    showSelection();
+    hooks();
+  }
+
+  function frameCameraIfVisible(): void {
+    if (cameraFramed || view === 'plan') return;
+    requestAnimationFrame(() => {
+      if (byId('view-3d').clientWidth === 0) return;
+      viewer.frame(scene.worldPoints());
+      cameraFramed = true;
+    });
+  }
+
+  /** Draws the committed terrain with a choice (all zeros: Delaunay). */
+  function showChoice(choice: Uint8Array | null, critical: Solution['critical'] = null): void {
+    const m = current.structure.quads.length / 4;
+    display(analyse(current.terrain, current.structure, points, choice ?? new Uint8Array(m), critical));
+  }
+
+  /** Redraws what was committed (after a refused edit or drag). */
+  function redraw(): void {
+    disposePreview();
+    showChoice(solution?.choice ?? null, solution?.critical ?? null);
+  }
+
+  // ---- solving -----------------------------------------------------------
+  /** Solves the current objective on the current points in the worker. With
+   * keepDisplay (same points, other settings) the old picture stays until the
+   * answer; otherwise Delaunay is drawn if the answer takes a moment. */
+  function solve(keepDisplay: boolean): void {
+    const token = ++solveToken;
+    const objective = info(settings.objective);
+    solution = null;
+    solving = true;
+    result.running(objective, () => solver.cancel());
+    hooks();
+    const fallback = keepDisplay ? 0 : window.setTimeout(() => token === solveToken && showChoice(null), reframePending ? 0 : SOLUTION_GRACE_MS);
+    const progress = (done: number, total: number) => token === solveToken && result.progress(done, total);
+    void solver.solve({ points, ...settings }, progress).then((outcome) => {
+      if (token !== solveToken) return; // superseded by a newer edit
+      clearTimeout(fallback);
+      solving = false;
+      solves++;
+      if (outcome.status === 'solved' && outcome.solution.choice.length !== current.structure.quads.length / 4) {
+        outcome = { status: 'failed', name: 'InternalError', message: 'the worker found a different set of quads' };
+      }
+      if (outcome.status === 'solved') {
+        solution = outcome.solution;
+        showChoice(solution.choice, solution.critical);
+        result.solved(objective, solution, current.structure.quads.length / 4);
+      } else {
+        showChoice(null);
+        if (outcome.status === 'failed') result.failed(objective, outcome.message);
+        else result.cancelled(objective);
+      }
+      hooks();
+    });
+  }
+
+  // ---- edits -------------------------------------------------------------
+  interface CommitOptions {
+    /** Undo label; null for undo/redo themselves (not recorded). */
+    record?: boolean;
+    source?: TerrainSource | null;
+    reframe?: boolean;
+    select?: number | null;
+    /** Prefix of the message if the points are refused. */
+    refused?: string;
+  }
+
+  /** Makes points the current terrain: builds it (or shows why not and keeps the
+   * old points), records the edit, redraws and re-solves. */
+  function commit(next: Float64Array, label: string, o: CommitOptions = {}): boolean {
+    if (next.length / 3 > MAX_POINTS) {
+      notice.show(`${o.refused ?? 'Refused'}: ${(next.length / 3).toLocaleString('en')} points; the demo takes at most ${MAX_POINTS.toLocaleString('en')}. Your points are unchanged.`);
+      return false;
+    }
+    const built = buildTerrain(hodt, next);
+    if (!built.ok) {
+      notice.show(`${o.refused ?? `Cannot ${label}`}: ${built.message}. Your points are unchanged.`);
+      redraw();
+      return false;
+    }
+    notice.hide();
+    disposePreview();
+    current.terrain.dispose();
+    current = built;
+    points = next;
+    source = o.source ?? null;
+    if (o.record !== false) history.push({ points, source }, label);
+    if (o.reframe) reframePending = true;
+    selected = o.select === undefined ? (selected !== null && selected < points.length / 3 ? selected : null) : o.select;
+    terrainPanel.set(source);
+    scene.select(selected);
+    plan.select(selected);
+    toolbar.setHistory(history.undoLabel, history.redoLabel);
+    urlSync.changed();
+    solve(false);
+    return true;
+  }
+
+  let dragTarget: Float64Array | null = null;
+  function dragPreview(next: Float64Array): void {
+    const queued = dragTarget !== null;
+    dragTarget = next;
+    if (queued) return;
+    requestAnimationFrame(() => {
+      const target = dragTarget!;
+      dragTarget = null;
+      const built = buildTerrain(hodt, target, false);
+      if (!built.ok) return; // e.g. on top of another point: keep the last good picture
+      disposePreview();
+      preview = built;
+      display(analyse(built.terrain, built.structure, target, new Uint8Array(built.structure.quads.length / 4)));
+    });
+  }
+  function disposePreview(): void {
+    dragTarget = null;
+    preview?.terrain.dispose();
+    preview = null;
+  }
+
+  function select(i: number | null): void {
+    selected = i;
+    plan.select(i);
+    scene.select(i);
+    viewer.invalidate();
+    showSelection();
+    hooks();
+  }
+  function showSelection(): void {
+    if (selected === null || !shown || selected >= shown.points.length / 3) {
+      selectionPanel.show(null);
+      return;
+    }
+    const i = selected;
+    selectionPanel.show({ index: i, ...pointAt(shown.points, i), vertexClass: shown.vertexClass[i]!, extremum: shown.extremum[i]!, degree: shown.degree[i]! });
+  }
+  function deleteSelected(): void {
+    if (selected === null) return;
+    if (points.length / 3 <= 3) {
+      notice.show('A terrain needs at least 3 points.');
+      return;
+    }
+    commit(removePoint(points, selected), 'delete point', { select: null });
+  }
+  function undo(): void {
+    const s = history.undo();
+    if (s) commit(s.points, 'undo', { record: false, source: s.source });
+  }
+  function redo(): void {
+    const s = history.redo();
+    if (s) commit(s.points, 'redo', { record: false, source: s.source });
+  }
+
+  async function importFile(file: File): Promise<void> {
+    const refused = `Could not import ${file.name}`;
+    let parsed: Float64Array;
+    try {
+      parsed = hodt.readPoints(await readTextFile(file), file.name).points;
+    } catch (e) {
+      if (!(e instanceof InputError) && !(e instanceof Error)) throw e;
+      notice.show(`${refused}: ${e.message}. Your points are unchanged.`);
+      return;
+    }
+    const { points: unique, removed } = dropDuplicateXY(parsed);
+    if (commit(unique, `import ${file.name}`, { reframe: true, select: null, refused }) && removed > 0) {
+      notice.show(`Imported ${file.name}: dropped ${removed} point${removed === 1 ? '' : 's'} at the same (x, y) as an earlier one.`, 'info');
+    }
+  }
+
+  function exportAs(format: ExportFormat): void {
+    const base = `hodt-${settings.objective}`;
+    const about = solution ? `${solution.objective} = ${solution.value} (Delaunay ${solution.delaunayValue})` : 'Delaunay triangulation';
+    if (format === 'csv') downloadText('hodt-points.csv', pointsToCsv(points), 'text/csv');
+    else if (format === 'obj') downloadText(`${base}.obj`, triangulationToObj(points, shown!.triangles, `hodt: ${about}`), 'model/obj');
+    else if (format === 'ply') downloadText(`${base}.ply`, triangulationToPly(points, shown!.triangles, `hodt: ${about}`));
+    else if (solution) downloadText(`${base}.json`, solutionToJson(solution), 'application/json');
+    else notice.show('No solution to export yet: wait for the solver to finish.', 'info');
+  }
+
+  function setView(mode: ViewMode): void {
+    view = mode;
+    toolbar.setView(mode);
+    frameCameraIfVisible();
+    urlSync.changed();
+  }
+
+  async function copyLink(): Promise<void> {
+    const url = urlSync.link();
+    if (!url) {
+      toolbar.showLink(null, 'Too many points for a link: export the points as CSV instead.');
+      return;
+    }
+    const size = `${(url.length / 1024).toFixed(1)} KB`;
+    try {
+      await navigator.clipboard.writeText(url);
+      toolbar.showLink(url, `Link copied (${size}).`);
+    } catch {
+      toolbar.showLink(url, `Copy this link (${size}):`);
+    }
+  }
+
+  // ---- wiring ------------------------------------------------------------
+  objectivePanel.set(settings);
+  objectivePanel.onChange((s) => {
+    settings = s;
+    urlSync.changed();
+    solve(true);
+  });
+  terrainPanel.set(source);
+  terrainPanel.onGenerate((s) => {
+    commit(TERRAINS[s.kind].make(s.count, s.seed), `load ${TERRAINS[s.kind].label.toLowerCase()}`, { source: s, reframe: true, select: null });
+  });
+  terrainPanel.onImport((f) => void importFile(f));
+  terrainPanel.onExport(exportAs);
+  attachDropZone((f) => void importFile(f));
+  selectionPanel.onEdit((i, x, y, z) => commit(movePoint(points, i, x, y, z), 'edit point', { select: i }));
+  selectionPanel.onDelete(() => deleteSelected());
+  toolbar.setView(view);
+  toolbar.onView(setView);
+  toolbar.onUndo(undo);
+  toolbar.onRedo(redo);
+  toolbar.onCopyLink(() => void copyLink());
+  toolbar.setHistory(null, null);
+  byId('plan-fit').addEventListener('click', () => plan.fit());
+  bindKeys({ undo, redo, deleteSelected, deselect: () => select(null) });
+  pickIn3d();
+  window.addEventListener('hashchange', () => {
+    try {
+      const s = decodeState(location.hash);
+      if (!s) return;
+      settings = { objective: s.objective, method: s.method, epsilon: s.epsilon };
+      objectivePanel.set(settings);
+      setView(s.view);
+      commit(s.points, 'open link', { source: s.source, reframe: true, select: null, refused: 'Cannot open the link' });
+    } catch (e) {
+      notice.show(`${e instanceof Error ? e.message : String(e)}. Your points are unchanged.`);
+    }
+  });
+
+  if (initial.message) notice.show(initial.message);
+  solve(false);
+  urlSync.changed();
+
+  /** Click (without dragging) on the 3D terrain selects the nearest point. */
+  function pickIn3d(): void {
+    const canvas = viewer.renderer.domElement;
+    let down: { x: number; y: number } | null = null;
+    canvas.addEventListener('pointerdown', (e) => (down = { x: e.clientX, y: e.clientY }));
+    canvas.addEventListener('pointerup', (e) => {
+      if (!down || Math.hypot(e.clientX - down.x, e.clientY - down.y) > 4) return;
+      const r = canvas.getBoundingClientRect();
+      const ndc = { x: ((e.clientX - r.left) / r.width) * 2 - 1, y: -((e.clientY - r.top) / r.height) * 2 + 1 };
+      select(scene.pick(new Vector2(ndc.x, ndc.y), viewer.camera));
+    });
+  }
+
+  function hooks(): void {
+    publishHooks({
+      ready: shown !== null,
+      points: shown ? shown.points.length / 3 : 0,
+      triangles: shown ? shown.triangles.length / 3 : 0,
+      quads: shown ? shown.quads.length / 4 : 0,
+      flipped: shown ? countFlipped(shown.choice) : 0,
+      solving,
+      solves,
+      objective: settings.objective,
+      method: settings.method,
+      solution: solution ? JSON.parse(solutionToJson(solution)) : null,
+      choice: shown ? Array.from(shown.choice).join('') : '',
+      selected,
+      get notice() {
+        return byId('notice').hidden ? null : byId('notice-text').textContent;
+      },
+      pointsCsv: () => pointsToCsv(points),
+      planToClient: (x, y) => {
+        const p = plan.toScreen(x, y);
+        const r = plan.canvas.getBoundingClientRect();
+        return { x: r.left + p.x, y: r.top + p.y };
+      },
+      point: (i) => pointAt(points, i),
+      link: () => urlSync.link(),
+    });
+  }
+
+  /** The state from the URL hash, or the default terrain (with a message if the
+   * hash could not be used). */
+  function readInitialState(): SharedState & { built: Ready; message: string | null } {
+    let message: string | null = null;
+    try {
+      const s = decodeState(location.hash);
+      if (s) {
+        const built = buildTerrain(hodt, s.points);
+        if (built.ok) return { ...s, built, message };
+        message = `The link's points are not a valid terrain: ${built.message}. Showing the default terrain instead.`;
+      }
+    } catch (e) {
+      if (!(e instanceof LinkError)) throw e;
+      message = `${e.message[0]!.toUpperCase()}${e.message.slice(1)}. Showing the default terrain instead.`;
+    }
+    const pts = TERRAINS[DEFAULT_SOURCE.kind].make(DEFAULT_SOURCE.count, DEFAULT_SOURCE.seed);
+    const built = buildTerrain(hodt, pts);
+    if (!built.ok) throw new Error(`the default terrain failed: ${built.message}`);
+    return { points: pts, ...DEFAULT_SETTINGS, view: 'split', source: DEFAULT_SOURCE, built, message };
+  }
+}

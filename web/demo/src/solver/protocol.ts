@@ -1,0 +1,18 @@
+import type { Method, ObjectiveId, Solution } from 'hodt';
+
+/** Messages between the page and the solver worker (solver/worker.ts). */
+export interface SolveRequest {
+  type: 'solve';
+  id: number;
+  /** x, y, z per point, in input order: the worker builds the same terrain. */
+  points: Float64Array;
+  objective: ObjectiveId;
+  method: Method;
+  epsilon: number;
+}
+
+export type WorkerReply =
+  /** Work done out of total in the current phase (phases restart the count). */
+  | { type: 'progress'; id: number; done: number; total: number }
+  | { type: 'solved'; id: number; solution: Solution }
+  | { type: 'failed'; id: number; name: string; message: string };

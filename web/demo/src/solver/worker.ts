@@ -1,0 +1,32 @@
+/// <reference lib="webworker" />
+// The solver worker: builds the terrain from the points with the public API and
+// solves one objective, so that long runs never freeze the page. Cancelling a run
+// terminates this worker (the page starts a new one).
+import { loadHodt } from 'hodt';
+import type { SolveRequest, WorkerReply } from './protocol.ts';
+
+const scope = self as unknown as DedicatedWorkerGlobalScope;
+const hodt = loadHodt();
+const reply = (message: WorkerReply) => scope.postMessage(message);
+
+scope.onmessage = async (event: MessageEvent<SolveRequest>) => {
+  const { id, points, objective, method, epsilon } = event.data;
+  try {
+    const terrain = (await hodt).terrain(points);
+    let last = 0;
+    const progress = (done: number, total: number) => {
+      const now = performance.now();
+      if (now - last < 100) return; // a few updates a second are plenty
+      last = now;
+      reply({ type: 'progress', id, done, total });
+    };
+    try {
+      reply({ type: 'solved', id, solution: terrain.solve(objective, { method, epsilon, progress }) });
+    } finally {
+      terrain.dispose();
+    }
+  } catch (e) {
+    const error = e instanceof Error ? e : new Error(String(e));
+    reply({ type: 'failed', id, name: error.name, message: error.message });
+  }
+};

@@ -1,0 +1,88 @@
+import type { Method, ObjectiveId, ObjectiveInfo } from 'hodt';
+import { METHODS } from '../app/settings.ts';
+import { byId, h } from './dom.ts';
+import { OBJECTIVE_HELP } from './objectiveHelp.ts';
+
+export interface SolveSettings {
+  objective: ObjectiveId;
+  method: Method;
+  epsilon: number;
+}
+
+/** Objective picker with its help text, method and epsilon. */
+export interface ObjectivePanel {
+  set(s: SolveSettings): void;
+  get(): SolveSettings;
+  onChange(handler: (s: SolveSettings) => void): void;
+}
+
+const METHOD_LABELS: Record<Method, string> = {
+  auto: 'auto',
+  exact: 'exact',
+  approx: 'approximation',
+  'brute-force': 'brute force',
+};
+const METHOD_TITLES: Record<Method, string> = {
+  auto: 'Exact when the problem decomposes well enough, else the approximation',
+  exact: 'Exact algorithm; refuses instances too wide for its memory cap',
+  approx: 'Approximation with a proven bound (epsilon sets the accuracy)',
+  'brute-force': 'Tries all 2^m triangulations: only for m ≤ 24 quads',
+};
+
+export function createObjectivePanel(objectives: readonly ObjectiveInfo[]): ObjectivePanel {
+  const select = byId<HTMLSelectElement>('objective');
+  const help = byId('objective-help');
+  const method = byId<HTMLSelectElement>('method');
+  const epsilon = byId<HTMLInputElement>('epsilon');
+
+  select.replaceChildren(
+    ...objectives.map((o) =>
+      h('option', { value: o.id, title: o.summary }, OBJECTIVE_HELP[o.id].name),
+    ),
+  );
+  method.replaceChildren(...METHODS.map((m) => h('option', { value: m, title: METHOD_TITLES[m] }, METHOD_LABELS[m])));
+
+  const get = (): SolveSettings => ({
+    objective: select.value as ObjectiveId,
+    method: method.value as Method,
+    epsilon: clampEpsilon(Number(epsilon.value)),
+  });
+  const showHelp = () => {
+    const id = select.value as ObjectiveId;
+    const info = objectives.find((o) => o.id === id);
+    const text = OBJECTIVE_HELP[id];
+    help.replaceChildren(
+      h('b', {}, info?.sense === 'max' ? 'Maximise. ' : 'Minimise. '),
+      text.help,
+      text.hard ? h('span', { class: 'tag' }, 'NP-hard') : '',
+      h('code', { class: 'id' }, id),
+    );
+  };
+  const listeners: ((s: SolveSettings) => void)[] = [];
+  const changed = () => {
+    showHelp();
+    const s = get();
+    epsilon.value = String(s.epsilon);
+    for (const l of listeners) l(s);
+  };
+  select.addEventListener('change', changed);
+  method.addEventListener('change', changed);
+  epsilon.addEventListener('change', changed);
+
+  return {
+    set(s) {
+      select.value = s.objective;
+      method.value = s.method;
+      epsilon.value = String(s.epsilon);
+      showHelp();
+    },
+    get,
+    onChange(handler) {
+      listeners.push(handler);
+    },
+  };
+}
+
+function clampEpsilon(v: number): number {
+  return Number.isFinite(v) ? Math.min(0.99, Math.max(0.01, v)) : 0.25;
+}

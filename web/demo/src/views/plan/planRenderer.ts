@@ -1,0 +1,165 @@
+import type { Analysis } from '../../app/analysis.ts';
+import { criticalTriangles } from '../../app/criticalTriangles.ts';
+import {
+  CRITICAL_COLOR,
+  EDGE_SHAPE_COLORS,
+  EXTREMUM_COLORS,
+  FLIPPED_COLOR,
+  QUAD_COLOR,
+  SELECTION_COLOR,
+  VERTEX_CLASS_COLORS,
+} from '../palette.ts';
+import { toScreenX, toScreenY, type PlanTransform } from './planTransform.ts';
+
+export interface PlanDrawOptions {
+  selected: number | null;
+  hovered: number | null;
+}
+
+/**
+ * Draws the plan (top) view: triangles in pale grey by mean elevation, flippable quads
+ * (teal) and flipped ones (amber, with the Delaunay diagonal they replaced
+ * dashed), the critical pair (pink outline), edges coloured by shape, vertices
+ * coloured by class, triangles on local minima and maxima, and the selection.
+ */
+export function drawPlan(ctx: CanvasRenderingContext2D, a: Analysis, t: PlanTransform, o: PlanDrawOptions): void {
+  const { points, triangles } = a;
+  const n = points.length / 3;
+  const sx = new Float64Array(n);
+  const sy = new Float64Array(n);
+  let zmin = Infinity;
+  let zmax = -Infinity;
+  for (let i = 0; i < n; i++) {
+    sx[i] = toScreenX(t, points[3 * i]!);
+    sy[i] = toScreenY(t, points[3 * i + 1]!);
+    zmin = Math.min(zmin, points[3 * i + 2]!);
+    zmax = Math.max(zmax, points[3 * i + 2]!);
+  }
+  const numTriangles = triangles.length / 3;
+  const path = (k: number) => {
+    const a0 = triangles[3 * k]!, a1 = triangles[3 * k + 1]!, a2 = triangles[3 * k + 2]!;
+    ctx.beginPath();
+    ctx.moveTo(sx[a0]!, sy[a0]!);
+    ctx.lineTo(sx[a1]!, sy[a1]!);
+    ctx.lineTo(sx[a2]!, sy[a2]!);
+    ctx.closePath();
+  };
+
+  // Elevation as a faint grey (darker is lower): the colours are for the overlays.
+  ctx.lineJoin = 'round';
+  for (let k = 0; k < numTriangles; k++) {
+    let z = 0;
+    for (let j = 0; j < 3; j++) z += points[3 * triangles[3 * k + j]! + 2]!;
+    const t = (z / 3 - zmin) / (zmax - zmin || 1);
+    const grey = Math.round(212 + 40 * t);
+    path(k);
+    ctx.fillStyle = `rgb(${grey}, ${grey + 1}, ${grey})`;
+    ctx.fill();
+    ctx.strokeStyle = ctx.fillStyle; // closes hairline gaps between triangles
+    ctx.lineWidth = 0.6;
+    ctx.stroke();
+  }
+
+  // Flippable and flipped quads.
+  for (let k = 0; k < numTriangles; k++) {
+    const q = a.quadOfTriangle[k]!;
+    if (q < 0) continue;
+    path(k);
+    ctx.fillStyle = a.choice[q] ? withAlpha(FLIPPED_COLOR, 0.55) : withAlpha(QUAD_COLOR, 0.28);
+    ctx.fill();
+  }
+
+  // Critical pair of a min-max objective.
+  for (const k of criticalTriangles(a)) {
+    path(k);
+    ctx.fillStyle = withAlpha(CRITICAL_COLOR, 0.35);
+    ctx.fill();
+  }
+
+  // Edges by shape.
+  const edgeWidth = n > 3000 ? 0.6 : n > 800 ? 0.9 : 1.4;
+  ctx.lineCap = 'round';
+  for (let shape = 0; shape < 4; shape++) {
+    ctx.beginPath();
+    for (let e = 0; e < triangles.length; e++) {
+      if (a.halfedges[e]! > e || a.edgeShape[e] !== shape) continue;
+      const u = triangles[e]!;
+      const v = triangles[e % 3 === 2 ? e - 2 : e + 1]!;
+      ctx.moveTo(sx[u]!, sy[u]!);
+      ctx.lineTo(sx[v]!, sy[v]!);
+    }
+    ctx.strokeStyle = EDGE_SHAPE_COLORS[shape]!;
+    ctx.lineWidth = shape === 3 ? edgeWidth + 0.8 : edgeWidth;
+    ctx.stroke();
+  }
+
+  // The Delaunay diagonal a flipped quad gave up, dashed.
+  ctx.beginPath();
+  for (let q = 0; q < a.choice.length; q++) {
+    if (!a.choice[q]) continue;
+    const u = a.quads[4 * q]!;
+    const v = a.quads[4 * q + 1]!;
+    ctx.moveTo(sx[u]!, sy[u]!);
+    ctx.lineTo(sx[v]!, sy[v]!);
+  }
+  ctx.setLineDash([3, 3]);
+  ctx.strokeStyle = 'rgba(60, 40, 0, 0.55)';
+  ctx.lineWidth = 1;
+  ctx.stroke();
+  ctx.setLineDash([]);
+
+  // Critical pair outline on top of the edges.
+  ctx.strokeStyle = CRITICAL_COLOR;
+  ctx.lineWidth = 2.2;
+  for (const k of criticalTriangles(a)) {
+    path(k);
+    ctx.stroke();
+  }
+
+  // Vertices by class, extrema as triangles.
+  const r = n > 3000 ? 1.6 : n > 800 ? 2.4 : 3.6;
+  ctx.lineWidth = 1;
+  for (let i = 0; i < n; i++) {
+    const kind = a.extremum[i];
+    if (kind) continue;
+    ctx.beginPath();
+    ctx.arc(sx[i]!, sy[i]!, a.vertexClass[i] === 4 ? r * 0.75 : r, 0, Math.PI * 2);
+    ctx.fillStyle = VERTEX_CLASS_COLORS[a.vertexClass[i]!] ?? '#000';
+    ctx.fill();
+    ctx.strokeStyle = 'rgba(255, 255, 255, 0.9)';
+    ctx.stroke();
+  }
+  const tri = r * 2.2;
+  for (let i = 0; i < n; i++) {
+    const kind = a.extremum[i];
+    if (!kind) continue;
+    const dir = kind === 1 ? 1 : -1; // minimum: pointing down (screen y grows down)
+    ctx.beginPath();
+    ctx.moveTo(sx[i]!, sy[i]! + dir * tri);
+    ctx.lineTo(sx[i]! - tri * 0.95, sy[i]! - dir * tri * 0.65);
+    ctx.lineTo(sx[i]! + tri * 0.95, sy[i]! - dir * tri * 0.65);
+    ctx.closePath();
+    ctx.fillStyle = kind === 1 ? EXTREMUM_COLORS.minimum : EXTREMUM_COLORS.maximum;
+    ctx.fill();
+    ctx.strokeStyle = '#fff';
+    ctx.lineWidth = 1.4;
+    ctx.stroke();
+  }
+
+  for (const [i, width, color] of [
+    [o.hovered, 1.5, 'rgba(17, 17, 17, 0.55)'],
+    [o.selected, 2.5, SELECTION_COLOR],
+  ] as const) {
+    if (i === null || i >= n) continue;
+    ctx.beginPath();
+    ctx.arc(sx[i]!, sy[i]!, r + 5, 0, Math.PI * 2);
+    ctx.strokeStyle = color;
+    ctx.lineWidth = width;
+    ctx.stroke();
+  }
+}
+
+function withAlpha(hex: string, alpha: number): string {
+  const v = parseInt(hex.slice(1), 16);
+  return `rgba(${(v >> 16) & 255}, ${(v >> 8) & 255}, ${v & 255}, ${alpha})`;
+}
