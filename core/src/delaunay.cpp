@@ -4,13 +4,39 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include "hodt/kernel.hpp"
+#include "hodt/predicates.hpp"
 
 namespace hodt {
 
+namespace {
+
+// CGAL's kernel with the project's own filtered predicates (predicates.hpp):
+// CGAL's interval filters need nextafter in round-to-nearest builds (wasm), which
+// makes them several times slower; the decisions are the same exact signs.
+struct Traits : Kernel {
+  struct Orientation_2 {
+    CGAL::Orientation operator()(const Point2& p, const Point2& q, const Point2& r) const {
+      const double a[2] = {p.x(), p.y()}, b[2] = {q.x(), q.y()}, c[2] = {r.x(), r.y()};
+      return static_cast<CGAL::Orientation>(orient2d(a, b, c));
+    }
+  };
+  struct Side_of_oriented_circle_2 {
+    CGAL::Oriented_side operator()(const Point2& p, const Point2& q, const Point2& r, const Point2& t) const {
+      const double a[2] = {p.x(), p.y()}, b[2] = {q.x(), q.y()}, c[2] = {r.x(), r.y()}, d[2] = {t.x(), t.y()};
+      return static_cast<CGAL::Oriented_side>(in_circle_sign(a, b, c, d));
+    }
+  };
+  Orientation_2 orientation_2_object() const { return {}; }
+  Side_of_oriented_circle_2 side_of_oriented_circle_2_object() const { return {}; }
+};
+
+}  // namespace
+
 Mesh delaunay(std::vector<double> xyz) {
-  using Vb = CGAL::Triangulation_vertex_base_with_info_2<uint32_t, Kernel>;
-  using Tds = CGAL::Triangulation_data_structure_2<Vb>;
-  using DT = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
+  using Vb = CGAL::Triangulation_vertex_base_with_info_2<uint32_t, Traits>;
+  using Fb = CGAL::Triangulation_face_base_2<Traits>;
+  using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+  using DT = CGAL::Delaunay_triangulation_2<Traits, Tds>;
 
   const uint32_t n = static_cast<uint32_t>(xyz.size() / 3);
   std::vector<std::pair<Point2, uint32_t>> pts;

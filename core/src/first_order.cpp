@@ -52,6 +52,23 @@ FirstOrder assemble(Mesh base, std::vector<Quad> quads, bool is_delaunay) {
 
 }  // namespace
 
+// Cheap rejection: the triangles beyond the quad's four sides are the likeliest
+// second point inside the flipped triangles' circles (b is in circle(a, d, c) and a
+// in circle(d, b, c) by construction). Finding one there proves "not flippable";
+// not finding one proves nothing, and the full circle walk decides.
+bool quick_reject(const Mesh& m, uint32_t e, const Quad& q) {
+  const uint32_t f = static_cast<uint32_t>(m.halfedges[e]);
+  const double *a = m.point(q.a), *b = m.point(q.b), *c = m.point(q.c), *d = m.point(q.d);
+  for (uint32_t side : {next_halfedge(e), prev_halfedge(e), next_halfedge(f), prev_halfedge(f)}) {
+    const int32_t t = m.halfedges[side];
+    if (t < 0) continue;
+    const uint32_t p = m.apex(static_cast<uint32_t>(t));
+    if (p == q.a || p == q.b || p == q.c || p == q.d) continue;
+    if (in_circle(a, d, c, m.point(p)) || in_circle(d, b, c, m.point(p))) return true;
+  }
+  return false;
+}
+
 FirstOrder first_order(Mesh dt) {
   std::vector<Quad> quads;
   CircleCounter circles(dt);
@@ -60,6 +77,7 @@ FirstOrder first_order(Mesh dt) {
     if (f < static_cast<int32_t>(e)) continue;  // hull edge, or seen from its twin
     const Quad q = quad_at(dt, e);
     if (!strictly_convex(dt, q.a, q.b, q.c, q.d)) continue;
+    if (quick_reject(dt, e, q)) continue;
     if (circles.count(q.a, q.d, q.c, 1) > 1) continue;
     if (circles.count(q.d, q.b, q.c, 1) > 1) continue;
     quads.push_back(q);
