@@ -41,6 +41,17 @@ const KINDS = {
   },
 };
 
+// A fresh module per run (its heap size is that run's peak), warmed up on a small
+// terrain first: V8 compiles wasm in tiers, and the first call of a big function
+// would otherwise pay for the optimising compile.
+async function warmModule(objectives) {
+  const module = await loadModule();
+  const t = module.fromPoints(KINDS.dem(3000, rng(99)), false);
+  for (let r = 0; r < 3; ++r) for (const o of objectives) { try { t.solve(o, 'exact', 0.25, false, undefined); } catch {} }
+  t.delete();
+  return module;
+}
+
 const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
 const time = (f) => { const t0 = performance.now(); const r = f(); return [performance.now() - t0, r]; };
 
@@ -61,7 +72,7 @@ for (const kind of Object.keys(KINDS)) {
     writeFileSync(file, Buffer.from(xyz.buffer));
     const nat = JSON.parse(spawnSync(`${root}/build/native/hodt_bench`, [file, String(reps), ...objectives], { encoding: 'utf8', maxBuffer: 1 << 24 }).stdout);
     // hodt wasm: a fresh module per size so that its heap size is this run's peak.
-    const module = await loadModule();
+    const module = await warmModule(objectives);
     const terrainMs = [], solveMs = Object.fromEntries(objectives.map((o) => [o, []]));
     let quads = 0;
     for (let r = 0; r < reps; ++r) {
@@ -104,7 +115,7 @@ for (const [kind, make] of [['grid', (w) => KINDS.grid(w * w)], ['saddle', saddl
     const file = join(tmp, 'points.bin');
     writeFileSync(file, Buffer.from(xyz.buffer));
     const nat = JSON.parse(spawnSync(`${root}/build/native/hodt_bench`, [file, '1', '--approx', ...NP], { encoding: 'utf8', maxBuffer: 1 << 24 }).stdout);
-    const module = await loadModule();
+    const module = await warmModule(NP);
     const t = module.fromPoints(xyz, false);
     const row = { kind, n: w * w, quads: t.numQuads(), native: nat.objectives, wasm: {}, results: {} };
     for (const o of NP) {
