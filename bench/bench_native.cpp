@@ -67,7 +67,8 @@ int main(int argc, char** argv) {
       opt.method = approx ? Method::Approx : Method::Exact;
       const auto t0 = Clock::now();
       try {
-        solve(terrain.structure(), *o, opt);
+        Solution sol = solve(terrain.structure(), *o, opt);
+        if (r == 0) sol.delaunay_value = terrain.delaunay_value(*o);  // as the bindings do
       } catch (const std::exception& e) {
         error = e.what();
       }

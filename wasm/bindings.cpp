@@ -173,7 +173,7 @@ class TerrainHandle {
         };
       const Objective o = objective_of(objective);
       Solution s = hodt::solve(t_.structure(), o, options);
-      s.delaunay_value = t_.delaunay_values()[static_cast<size_t>(o)];
+      s.delaunay_value = t_.delaunay_value(o);
       return solution_value(s);
     });
   }
@@ -235,8 +235,8 @@ class TerrainHandle {
 
 TerrainHandle* fromPoints(val xyz, bool dedupe) {
   return guarded([&] {
-    const std::vector<double> v = emscripten::convertJSArrayToNumberVector<double>(xyz);
-    return new TerrainHandle(Terrain::from_points(v, dedupe ? Dedupe::KeepFirst : Dedupe::Error));
+    std::vector<double> v = emscripten::convertJSArrayToNumberVector<double>(xyz);
+    return new TerrainHandle(Terrain::from_points(std::move(v), dedupe ? Dedupe::KeepFirst : Dedupe::Error));
   });
 }
 

@@ -102,7 +102,7 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
     } else {
       Solution s = order > 1 ? k_order_solution(terrain.structure(), *objective, static_cast<uint32_t>(order), options)
                              : solve(terrain.structure(), *objective, options);
-      s.delaunay_value = terrain.delaunay_values()[static_cast<size_t>(*objective)];
+      s.delaunay_value = terrain.delaunay_value(*objective);
       r.out = solution_json(terrain, s, triangles, options.trace) + "\n";
     }
   } catch (const InputError& e) {

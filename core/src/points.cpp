@@ -16,8 +16,7 @@ std::string PointLabels::describe(size_t i) const {
   return s;
 }
 
-TerrainPoints validate_points(const std::vector<double>& xyz, Dedupe dedupe,
-                              const PointLabels& labels) {
+TerrainPoints validate_points(std::vector<double> xyz, Dedupe dedupe, const PointLabels& labels) {
   if (xyz.size() % 3 != 0)
     throw InputError("expected x, y, z per point: " + std::to_string(xyz.size()) +
                      " numbers is not a multiple of 3");
@@ -49,11 +48,15 @@ TerrainPoints validate_points(const std::vector<double>& xyz, Dedupe dedupe,
     order[k] = a;  // so later duplicates are compared with it
   }
 
+  order = {};
   TerrainPoints out;
-  for (size_t i = 0; i < n; ++i) {
-    if (!keep[i]) continue;
-    out.input_index.push_back(static_cast<uint32_t>(i));
-    out.xyz.insert(out.xyz.end(), &xyz[3 * i], &xyz[3 * i + 3]);
+  out.input_index.reserve(n);
+  for (size_t i = 0; i < n; ++i)
+    if (keep[i]) out.input_index.push_back(static_cast<uint32_t>(i));
+  if (out.input_index.size() == n) {
+    out.xyz = std::move(xyz);  // nothing dropped: no copy
+  } else {
+    for (uint32_t i : out.input_index) out.xyz.insert(out.xyz.end(), &xyz[3 * i], &xyz[3 * i + 3]);
   }
   const size_t m = out.input_index.size();
   if (m < 3)

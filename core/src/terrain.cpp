@@ -8,10 +8,10 @@
 
 namespace hodt {
 
-Terrain Terrain::from_points(const std::vector<double>& xyz, Dedupe dedupe, const PointLabels& labels) {
-  TerrainPoints pts = validate_points(xyz, dedupe, labels);
+Terrain Terrain::from_points(std::vector<double> xyz, Dedupe dedupe, const PointLabels& labels) {
   Terrain t;
   t.num_input_ = static_cast<uint32_t>(xyz.size() / 3);
+  TerrainPoints pts = validate_points(std::move(xyz), dedupe, labels);
   // Vertices are numbered along a space-filling curve (cache-friendly); every
   // index leaving the terrain goes back through input_index_.
   const std::vector<uint32_t> order = spatial_order(pts.xyz);
@@ -21,6 +21,7 @@ Terrain Terrain::from_points(const std::vector<double>& xyz, Dedupe dedupe, cons
     std::copy_n(&pts.xyz[3 * size_t(order[k])], 3, &sorted[3 * k]);
     t.input_index_[k] = pts.input_index[order[k]];
   }
+  pts = {};  // the unsorted copy is not needed any more
   t.fo_ = first_order(delaunay(std::move(sorted)));
   return t;
 }
@@ -55,11 +56,17 @@ const Mesh& Terrain::delaunay_mesh() const {
   return *delaunay_;
 }
 
-const std::array<double, kNumObjectives>& Terrain::delaunay_values() const {
-  if (!have_delaunay_values_) {
-    delaunay_values_ = evaluate_all(fo_.base);
-    have_delaunay_values_ = true;
+double Terrain::delaunay_value(Objective o) const {
+  const size_t k = static_cast<size_t>(o);
+  if (!have_delaunay_value_[k]) {
+    delaunay_values_[k] = evaluate(o, fo_.base);
+    have_delaunay_value_[k] = true;
   }
+  return delaunay_values_[k];
+}
+
+const std::array<double, kNumObjectives>& Terrain::delaunay_values() const {
+  for (const auto& i : objectives()) delaunay_value(i.objective);
   return delaunay_values_;
 }
 

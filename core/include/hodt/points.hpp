@@ -23,7 +23,7 @@ struct PointLabels {
 // Throws InputError for: a coordinate count not divisible by 3, NaN or infinite
 // coordinates (naming index and coordinate), duplicate (x, y) (naming both indices,
 // unless dedupe == KeepFirst), fewer than 3 points, all points collinear.
-TerrainPoints validate_points(const std::vector<double>& xyz, Dedupe dedupe = Dedupe::Error,
+TerrainPoints validate_points(std::vector<double> xyz, Dedupe dedupe = Dedupe::Error,
                               const PointLabels& labels = {});
 
 }  // namespace hodt

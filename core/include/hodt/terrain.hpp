@@ -18,7 +18,7 @@ namespace hodt {
 class Terrain {
  public:
   // Validates the points (throws InputError) and builds Delaunay + first order structure.
-  static Terrain from_points(const std::vector<double>& xyz, Dedupe dedupe = Dedupe::Error,
+  static Terrain from_points(std::vector<double> xyz, Dedupe dedupe = Dedupe::Error,
                              const PointLabels& labels = {});
   // A singly-flippable triangulation given by the user (see first_order.hpp).
   static Terrain from_triangulation(const std::vector<double>& xyz, const std::vector<uint32_t>& triangles,
@@ -33,6 +33,8 @@ class Terrain {
   // Checks a choice from outside (length m, bytes 0/1); throws InputError.
   void check_choice(const Choice& choice) const;
   const std::array<double, kNumObjectives>& delaunay_values() const;
+  // One objective's value on the Delaunay (base) triangulation, computed once.
+  double delaunay_value(Objective o) const;
   // The Delaunay triangulation of the points (the base, unless the user gave one).
   const Mesh& delaunay_mesh() const;
 
@@ -41,7 +43,7 @@ class Terrain {
   std::vector<uint32_t> input_index_;  // empty: identity
   uint32_t num_input_ = 0;
   mutable std::array<double, kNumObjectives> delaunay_values_{};
-  mutable bool have_delaunay_values_ = false;
+  mutable std::array<bool, kNumObjectives> have_delaunay_value_{};
   mutable std::shared_ptr<const Mesh> delaunay_;  // only for user triangulations
 };
 
