@@ -15,7 +15,7 @@ import { type PointInput, toXyz } from './points.js';
 import { Terrain } from './terrain.js';
 import type { HodtModule } from './wasm/hodt.mjs';
 
-export * from './errors.js';
+export { CancelledError, HodtError, InputError, InternalError, LimitError } from './errors.js';
 export { OBJECTIVE_IDS, type Method, type ObjectiveId, type ObjectiveInfo, type ObjectiveValues } from './objectives.js';
 export * from './terrain.js';
 export type { LoadOptions } from './load.js';
