@@ -38,7 +38,7 @@ describe('the demo page', () => {
   });
 
   test('3D only and plan only views fill the stage (screenshots)', async () => {
-    const { page, context, errors } = await openPage(demo, '', { width: 1280, height: 800 });
+    const { page, context, errors } = await openPage(demo, '', { width: 1200, height: 760 });
     await page.locator('#intro summary').click(); // fold the intro: show the result and the measures
     await page.selectOption('#objective', 'max-convex-edges');
     await settled(page, 1);
@@ -49,10 +49,19 @@ describe('the demo page', () => {
     expect(box3d.width).toBeGreaterThan(800);
     expect(colourfulFraction(three, box3d)).toBeGreaterThan(0.2);
 
-    await page.selectOption('#objective', 'min-local-minima');
+    await page.selectOption('#objective', 'min-mixed-vertices');
     await settled(page, 2);
     await page.click('.segmented button[data-view="plan"]');
     await page.waitForTimeout(300);
+    // Hover a point: its class shows next to the cursor.
+    const spot = await page.evaluate(() => {
+      const h = window.__hodt!;
+      const p = h.point(Math.floor(h.points / 2));
+      return h.planToClient(p.x, p.y);
+    });
+    await page.mouse.move(spot.x, spot.y);
+    await page.waitForTimeout(200);
+    expect(await page.locator('.plan-tip').textContent()).toMatch(/^Point \d+: (convex|concave|flat|mixed|on the boundary)/);
     const plan = decodePng(await screenshot(page, 'demo-plan.png'));
     const boxPlan = (await page.locator('#view-plan').boundingBox())!;
     expect(await page.locator('#view-3d').isVisible()).toBe(false);

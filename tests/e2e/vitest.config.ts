@@ -1,8 +1,13 @@
 // The browser tests: `npx vitest run --config tests/e2e/vitest.config.ts`.
-// One file at a time: each starts its own Vite server and Chromium.
+// One file at a time: each browser test starts its own Vite server and Chromium.
+// The demo's pure modules (link format, exports) are tested here in Node too.
+import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vitest/config';
 
 export default defineConfig({
+  resolve: {
+    alias: { hodt: fileURLToPath(new URL('../../web/src/index.ts', import.meta.url)) },
+  },
   test: {
     include: ['tests/e2e/**/*.test.ts'],
     testTimeout: 120_000,

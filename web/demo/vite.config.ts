@@ -32,5 +32,6 @@ export default defineConfig({
     target: 'es2022',
     outDir: here('../../build/demo'),
     emptyOutDir: true,
+    chunkSizeWarningLimit: 1000, // three.js and the volcano data: one chunk is fine
   },
 });

@@ -23,6 +23,7 @@ import { createTerrainScene } from '../views/three/terrainScene.ts';
 import { createViewer } from '../views/three/viewer.ts';
 import { analyse, countFlipped, type Analysis } from './analysis.ts';
 import { dropDuplicateXY } from './dedupe.ts';
+import { describeVertex } from './describeVertex.ts';
 import { heightAt } from './heightAt.ts';
 import { createHistory } from './history.ts';
 import { bindKeys } from './keyboard.ts';
@@ -35,7 +36,7 @@ import { createUrlSync } from './urlSync.ts';
 type Ready = Extract<Built, { ok: true }>;
 
 export const DEFAULT_SOURCE: TerrainSource = { kind: 'volcano', count: 200, seed: 7 };
-const DEFAULT_SETTINGS: SolveSettings = { objective: 'min-local-minima', method: 'auto', epsilon: 0.25 };
+const DEFAULT_SETTINGS: SolveSettings = { objective: 'min-mixed-vertices', method: 'auto', epsilon: 0.25 };
 /** How long an edit waits for its solution before drawing Delaunay meanwhile. */
 const SOLUTION_GRACE_MS = 150;
 
@@ -252,7 +253,7 @@ export function startApp(hodt: Hodt): void {
       return;
     }
     const i = selected;
-    selectionPanel.show({ index: i, ...pointAt(shown.points, i), vertexClass: shown.vertexClass[i]!, extremum: shown.extremum[i]!, degree: shown.degree[i]! });
+    selectionPanel.show({ index: i, ...pointAt(shown.points, i), about: describeVertex(shown, i) });
   }
   function deleteSelected(): void {
     if (selected === null) return;

@@ -1,7 +1,7 @@
 import { deflateSync } from 'fflate';
 import { OBJECTIVE_IDS, type Method, type ObjectiveId } from 'hodt';
 import { METHODS, VIEW_MODES, type ViewMode } from '../app/settings.ts';
-import { isTerrainKind, type TerrainKind } from '../terrains/catalog.ts';
+import { isTerrainKind, type TerrainKind } from '../terrains/kinds.ts';
 import { fromBase64Url, toBase64Url } from './base64url.ts';
 import { boundedInflate } from './boundedInflate.ts';
 import { fromColumns, shuffleDoubles, toColumns, unshuffleDoubles } from './byteShuffle.ts';

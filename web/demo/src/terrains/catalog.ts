@@ -1,4 +1,5 @@
 import { fractalPoints } from './fractal.ts';
+import type { TerrainKind } from './kinds.ts';
 import { jitteredGridPoints } from './jitteredGrid.ts';
 import { uniformPoints } from './uniform.ts';
 import { volcanoPoints } from './volcano.ts';
@@ -25,11 +26,6 @@ export const TERRAINS = {
     about: 'Random positions and random heights: many pits and peaks.',
     make: uniformPoints,
   },
-} as const satisfies Record<string, { label: string; about: string; make: (n: number, seed: number) => Float64Array }>;
+} as const satisfies Record<TerrainKind, { label: string; about: string; make: (n: number, seed: number) => Float64Array }>;
 
-export type TerrainKind = keyof typeof TERRAINS;
-export const TERRAIN_KINDS = Object.keys(TERRAINS) as TerrainKind[];
-
-export function isTerrainKind(s: string): s is TerrainKind {
-  return (TERRAIN_KINDS as string[]).includes(s);
-}
+export { TERRAIN_KINDS, type TerrainKind } from './kinds.ts';

@@ -5,11 +5,8 @@ export interface SelectedPoint {
   x: number;
   y: number;
   z: number;
-  /** 0 convex, 1 concave, 2 flat, 3 mixed, 4 boundary. */
-  vertexClass: number;
-  /** 0 none, 1 minimum, 2 maximum. */
-  extremum: number;
-  degree: number;
+  /** One line on its class, extremum and degree. */
+  about: string;
 }
 
 /** The selected point: editable x, y, z fields, its class and a Delete button. */
@@ -18,8 +15,6 @@ export interface SelectionPanel {
   onEdit(handler: (index: number, x: number, y: number, z: number) => void): void;
   onDelete(handler: (index: number) => void): void;
 }
-
-const CLASS_NAMES = ['convex', 'concave', 'flat', 'mixed', 'on the boundary'];
 
 export function createSelectionPanel(): SelectionPanel {
   const root = byId('selection');
@@ -44,11 +39,7 @@ export function createSelectionPanel(): SelectionPanel {
       for (const f of [fx, fy, fz]) f.querySelector('input')!.addEventListener('change', commit);
       const remove = h('button', { type: 'button', id: 'delete-point', class: 'secondary small', title: 'Delete key' }, 'Delete');
       remove.addEventListener('click', () => deleteHandlers.forEach((d) => d(p.index)));
-      const extremum = p.extremum === 1 ? ', a local minimum ▼' : p.extremum === 2 ? ', a local maximum ▲' : '';
-      root.replaceChildren(
-        h('div', { class: 'coords' }, fx, fy, fz),
-        h('p', { class: 'help' }, `Point ${p.index}: ${CLASS_NAMES[p.vertexClass] ?? '?'}${extremum}, degree ${p.degree}. `, remove),
-      );
+      root.replaceChildren(h('div', { class: 'coords' }, fx, fy, fz), h('p', { class: 'help' }, `${p.about}. `, remove));
     },
     onEdit: (f) => editHandlers.push(f),
     onDelete: (f) => deleteHandlers.push(f),

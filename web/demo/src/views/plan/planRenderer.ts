@@ -36,45 +36,51 @@ export function drawPlan(ctx: CanvasRenderingContext2D, a: Analysis, t: PlanTran
     zmax = Math.max(zmax, points[3 * i + 2]!);
   }
   const numTriangles = triangles.length / 3;
-  const path = (k: number) => {
+  // Shapes are batched into one path per colour: a few dozen draw calls in all.
+  const addTriangle = (path: Path2D, k: number) => {
     const a0 = triangles[3 * k]!, a1 = triangles[3 * k + 1]!, a2 = triangles[3 * k + 2]!;
-    ctx.beginPath();
-    ctx.moveTo(sx[a0]!, sy[a0]!);
-    ctx.lineTo(sx[a1]!, sy[a1]!);
-    ctx.lineTo(sx[a2]!, sy[a2]!);
-    ctx.closePath();
+    path.moveTo(sx[a0]!, sy[a0]!);
+    path.lineTo(sx[a1]!, sy[a1]!);
+    path.lineTo(sx[a2]!, sy[a2]!);
+    path.closePath();
   };
 
-  // Elevation as a faint grey (darker is lower): the colours are for the overlays.
-  ctx.lineJoin = 'round';
+  // Elevation as a faint grey in 24 steps (darker is lower): the colours are for
+  // the overlays.
+  const LEVELS = 24;
+  const levels = Array.from({ length: LEVELS }, () => new Path2D());
   for (let k = 0; k < numTriangles; k++) {
     let z = 0;
     for (let j = 0; j < 3; j++) z += points[3 * triangles[3 * k + j]! + 2]!;
     const t = (z / 3 - zmin) / (zmax - zmin || 1);
-    const grey = Math.round(212 + 40 * t);
-    path(k);
-    ctx.fillStyle = `rgb(${grey}, ${grey + 1}, ${grey})`;
-    ctx.fill();
-    ctx.strokeStyle = ctx.fillStyle; // closes hairline gaps between triangles
-    ctx.lineWidth = 0.6;
-    ctx.stroke();
+    addTriangle(levels[Math.min(LEVELS - 1, Math.floor(t * LEVELS))]!, k);
   }
+  ctx.lineJoin = 'round';
+  ctx.lineWidth = 0.6;
+  levels.forEach((path, level) => {
+    const grey = Math.round(212 + (40 * (level + 0.5)) / LEVELS);
+    ctx.fillStyle = ctx.strokeStyle = `rgb(${grey}, ${grey + 1}, ${grey})`;
+    ctx.fill(path);
+    ctx.stroke(path); // closes hairline gaps between triangles
+  });
 
   // Flippable and flipped quads.
+  const kept = new Path2D();
+  const flipped = new Path2D();
   for (let k = 0; k < numTriangles; k++) {
     const q = a.quadOfTriangle[k]!;
-    if (q < 0) continue;
-    path(k);
-    ctx.fillStyle = a.choice[q] ? withAlpha(FLIPPED_COLOR, 0.55) : withAlpha(QUAD_COLOR, 0.28);
-    ctx.fill();
+    if (q >= 0) addTriangle(a.choice[q] ? flipped : kept, k);
   }
+  ctx.fillStyle = withAlpha(QUAD_COLOR, 0.28);
+  ctx.fill(kept);
+  ctx.fillStyle = withAlpha(FLIPPED_COLOR, 0.55);
+  ctx.fill(flipped);
 
   // Critical pair of a min-max objective.
-  for (const k of criticalTriangles(a)) {
-    path(k);
-    ctx.fillStyle = withAlpha(CRITICAL_COLOR, 0.35);
-    ctx.fill();
-  }
+  const critical = new Path2D();
+  for (const k of criticalTriangles(a)) addTriangle(critical, k);
+  ctx.fillStyle = withAlpha(CRITICAL_COLOR, 0.35);
+  ctx.fill(critical);
 
   // Edges by shape.
   const edgeWidth = n > 3000 ? 0.6 : n > 800 ? 0.9 : 1.4;
@@ -111,39 +117,48 @@ export function drawPlan(ctx: CanvasRenderingContext2D, a: Analysis, t: PlanTran
   // Critical pair outline on top of the edges.
   ctx.strokeStyle = CRITICAL_COLOR;
   ctx.lineWidth = 2.2;
-  for (const k of criticalTriangles(a)) {
-    path(k);
-    ctx.stroke();
-  }
+  ctx.stroke(critical);
 
   // Vertices by class, extrema as triangles.
   const r = n > 3000 ? 1.6 : n > 800 ? 2.4 : 3.6;
-  ctx.lineWidth = 1;
-  for (let i = 0; i < n; i++) {
-    const kind = a.extremum[i];
-    if (kind) continue;
-    ctx.beginPath();
-    ctx.arc(sx[i]!, sy[i]!, a.vertexClass[i] === 4 ? r * 0.75 : r, 0, Math.PI * 2);
-    ctx.fillStyle = VERTEX_CLASS_COLORS[a.vertexClass[i]!] ?? '#000';
-    ctx.fill();
-    ctx.strokeStyle = 'rgba(255, 255, 255, 0.9)';
-    ctx.stroke();
-  }
+  const dots = VERTEX_CLASS_COLORS.map(() => new Path2D());
+  const pits = new Path2D();
+  const peaks = new Path2D();
   const tri = r * 2.2;
   for (let i = 0; i < n; i++) {
     const kind = a.extremum[i];
-    if (!kind) continue;
-    const dir = kind === 1 ? 1 : -1; // minimum: pointing down (screen y grows down)
-    ctx.beginPath();
-    ctx.moveTo(sx[i]!, sy[i]! + dir * tri);
-    ctx.lineTo(sx[i]! - tri * 0.95, sy[i]! - dir * tri * 0.65);
-    ctx.lineTo(sx[i]! + tri * 0.95, sy[i]! - dir * tri * 0.65);
-    ctx.closePath();
-    ctx.fillStyle = kind === 1 ? EXTREMUM_COLORS.minimum : EXTREMUM_COLORS.maximum;
-    ctx.fill();
-    ctx.strokeStyle = '#fff';
-    ctx.lineWidth = 1.4;
-    ctx.stroke();
+    if (kind) {
+      const dir = kind === 1 ? 1 : -1; // a minimum points down (screen y grows down)
+      const path = kind === 1 ? pits : peaks;
+      path.moveTo(sx[i]!, sy[i]! + dir * tri);
+      path.lineTo(sx[i]! - tri * 0.95, sy[i]! - dir * tri * 0.65);
+      path.lineTo(sx[i]! + tri * 0.95, sy[i]! - dir * tri * 0.65);
+      path.closePath();
+      continue;
+    }
+    const c = a.vertexClass[i]!;
+    const path = dots[c];
+    if (!path) continue;
+    const radius = c === 4 ? r * 0.75 : r;
+    path.moveTo(sx[i]! + radius, sy[i]!);
+    path.arc(sx[i]!, sy[i]!, radius, 0, Math.PI * 2);
+  }
+  ctx.lineWidth = 1;
+  ctx.strokeStyle = 'rgba(255, 255, 255, 0.9)';
+  dots.forEach((path, c) => {
+    ctx.fillStyle = VERTEX_CLASS_COLORS[c]!;
+    ctx.stroke(path);
+    ctx.fill(path);
+  });
+  ctx.lineWidth = 1.4;
+  ctx.strokeStyle = '#fff';
+  for (const [path, color] of [
+    [pits, EXTREMUM_COLORS.minimum],
+    [peaks, EXTREMUM_COLORS.maximum],
+  ] as const) {
+    ctx.stroke(path);
+    ctx.fillStyle = color;
+    ctx.fill(path);
   }
 
   for (const [i, width, color] of [

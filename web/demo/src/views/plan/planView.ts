@@ -1,4 +1,5 @@
 import type { Analysis } from '../../app/analysis.ts';
+import { describeVertex } from '../../app/describeVertex.ts';
 import { drawPlan } from './planRenderer.ts';
 import { fitTransform, panBy, toDataX, toDataY, toScreenX, toScreenY, zoomAt, type PlanTransform } from './planTransform.ts';
 
@@ -33,6 +34,18 @@ export function createPlanView(container: HTMLElement, handlers: PlanHandlers): 
   canvas.setAttribute('aria-label', 'Plan view: click to add a point, drag a point to move it, Shift+drag to change its height');
   container.appendChild(canvas);
   const ctx = canvas.getContext('2d')!;
+  const tip = document.createElement('div');
+  tip.className = 'plan-tip';
+  tip.hidden = true;
+  container.appendChild(tip);
+  /** The hovered point's class and height next to the cursor. */
+  const showTip = (i: number | null, at?: { x: number; y: number }) => {
+    tip.hidden = i === null || !analysis || !at;
+    if (tip.hidden) return;
+    tip.textContent = describeVertex(analysis!, i!);
+    const left = Math.min(at!.x + 14, container.clientWidth - tip.offsetWidth - 6);
+    tip.style.transform = `translate(${Math.max(4, left)}px, ${at!.y + 16}px)`;
+  };
 
   let analysis: Analysis | null = null;
   let transform: PlanTransform = { scale: 1, ox: 0, oy: 0 };
@@ -134,12 +147,14 @@ export function createPlanView(container: HTMLElement, handlers: PlanHandlers): 
     if (!gesture) {
       const h = pick(at.x, at.y);
       canvas.style.cursor = h !== null ? (e.shiftKey ? 'ns-resize' : 'grab') : 'crosshair';
+      showTip(h, at);
       if (h !== hovered) {
         hovered = h;
         redraw();
       }
       return;
     }
+    showTip(null);
     const far = Math.hypot(at.x - gesture.start.x, at.y - gesture.start.y) > CLICK_SLOP;
     if (gesture.kind === 'vertex') {
       if (!gesture.moved && !far) return;
@@ -175,6 +190,7 @@ export function createPlanView(container: HTMLElement, handlers: PlanHandlers): 
   canvas.addEventListener('pointerup', (e) => finish(e, false));
   canvas.addEventListener('pointercancel', (e) => finish(e, true));
   canvas.addEventListener('pointerleave', () => {
+    showTip(null);
     if (hovered !== null && !gesture) {
       hovered = null;
       redraw();
