@@ -38,15 +38,34 @@ describe('solution', () => {
 
 describe('order', () => {
   it('accepts order 1 (the default)', () => {
-    expect(terrain.solve('min-local-minima', { order: 1 }).optimal).toBe(true);
+    const s = terrain.solve('min-local-minima', { order: 1 });
+    expect(s).toMatchObject({ order: 1, optimal: true });
+    expect(s.choice.length).toBe(terrain.numQuads);
   });
-  it('refuses other orders with a clear InputError', () => {
-    expect(() => terrain.solve('min-local-minima', { order: 2 })).toThrow(InputError);
-    expect(() => terrain.solve('min-local-minima', { order: 2 })).toThrow(
-      'order 2 is not supported: hodt optimises first order Delaunay triangulations only (order: 1)',
+  it('order 2 searches more triangulations: at least as good, with its own triangles', () => {
+    using small = hodt.terrain(randomPoints(200, 3));
+    const first = small.solve('min-local-minima');
+    const second = small.solve('min-local-minima', { order: 2 });
+    expect(second.order).toBe(2);
+    expect(['exact', 'heuristic']).toContain(second.method);
+    expect(second.value).toBeLessThanOrEqual(first.value);
+    expect(second.choice.length).toBe(0);
+    expect(second.triangles.length).toBe(first.triangles.length); // any triangulation of the points
+    expect(second.delaunayValue).toBe(first.delaunayValue);
+  });
+  it('order 2 honours the abort signal', () => {
+    using small = hodt.terrain(randomPoints(200, 3));
+    expect(() => small.solve('min-local-minima', { order: 2, signal: AbortSignal.abort() })).toThrow(CancelledError);
+    expect(() => small.solve('min-local-minima', { order: 2, progress: () => false })).toThrow(CancelledError);
+  });
+  it('refuses bad orders, and methods other than auto above order 1, with a clear InputError', () => {
+    for (const order of [0, 65, 1.5, Number.NaN]) {
+      expect(() => terrain.solve('min-local-minima', { order })).toThrow(InputError);
+    }
+    expect(() => terrain.solve('min-local-minima', { order: 0 })).toThrow('order is 0, expected an integer from 1 to 64');
+    expect(() => terrain.solve('min-local-minima', { order: 2, method: 'brute-force' })).toThrow(
+      "method 'brute-force' applies to order 1 only; order 2 chooses its method itself (leave method out)",
     );
-    expect(() => terrain.solve('min-local-minima', { order: 0 })).toThrow('order is 0, expected a positive integer');
-    expect(() => terrain.solve('min-local-minima', { order: 1.5 })).toThrow(InputError);
   });
 });
 

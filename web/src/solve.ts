@@ -2,6 +2,9 @@ import { CancelledError, InputError, toHodtError } from './errors.js';
 import type { Method, ObjectiveId } from './objectives.js';
 import type { RawSolution, RawTerrain } from './wasm/hodt.mjs';
 
+/** The raw result, with the triangles when the core gives them (order >= 2). */
+export type RawResult = RawSolution & { order?: number; triangles?: Uint32Array };
+
 /**
  * Called now and then during long runs with the work `done` out of `total` in the
  * current phase (phases restart the count: it is not monotone over a whole run).
@@ -11,13 +14,17 @@ export type ProgressCallback = (done: number, total: number) => boolean | void;
 
 export interface SolveOptions {
   /** 'auto' (default): exact when the instance fits the memory cap, else the
-   * approximation; 'exact'; 'approx'; 'brute-force' (all 2^m choices, m <= 24). */
+   * approximation; 'exact'; 'approx'; 'brute-force' (all 2^m choices, m <= 24).
+   * Order 1 only: higher orders choose their method themselves. */
   method?: Method;
   /** Approximation schemes: a value within a factor (1 - epsilon) of the optimum,
    * in (0, 1). Default 0.25. */
   epsilon?: number;
-  /** Order k of the Delaunay triangulations to search: only 1 is supported (the
-   * default); any other value throws InputError. */
+  /** Order k of the Delaunay triangulations to search (every triangle's
+   * circumcircle holds at most k points), 1 to 64. Default 1: the 2^m first order
+   * triangulations. k >= 2: exact by enumeration when the k-OD triangulations are
+   * few enough, else the first order optimum improved by k-OD flips (`method`
+   * 'heuristic', with a bound when one is known). */
   order?: number;
   /** Min-max pair objectives: record every threshold the search tested in
    * `Solution.trace`. */
@@ -38,10 +45,10 @@ function aborted(signal: AbortSignal): CancelledError {
   return new CancelledError('aborted', { cause: signal.reason });
 }
 
-/** Throws InputError unless order is a positive integer. */
+/** Throws InputError unless order is an integer from 1 to 64. */
 export function checkOrder(order: unknown): asserts order is number {
-  if (typeof order !== 'number' || !Number.isInteger(order) || order < 1) {
-    throw new InputError(`order is ${String(order)}, expected a positive integer`);
+  if (typeof order !== 'number' || !Number.isInteger(order) || order < 1 || order > 64) {
+    throw new InputError(`order is ${String(order)}, expected an integer from 1 to 64`);
   }
 }
 
@@ -51,15 +58,15 @@ function checkOptions(objective: unknown, options: SolveOptions): void {
   if (typeof method !== 'string') throw new InputError(`method is ${String(method)}, expected brute-force, exact, approx or auto`);
   if (typeof epsilon !== 'number') throw new InputError(`epsilon is ${String(epsilon)}, expected a number in (0, 1)`);
   checkOrder(order);
-  if (order !== 1) {
-    throw new InputError(`order ${order} is not supported: hodt optimises first order Delaunay triangulations only (order: 1)`);
+  if (order > 1 && method !== 'auto') {
+    throw new InputError(`method '${method}' applies to order 1 only; order ${order} chooses its method itself (leave method out)`);
   }
 }
 
 /** Runs the raw solver with checked options, progress and cancellation. */
-export function solveRaw(raw: RawTerrain, objective: ObjectiveId, options: SolveOptions): RawSolution {
+export function solveRaw(raw: RawTerrain, objective: ObjectiveId, options: SolveOptions): RawResult {
   checkOptions(objective, options);
-  const { method = 'auto', epsilon = 0.25, trace = false, progress, signal } = options;
+  const { method = 'auto', epsilon = 0.25, order = 1, trace = false, progress, signal } = options;
   if (signal?.aborted) throw aborted(signal);
   // A JS exception must not unwind through the wasm frames: the callback catches
   // it, cancels the run, and it is rethrown here once the core has cleaned up.
@@ -78,7 +85,7 @@ export function solveRaw(raw: RawTerrain, objective: ObjectiveId, options: Solve
         }
       : undefined;
   try {
-    return raw.solve(objective, method, epsilon, trace, tick);
+    return order === 1 ? raw.solve(objective, method, epsilon, trace, tick) : raw.solveHigherOrder(objective, order, tick);
   } catch (e) {
     if (thrown) throw (thrown as { error: unknown }).error;
     const error = toHodtError(e);

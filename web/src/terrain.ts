@@ -54,7 +54,10 @@ export interface ThresholdStep {
 export interface Solution {
   objective: ObjectiveId;
   sense: 'min' | 'max';
-  /** The method that ran (auto reports what it chose). */
+  /** Order k of the triangulations searched (SolveOptions.order). */
+  order: number;
+  /** The method that ran: 'auto' reports what it chose; order >= 2 reports
+   * 'exact' (enumeration) or 'heuristic'. */
   method: string;
   /** Objective value of the returned triangulation. */
   value: number;
@@ -66,11 +69,14 @@ export interface Solution {
    * good as `value` and no better than `bound`); null when optimal or unknown. */
   bound: number | null;
   /** The optimised triangulation: point indices, three per triangle,
-   * counterclockwise (same as `terrain.triangulation(choice).triangles`). */
+   * counterclockwise (order 1: same as `terrain.triangulation(choice).triangles`,
+   * in the same triangle slots). */
   triangles: Uint32Array;
-  /** The choice that gives the triangulation (one byte per quad). */
+  /** Order 1: the choice that gives the triangulation (one byte per quad), for
+   * measures(), evaluate() and triangulation(). Order >= 2: empty, since the
+   * result need not be a choice of quad diagonals. */
   choice: Choice;
-  /** Number of quads not on their Delaunay diagonal. */
+  /** Edges of the result that are not Delaunay edges (order 1: flipped quads). */
   flipped: number;
   /** Time the core spent, in milliseconds. */
   timeMs: number;
@@ -81,7 +87,7 @@ export interface Solution {
   details: string;
   /** Min-max pair objectives: the two triangles (point indices) attaining the value. */
   critical: { first: Uint32Array; second: Uint32Array; value: number } | null;
-  /** The tested thresholds, in order (with `trace: true`), else empty. */
+  /** Order 1, `trace: true`: the tested thresholds, in order; else empty. */
   trace: ThresholdStep[];
 }
 
@@ -201,7 +207,8 @@ export class Terrain implements Disposable {
     return guard(() => toValues(this.#handle.delaunayValues()));
   }
   /**
-   * Optimises an objective over the first order triangulations. Synchronous: it
+   * Optimises an objective over the first order triangulations (or those of
+   * order k, with `order: k`). Synchronous: it
    * blocks the thread it runs on (run it in a Worker to keep a page responsive).
    * Throws InputError (bad options), LimitError (refused, with the reason) or
    * CancelledError (see SolveOptions.signal and .progress).
@@ -209,10 +216,11 @@ export class Terrain implements Disposable {
   solve(objective: ObjectiveId, options: SolveOptions = {}): Solution {
     const raw = this.#handle;
     const s = solveRaw(raw, objective, options);
-    const { triangles } = guard(() => raw.triangulation(s.choice));
+    const triangles = s.triangles ?? guard(() => raw.triangulation(s.choice).triangles);
     return {
       objective: s.objective as ObjectiveId,
       sense: s.sense,
+      order: s.order ?? 1,
       method: s.method,
       value: s.value,
       delaunayValue: s.delaunayValue,
