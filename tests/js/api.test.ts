@@ -57,10 +57,12 @@ describe('terrain handles', () => {
   });
 
   it('results are copies: they survive wasm memory growth', () => {
+    const before0 = hodt.memoryBytes;
     const t = hodt.terrain(randomPoints(30, 3));
     const before = t.delaunay().triangles;
     const copy = Array.from(before);
     const big = hodt.terrain(randomPoints(200_000, 4)); // grows the heap
+    expect(hodt.memoryBytes).toBeGreaterThan(before0);
     expect(before.length).toBe(copy.length);
     expect(Array.from(before)).toEqual(copy);
     big.dispose();

@@ -83,6 +83,12 @@ export class Hodt {
     });
   }
 
+  /** Bytes of WebAssembly memory reserved so far. Memory grows as terrains need it
+   * and never shrinks (dispose() makes it reusable, not smaller): this is the peak. */
+  get memoryBytes(): number {
+    return this.#module.heapSize();
+  }
+
   /** Runs the `hodt` command line in-process (the npm bin uses it); `read`
    * returns a file's text, or an Error whose message the CLI reports. */
   runCli(args: string[], read: (path: string) => string | Error): CliResult {
