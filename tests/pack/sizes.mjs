@@ -14,7 +14,7 @@ const dist = join(repo, 'dist');
 
 const gzip = (b) => gzipSync(b, { level: 9 }).length;
 const brotli = (b) => brotliCompressSync(b, { params: { [constants.BROTLI_PARAM_QUALITY]: 11 } }).length;
-const kB = (n) => `${(n / 1024).toFixed(1)} kB`;
+const kB = (n) => `${(n / 1024).toFixed(1)} KiB`;
 const rows = [];
 const row = (what, buffers) => {
   const all = Buffer.concat(buffers);
