@@ -104,4 +104,26 @@ describe('editing', () => {
     expect(errors).toEqual([]);
     await context.close();
   });
+
+  test('a click on a point in the 3D view selects it; Escape deselects', async () => {
+    const { page, context, errors } = await openPage(demo);
+    // The point nearest the camera (lowest on screen) is never hidden by the terrain.
+    const { index, at } = await page.evaluate(() => {
+      const h = window.__hodt!;
+      let best = { index: 0, at: h.threeToClient(0) };
+      for (let i = 1; i < h.points; i++) {
+        const at = h.threeToClient(i);
+        if (at.y > best.at.y) best = { index: i, at };
+      }
+      return best;
+    });
+    // Just above it: on the surface, not on its outline.
+    await page.mouse.click(at.x, at.y - 3);
+    await page.waitForFunction((i) => window.__hodt!.selected === i, index);
+    expect(await page.locator('#selection').textContent()).toContain(`Point ${index}:`);
+    await page.keyboard.press('Escape');
+    await page.waitForFunction(() => window.__hodt!.selected === null);
+    expect(errors).toEqual([]);
+    await context.close();
+  });
 });

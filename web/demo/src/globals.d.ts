@@ -24,6 +24,8 @@ export interface HodtTestHooks {
   pointsCsv(): string;
   /** Page (client) coordinates of a data point in the plan view. */
   planToClient(x: number, y: number): { x: number; y: number };
+  /** Page (client) coordinates of point i in the 3D view. */
+  threeToClient(i: number): { x: number; y: number };
   point(i: number): { x: number; y: number; z: number };
   link(): string | null;
 }

@@ -116,7 +116,7 @@ export function startApp(hodt: Hodt): void {
       quads: a.quads.length / 4,
       flipped: countFlipped(a.choice),
     });
-    if (a.values && a.delaunayValues) renderMeasures(objectives, a.values, a.delaunayValues, settings.objective);
+    if (a.values && a.delaunayValues) renderMeasures(objectives, a.values, a.delaunayValues, settings.objective, (id) => objectivePanel.choose(id));
     showSelection();
     hooks();
   }
@@ -153,7 +153,7 @@ export function startApp(hodt: Hodt): void {
     solving = true;
     result.running(objective, () => solver.cancel());
     hooks();
-    const fallback = keepDisplay ? 0 : window.setTimeout(() => token === solveToken && showChoice(null), reframePending ? 0 : SOLUTION_GRACE_MS);
+    const fallback = keepDisplay ? 0 : window.setTimeout(() => token === solveToken && !preview && showChoice(null), reframePending ? 0 : SOLUTION_GRACE_MS);
     const progress = (done: number, total: number) => token === solveToken && result.progress(done, total);
     void solver.solve({ points, ...settings }, progress).then((outcome) => {
       if (token !== solveToken) return; // superseded by a newer edit
@@ -163,12 +163,14 @@ export function startApp(hodt: Hodt): void {
       if (outcome.status === 'solved' && outcome.solution.choice.length !== current.structure.quads.length / 4) {
         outcome = { status: 'failed', name: 'InternalError', message: 'the worker found a different set of quads' };
       }
+      // While a point is dragged the preview stays; dropping it re-solves.
+      const draw = (choice: Uint8Array | null, critical: Solution['critical'] = null) => preview || showChoice(choice, critical);
       if (outcome.status === 'solved') {
         solution = outcome.solution;
-        showChoice(solution.choice, solution.critical);
+        draw(solution.choice, solution.critical);
         result.solved(objective, solution, current.structure.quads.length / 4);
       } else {
-        showChoice(null);
+        draw(null);
         if (outcome.status === 'failed') result.failed(objective, outcome.message);
         else result.cancelled(objective);
       }
@@ -201,6 +203,7 @@ export function startApp(hodt: Hodt): void {
       return false;
     }
     notice.hide();
+    toolbar.hideLink();
     disposePreview();
     current.terrain.dispose();
     current = built;
@@ -324,6 +327,7 @@ export function startApp(hodt: Hodt): void {
   objectivePanel.set(settings);
   objectivePanel.onChange((s) => {
     settings = s;
+    toolbar.hideLink();
     urlSync.changed();
     solve(true);
   });
@@ -397,6 +401,11 @@ export function startApp(hodt: Hodt): void {
         const p = plan.toScreen(x, y);
         const r = plan.canvas.getBoundingClientRect();
         return { x: r.left + p.x, y: r.top + p.y };
+      },
+      threeToClient: (i) => {
+        const p = scene.worldPoint(i).project(viewer.camera);
+        const r = viewer.renderer.domElement.getBoundingClientRect();
+        return { x: r.left + ((p.x + 1) / 2) * r.width, y: r.top + ((1 - p.y) / 2) * r.height };
       },
       point: (i) => pointAt(points, i),
       link: () => urlSync.link(),

@@ -14,12 +14,14 @@ export interface ObjectivePanel {
   set(s: SolveSettings): void;
   get(): SolveSettings;
   onChange(handler: (s: SolveSettings) => void): void;
+  /** Picks an objective as if chosen in the list. */
+  choose(id: ObjectiveId): void;
 }
 
 const METHOD_LABELS: Record<Method, string> = {
   auto: 'auto',
   exact: 'exact',
-  approx: 'approximation',
+  approx: 'approx',
   'brute-force': 'brute force',
 };
 const METHOD_TITLES: Record<Method, string> = {
@@ -42,6 +44,10 @@ export function createObjectivePanel(objectives: readonly ObjectiveInfo[]): Obje
   );
   method.replaceChildren(...METHODS.map((m) => h('option', { value: m, title: METHOD_TITLES[m] }, METHOD_LABELS[m])));
 
+  /** Epsilon only matters to the approximation (which auto may fall back to). */
+  const enableEpsilon = () => {
+    epsilon.disabled = method.value !== 'approx' && method.value !== 'auto';
+  };
   const get = (): SolveSettings => ({
     objective: select.value as ObjectiveId,
     method: method.value as Method,
@@ -61,6 +67,7 @@ export function createObjectivePanel(objectives: readonly ObjectiveInfo[]): Obje
   const listeners: ((s: SolveSettings) => void)[] = [];
   const changed = () => {
     showHelp();
+    enableEpsilon();
     const s = get();
     epsilon.value = String(s.epsilon);
     for (const l of listeners) l(s);
@@ -75,10 +82,16 @@ export function createObjectivePanel(objectives: readonly ObjectiveInfo[]): Obje
       method.value = s.method;
       epsilon.value = String(s.epsilon);
       showHelp();
+      enableEpsilon();
     },
     get,
     onChange(handler) {
       listeners.push(handler);
+    },
+    choose(id) {
+      if (select.value === id) return;
+      select.value = id;
+      changed();
     },
   };
 }

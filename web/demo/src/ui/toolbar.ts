@@ -19,6 +19,8 @@ export interface Toolbar {
   onCopyLink(handler: () => void): void;
   /** Shows the link (selected, for manual copying) with a status line. */
   showLink(url: string | null, status: string): void;
+  /** Hides the link (it no longer matches the state). */
+  hideLink(): void;
 }
 
 export function createToolbar(): Toolbar {
@@ -28,6 +30,7 @@ export function createToolbar(): Toolbar {
   const redo = byId<HTMLButtonElement>('redo');
   const linkBox = byId('link-box');
   const link = byId<HTMLInputElement>('link');
+  byId('link-close').addEventListener('click', () => (linkBox.hidden = true));
   const fmt = (n: number) => n.toLocaleString('en');
 
   return {
@@ -59,6 +62,9 @@ export function createToolbar(): Toolbar {
       link.hidden = url === null;
       link.value = url ?? '';
       if (url) link.select();
+    },
+    hideLink() {
+      linkBox.hidden = true;
     },
   };
 }

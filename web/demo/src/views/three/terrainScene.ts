@@ -15,6 +15,8 @@ export interface TerrainScene {
   select(index: number | null): void;
   /** The points in world space, for framing the camera. */
   worldPoints(): Vector3[];
+  /** World position of point i. */
+  worldPoint(i: number): Vector3;
   /** The vertex nearest the surface point under ndc (normalised device
    * coordinates), or null if the ray misses the terrain. */
   pick(ndc: Vector2, camera: Camera): number | null;
@@ -58,6 +60,9 @@ export function createTerrainScene(): TerrainScene {
       const out: Vector3[] = [];
       for (let i = 0; i < positions.length; i += 3) out.push(new Vector3().fromArray(positions, i));
       return out;
+    },
+    worldPoint(i) {
+      return new Vector3().fromArray(positions, 3 * i).applyMatrix4(object.matrixWorld);
     },
     pick(ndc, camera) {
       if (!current) return null;
