@@ -40,18 +40,8 @@ Choice shorter_diagonals(const FirstOrder& fo) {
 // of its two triangles: independent per quad, so each quad takes the diagonal
 // whose larger triangle is smaller (ties keep Delaunay).
 Choice smaller_largest_triangles(const FirstOrder& fo) {
-  const Mesh& m = fo.base;
   Choice c(fo.num_quads(), 0);
-  for (uint32_t q = 0; q < fo.num_quads(); ++q) {
-    double worst[2];
-    for (int x = 0; x < 2; ++x) {
-      uint32_t t[6];
-      fo.triangles_of(q, x, t);
-      worst[x] = std::max(triangle_area(m.point(t[0]), m.point(t[1]), m.point(t[2])),
-                          triangle_area(m.point(t[3]), m.point(t[4]), m.point(t[5])));
-    }
-    c[q] = worst[1] < worst[0];
-  }
+  for (uint32_t q = 0; q < fo.num_quads(); ++q) c[q] = largest_triangle(fo, q, true) < largest_triangle(fo, q, false);
   return c;
 }
 

@@ -14,8 +14,7 @@ double z(const Mesh& m, uint32_t v) { return m.point(v)[2]; }
 // Per vertex: +1 potential minimum, -1 potential maximum, 0 neither (or on the hull).
 std::vector<int8_t> potential_extrema(const FirstOrder& fo) {
   const Mesh& m = fo.base;
-  std::vector<uint8_t> diagonal(m.triangles.size(), 0);
-  for (const Quad& q : fo.quads) diagonal[q.edge] = diagonal[static_cast<uint32_t>(m.halfedges[q.edge])] = 1;
+  const std::vector<uint8_t> diagonal = fo.diagonal_mask();
   const uint32_t n = m.num_vertices();
   std::vector<uint8_t> higher(n, 1), lower(n, 1);  // all fixed neighbours strictly higher / lower
   for (uint32_t e = 0; e < m.triangles.size(); ++e) {

@@ -18,8 +18,6 @@ void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, Valu
   const VertexIncidence vi = vertex_incidence(fo);
   std::vector<uint8_t> on_hull(m.num_vertices(), 0);
   for (uint32_t v : m.hull) on_hull[v] = 1;
-  std::vector<uint8_t> diagonal(m.triangles.size(), 0);
-  for (const Quad& q : fo.quads) diagonal[q.edge] = diagonal[static_cast<uint32_t>(m.halfedges[q.edge])] = 1;
   // Fixed neighbours: the ends of non-diagonal edges (each seen from both ends, or
   // once on the hull: then the apex side gives the other).
   const Stars st = build_stars(m);
@@ -77,10 +75,9 @@ void convex_edge_terms(const FirstOrder& fo, FactorGraph& g) {
       if (w != u && w != v) return w;
     return t[0];
   };
-  std::vector<uint8_t> diagonal(m.triangles.size(), 0);
+  const std::vector<uint8_t> diagonal = fo.diagonal_mask();
   for (uint32_t q = 0; q < fo.num_quads(); ++q) {
     const Quad& k = fo.quads[q];
-    diagonal[k.edge] = diagonal[static_cast<uint32_t>(m.halfedges[k.edge])] = 1;
     add_factor(g, {q}, {convex({k.a, k.b, k.c}, k.d), convex({k.d, k.c, k.a}, k.b)});
   }
   for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
@@ -153,10 +150,9 @@ FactorGraph factor_model(const FirstOrder& fo, Objective o) {
     case Objective::MinTotalEdgeLength: {
       // Fixed edges as one constant, each quad its diagonal's length.
       std::vector<double> fixed;
-      std::vector<uint8_t> diagonal(m.triangles.size(), 0);
+      const std::vector<uint8_t> diagonal = fo.diagonal_mask();
       for (uint32_t q = 0; q < fo.num_quads(); ++q) {
         const Quad& k = fo.quads[q];
-        diagonal[k.edge] = diagonal[static_cast<uint32_t>(m.halfedges[k.edge])] = 1;
         add_factor(g, {q}, {edge_length(m.point(k.a), m.point(k.b)), edge_length(m.point(k.c), m.point(k.d))});
       }
       for (uint32_t e = 0; e < m.halfedges.size(); ++e)
@@ -171,16 +167,8 @@ FactorGraph factor_model(const FirstOrder& fo, Objective o) {
         if (fo.quad_of_triangle[t] < 0)
           g.constant = std::max(g.constant, triangle_area(m.point(m.triangles[3 * t]), m.point(m.triangles[3 * t + 1]),
                                                           m.point(m.triangles[3 * t + 2])));
-      for (uint32_t q = 0; q < fo.num_quads(); ++q) {
-        double v[2];
-        for (int x = 0; x < 2; ++x) {
-          uint32_t t[6];
-          fo.triangles_of(q, x, t);
-          v[x] = std::max(triangle_area(m.point(t[0]), m.point(t[1]), m.point(t[2])),
-                          triangle_area(m.point(t[3]), m.point(t[4]), m.point(t[5])));
-        }
-        add_factor(g, {q}, {v[0], v[1]});
-      }
+      for (uint32_t q = 0; q < fo.num_quads(); ++q)
+        add_factor(g, {q}, {largest_triangle(fo, q, false), largest_triangle(fo, q, true)});
       break;
     }
     case Objective::MinmaxEdgeAreaRatio: g.combine = Combine::Max; pair_terms(edge_pair_model(fo, ratio), g); break;

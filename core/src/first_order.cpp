@@ -17,6 +17,12 @@ void FirstOrder::triangles_of(uint32_t q, bool flipped, uint32_t out[6]) const {
   std::copy_n(flipped ? f : t, 6, out);
 }
 
+std::vector<uint8_t> FirstOrder::diagonal_mask() const {
+  std::vector<uint8_t> mask(base.triangles.size(), 0);
+  for (const Quad& q : quads) mask[q.edge] = mask[static_cast<uint32_t>(base.halfedges[q.edge])] = 1;
+  return mask;
+}
+
 namespace {
 
 bool strictly_convex(const Mesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {

@@ -20,8 +20,7 @@ DegreeStructure degree_structure(const FirstOrder& fo) {
   DegreeStructure d;
   d.incidence = vertex_incidence(fo);
   d.fixed.assign(m.num_vertices(), 0);
-  std::vector<uint8_t> diagonal(m.triangles.size(), 0);
-  for (const Quad& q : fo.quads) diagonal[q.edge] = diagonal[static_cast<uint32_t>(m.halfedges[q.edge])] = 1;
+  const std::vector<uint8_t> diagonal = fo.diagonal_mask();
   for (uint32_t e = 0; e < m.triangles.size(); ++e) {
     if (diagonal[e]) continue;
     if (m.halfedges[e] < 0 || m.halfedges[e] > static_cast<int32_t>(e)) {

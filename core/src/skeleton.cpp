@@ -1,5 +1,9 @@
 #include "hodt/skeleton.hpp"
 
+#include <algorithm>
+
+#include "hodt/measures.hpp"
+
 namespace hodt {
 
 namespace {
@@ -39,6 +43,14 @@ uint32_t quad_triangles_at(const FirstOrder& fo, uint32_t q, uint32_t v, bool fl
     if (contains(t, v)) out[n++] = t;
   }
   return n;
+}
+
+double largest_triangle(const FirstOrder& fo, uint32_t q, bool flipped) {
+  const Mesh& m = fo.base;
+  uint32_t t[6];
+  fo.triangles_of(q, flipped, t);
+  return std::max(triangle_area(m.point(t[0]), m.point(t[1]), m.point(t[2])),
+                  triangle_area(m.point(t[3]), m.point(t[4]), m.point(t[5])));
 }
 
 VertexIncidence vertex_incidence(const FirstOrder& fo) {

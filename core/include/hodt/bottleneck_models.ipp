@@ -12,10 +12,8 @@ template <class Measure>
 BottleneckModel edge_pair_model(const FirstOrder& fo, Measure measure) {
   const Mesh& m = fo.base;
   BottleneckBuilder b(fo.num_quads());
-  std::vector<uint8_t> diagonal(m.triangles.size(), 0);
+  const std::vector<uint8_t> diagonal = fo.diagonal_mask();
   for (uint32_t q = 0; q < fo.num_quads(); ++q) {
-    const uint32_t e = fo.quads[q].edge;
-    diagonal[e] = diagonal[static_cast<uint32_t>(m.halfedges[e])] = 1;
     uint32_t t[2][6];
     fo.triangles_of(q, false, t[0]);
     fo.triangles_of(q, true, t[1]);

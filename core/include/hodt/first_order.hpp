@@ -26,6 +26,8 @@ struct FirstOrder {
   uint32_t num_quads() const { return static_cast<uint32_t>(quads.size()); }
   // Vertices of the two triangles of quad q for one choice, counterclockwise.
   void triangles_of(uint32_t q, bool flipped, uint32_t out[6]) const;
+  // Per base halfedge: 1 if it is (half of) a quad's Delaunay diagonal.
+  std::vector<uint8_t> diagonal_mask() const;
 };
 
 // Flippable quads of a Delaunay mesh: interior edge ab with triangles abc, abd is

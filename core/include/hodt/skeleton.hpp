@@ -33,6 +33,9 @@ struct VertexIncidence {
 };
 VertexIncidence vertex_incidence(const FirstOrder& fo);
 
+// The larger plane area of quad q's two triangles for one choice.
+double largest_triangle(const FirstOrder& fo, uint32_t q, bool flipped);
+
 inline Tri base_triangle(const Mesh& m, uint32_t t) {
   return {m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]};
 }
