@@ -42,6 +42,7 @@ function vitest(title, config, report) {
 }
 vitest('vitest (library and CLI, real wasm in Node)', 'vitest.config.ts', 'vitest.json');
 vitest('browser (Playwright + Chromium)', 'tests/e2e/vitest.config.ts', 'e2e.json');
+vitest('npm package (pack, offline install, Node, CLI, types, Vite + Chromium under CSP)', 'tests/pack/vitest.config.ts', 'pack.json');
 
 console.log(`\ntests: ${passed} passed, ${failed} failed`);
 process.exitCode = failed ? 1 : 0;
