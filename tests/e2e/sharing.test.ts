@@ -41,6 +41,16 @@ describe('sharing', () => {
     expect(await other.page.locator('.stage').getAttribute('data-view')).toBe('plan');
     expect(await other.page.locator('#terrain-kind').inputValue()).toBe('custom');
     await screenshot(other.page, 'demo-link.png');
+
+    // Pasting another link into the same tab loads it (hashchange).
+    const solves = (await hooks(other.page)).solves;
+    await other.page.selectOption('#terrain-kind', 'uniform');
+    await settled(other.page, solves);
+    const uniform = await hooks(other.page);
+    const hash = new URL((await other.page.evaluate(() => window.__hodt!.link()))!).hash;
+    await page.evaluate((h) => (location.hash = h), hash);
+    await page.waitForFunction((csv) => window.__hodt!.pointsCsv() === csv && !window.__hodt!.solving, uniform.pointsCsv);
+    expect((await hooks(page)).choice).toBe(uniform.choice);
     expect(errors).toEqual([]);
     expect(other.errors).toEqual([]);
     await other.context.close();
