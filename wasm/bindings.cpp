@@ -99,13 +99,7 @@ class TerrainHandle {
   // Per-element measures of a choice's triangulation; vertex arrays by kept index.
   val measures(val choice) const {
     return guarded([&] {
-      const Measures ms = measure(triangulate(t_.structure(), choice_of(choice)));
-      val out = val::object();
-      out.set("edgeShape", copy_out("Uint8Array", ms.edge_shape));
-      out.set("vertexClass", copy_out("Uint8Array", ms.vertex_class));
-      out.set("extremum", copy_out("Uint8Array", ms.extremum));
-      out.set("degree", copy_out("Uint32Array", ms.degree));
-      return out;
+      return measures_value(measure(triangulate(t_.structure(), choice_of(choice))));
     });
   }
   val evaluate(val choice) const {
@@ -114,10 +108,32 @@ class TerrainHandle {
       return copy_out("Float64Array", std::vector<double>(v.begin(), v.end()));
     });
   }
+  // Values and measures of any triangulation of the points (input indices), such as
+  // a higher order result that is not a choice of diagonals.
+  val evaluateTriangles(val triangles) const {
+    return guarded([&] {
+      const auto v = evaluate_all(t_.mesh_of_input_triangles(emscripten::convertJSArrayToNumberVector<uint32_t>(triangles)));
+      return copy_out("Float64Array", std::vector<double>(v.begin(), v.end()));
+    });
+  }
+  val measuresOfTriangles(val triangles) const {
+    return guarded([&] {
+      return measures_value(measure(t_.mesh_of_input_triangles(emscripten::convertJSArrayToNumberVector<uint32_t>(triangles))));
+    });
+  }
   val delaunayValues() const {
     const auto& v = t_.delaunay_values();
     return copy_out("Float64Array", std::vector<double>(v.begin(), v.end()));
   }
+  static val measures_value(const Measures& ms) {
+    val out = val::object();
+    out.set("edgeShape", copy_out("Uint8Array", ms.edge_shape));
+    out.set("vertexClass", copy_out("Uint8Array", ms.vertex_class));
+    out.set("extremum", copy_out("Uint8Array", ms.extremum));
+    out.set("degree", copy_out("Uint32Array", ms.degree));
+    return out;
+  }
+
   // The JS object of a solution (all arrays copied out of the heap).
   val solution_value(const Solution& s) const {
     const Objective o = s.objective;
@@ -308,6 +324,8 @@ EMSCRIPTEN_BINDINGS(hodt) {
       .function("measures", &TerrainHandle::measures)
       .function("evaluate", &TerrainHandle::evaluate)
       .function("delaunayValues", &TerrainHandle::delaunayValues)
+      .function("evaluateTriangles", &TerrainHandle::evaluateTriangles)
+      .function("measuresOfTriangles", &TerrainHandle::measuresOfTriangles)
       .function("solve", &TerrainHandle::solve)
       .function("enumerateAll", &TerrainHandle::enumerateAll)
       .function("statsJson", &TerrainHandle::statsJson)

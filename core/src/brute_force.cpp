@@ -1,6 +1,7 @@
 #include "hodt/brute_force.hpp"
 
 #include <chrono>
+#include <cmath>
 
 #include "hodt/error.hpp"
 
@@ -32,7 +33,7 @@ void gray_walk(const FirstOrder& fo, Visit visit) {
 
 }  // namespace
 
-Solution brute_force(const FirstOrder& fo, Objective objective) {
+Solution brute_force(const FirstOrder& fo, Objective objective, const Progress& progress) {
   check_size(fo);
   const auto t0 = std::chrono::steady_clock::now();
   const Sense sense = info(objective).sense;
@@ -41,7 +42,11 @@ Solution brute_force(const FirstOrder& fo, Objective objective) {
   s.method = "brute-force";
   bool first = true;
   uint32_t best_flips = 0;
+  const double total = std::ldexp(1.0, static_cast<int>(fo.num_quads()));
+  double done = 0;
   gray_walk(fo, [&](const Mesh& mesh, const Choice& choice) {
+    if (progress && (static_cast<uint64_t>(done) & 1023) == 0 && !progress(done, total)) throw Cancelled();
+    ++done;
     const double v = evaluate(objective, mesh);
     const uint32_t flips = count_flipped(choice);
     if (first) s.delaunay_value = v;

@@ -16,7 +16,7 @@ namespace hodt {
 
 namespace {
 
-constexpr uint32_t kMaxEnumeratedPoints = 40;
+constexpr uint32_t kMaxEnumeratedPoints = 30;
 
 uint64_t key(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
 
@@ -52,6 +52,7 @@ struct Enumerator {
   const std::unordered_map<uint64_t, std::vector<uint32_t>>& cand;
   uint64_t budget;
   const std::function<void(const std::vector<Tri>&)>& visit;
+  const Progress& progress;
   std::unordered_set<uint64_t> open;  // directed edges with the uncovered side on their left
   std::vector<std::pair<uint32_t, uint32_t>> edges;
   std::vector<Tri> tris;
@@ -68,6 +69,8 @@ struct Enumerator {
       complete = false;
       return;
     }
+    if (progress && (nodes & 4095) == 0 && !progress(static_cast<double>(nodes), static_cast<double>(budget)))
+      throw Cancelled();
     if (open.empty()) {
       visit(tris);
       return;
@@ -162,9 +165,9 @@ Mesh mesh_of(const std::vector<double>& coords, const std::vector<Tri>& triangle
 }
 
 bool enumerate_k_order(const Mesh& dt, uint32_t k, uint64_t max_nodes,
-                       const std::function<void(const std::vector<Tri>&)>& visit) {
+                       const std::function<void(const std::vector<Tri>&)>& visit, const Progress& progress) {
   const auto cand = candidates(dt, k);
-  Enumerator en{dt, cand, max_nodes, visit, {}, {}, {}};
+  Enumerator en{dt, cand, max_nodes, visit, progress, {}, {}, {}};
   for (size_t i = 0; i < dt.hull.size(); ++i) en.open.insert(key(dt.hull[i], dt.hull[(i + 1) % dt.hull.size()]));
   en.run();
   return en.complete;
@@ -185,7 +188,7 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
     ++r.enumerated;
     const double v = evaluate(o, mesh_of(dt.coords, tris));
     if (!have || better(sense, v, r.value)) r.value = v, best = tris, have = true;
-  });
+  }, options.progress);
   if (complete && have) {
     r.triangulation = mesh_of(dt.coords, best);
     r.optimal = true;

@@ -46,7 +46,7 @@ Solution solve_factor_graph(const FirstOrder& fo, Objective objective, const Sol
 }
 
 Solution dispatch(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
-  if (options.method == Method::BruteForce) return brute_force(fo, objective);
+  if (options.method == Method::BruteForce) return brute_force(fo, objective, options.progress);
   // Polynomial objectives are always solved exactly (approx would only be worse).
   if (has_polynomial_exact(objective)) return solve_polynomial(fo, objective, ExactOptions{options.trace});
   switch (options.method) {

@@ -41,6 +41,27 @@ std::vector<uint32_t> Terrain::to_input(std::vector<uint32_t> indices) const {
   return indices;
 }
 
+Mesh Terrain::mesh_of_input_triangles(const std::vector<uint32_t>& triangles) const {
+  std::vector<int64_t> internal(num_input_, -1);
+  for (uint32_t v = 0; v < fo_.base.num_vertices(); ++v) internal[to_input(v)] = v;
+  if (triangles.size() % 3 != 0) throw InputError("triangles: length is not a multiple of 3");
+  Mesh m;
+  m.coords = fo_.base.coords;
+  m.triangles.reserve(triangles.size());
+  for (size_t k = 0; k < triangles.size(); ++k) {
+    const uint32_t v = triangles[k];
+    if (v >= num_input_ || internal[v] < 0)
+      throw InputError("triangle " + std::to_string(k / 3) + ": point " + std::to_string(v) + " is not a vertex of this terrain");
+    m.triangles.push_back(static_cast<uint32_t>(internal[v]));
+  }
+  std::string error = link_halfedges(m);
+  if (error.empty()) error = validate(m);
+  if (error.empty() && (m.num_triangles() != fo_.base.num_triangles() || m.hull != fo_.base.hull))
+    error = "they do not triangulate the convex hull of the points";
+  if (!error.empty()) throw InputError("triangles: " + error);
+  return m;
+}
+
 void Terrain::check_choice(const Choice& choice) const {
   if (choice.size() != fo_.num_quads())
     throw InputError("choice has " + std::to_string(choice.size()) + " entries, expected one per quad (" +

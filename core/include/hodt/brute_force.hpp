@@ -4,6 +4,7 @@
 #include <functional>
 #include <vector>
 
+#include "hodt/factor_graph.hpp"
 #include "hodt/solution.hpp"
 
 namespace hodt {
@@ -13,7 +14,8 @@ constexpr uint32_t kBruteForceMaxQuads = 24;
 // Optimum over all 2^m choices (Gray code order: one flip per step). Among optimal
 // choices it returns one with the fewest flips, the first in Gray code order.
 // Throws LimitError if m > kBruteForceMaxQuads.
-Solution brute_force(const FirstOrder& fo, Objective objective);
+// progress (if given) is called every 1024 triangulations; returning false cancels.
+Solution brute_force(const FirstOrder& fo, Objective objective, const Progress& progress = {});
 
 // The value of every objective for every choice (index = choice bits, quad 0 the
 // lowest bit): the teaching view's "all 2^m triangulations".

@@ -33,11 +33,12 @@ struct KOrderResult {
 
 // Calls visit for every k-OD triangulation of the points of `delaunay` (as a list
 // of triangles); returns false if it stopped because `max_nodes` was reached.
+// progress (if given) is called every few thousand nodes; returning false cancels.
 bool enumerate_k_order(const Mesh& delaunay, uint32_t k, uint64_t max_nodes,
-                       const std::function<void(const std::vector<Tri>&)>& visit);
+                       const std::function<void(const std::vector<Tri>&)>& visit, const Progress& progress = {});
 
 KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options,
-                           uint64_t max_nodes = 2'000'000);
+                           uint64_t max_nodes = 300'000);
 
 // The same as a Solution (for the CLI and the bindings).
 Solution k_order_solution(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options);

@@ -30,6 +30,10 @@ class Terrain {
   std::vector<uint32_t> to_input(std::vector<uint32_t> indices) const;
   const std::vector<uint32_t>& input_index() const { return input_index_; }
 
+  // A triangulation of the terrain's points given as triangles in input indices
+  // (for example a higher order result), in the same triangle order, validated.
+  Mesh mesh_of_input_triangles(const std::vector<uint32_t>& triangles) const;
+
   // Checks a choice from outside (length m, bytes 0/1); throws InputError.
   void check_choice(const Choice& choice) const;
   const std::array<double, kNumObjectives>& delaunay_values() const;

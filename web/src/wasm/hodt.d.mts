@@ -41,6 +41,8 @@ export interface RawTerrain {
   measures(choice: Uint8Array | null): RawMeasures;
   evaluate(choice: Uint8Array | null): Float64Array;
   delaunayValues(): Float64Array;
+  evaluateTriangles(triangles: Uint32Array): Float64Array;
+  measuresOfTriangles(triangles: Uint32Array): RawMeasures;
   solve(
     objective: string,
     method: string,
