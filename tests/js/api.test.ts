@@ -143,3 +143,19 @@ describe('error names survive minification', () => {
     expect(new InputError('x')).toBeInstanceOf(HodtError);
   });
 });
+
+describe('any triangulation given by triangles', () => {
+  it('evaluates and measures a higher order result, and rejects a non-triangulation', () => {
+    const t = hodt.terrain(randomPoints(40, 11));
+    const best = t.solve('min-local-minima', { order: 2 });
+    const values = t.evaluateTriangles(best.triangles);
+    expect(values['min-local-minima']).toBe(best.value);
+    const m = t.measuresOfTriangles(best.triangles);
+    expect(m.degree.length).toBe(40);
+    expect(m.edgeShape.length).toBe(best.triangles.length);
+    // The Delaunay triangles give the Delaunay values.
+    expect(t.evaluateTriangles(t.delaunay().triangles)).toEqual(t.delaunayValues());
+    expect(() => t.evaluateTriangles(best.triangles.subarray(3))).toThrow(/triangles: /);
+    t.dispose();
+  });
+});

@@ -4,7 +4,7 @@
 import { guard, InputError } from './errors.js';
 import { type ObjectiveId, type ObjectiveValues, toValues } from './objectives.js';
 import { checkOrder, type SolveOptions, solveRaw } from './solve.js';
-import type { RawTerrain } from './wasm/hodt.mjs';
+import type { RawMeasures, RawTerrain } from './wasm/hodt.mjs';
 
 /** One byte per flippable quad: 0 keeps the Delaunay diagonal, 1 flips it. */
 export type Choice = Uint8Array;
@@ -185,18 +185,28 @@ export class Terrain implements Disposable {
   }
   /** Edge shapes, vertex classes, extrema and degrees of a choice's triangulation. */
   measures(choice?: Choice): Measures {
-    return guard(() => {
-      const raw = this.#handle;
-      const m = raw.measures(choice ?? null);
-      const index = raw.inputIndex();
-      const n = raw.numInputPoints();
-      return {
-        edgeShape: m.edgeShape,
-        vertexClass: scatter(new Uint8Array(n).fill(VertexClass.Dropped), m.vertexClass, index),
-        extremum: scatter(new Uint8Array(n), m.extremum, index),
-        degree: scatter(new Uint32Array(n), m.degree, index),
-      };
-    });
+    return guard(() => this.#byPoint(this.#handle.measures(choice ?? null)));
+  }
+  /** Measures of any triangulation of these points given as triangles (point
+   * indices), such as a higher order result; edgeShape follows their halfedges. */
+  measuresOfTriangles(triangles: ArrayLike<number>): Measures {
+    return guard(() => this.#byPoint(this.#handle.measuresOfTriangles(Uint32Array.from(triangles))));
+  }
+  /** Values of all 13 objectives for any triangulation of these points. */
+  evaluateTriangles(triangles: ArrayLike<number>): ObjectiveValues {
+    return guard(() => toValues(this.#handle.evaluateTriangles(Uint32Array.from(triangles))));
+  }
+  // Vertex arrays of the core (internal vertex order) by point index.
+  #byPoint(m: RawMeasures): Measures {
+    const raw = this.#handle;
+    const index = raw.inputIndex();
+    const n = raw.numInputPoints();
+    return {
+      edgeShape: m.edgeShape,
+      vertexClass: scatter(new Uint8Array(n).fill(VertexClass.Dropped), m.vertexClass, index),
+      extremum: scatter(new Uint8Array(n), m.extremum, index),
+      degree: scatter(new Uint32Array(n), m.degree, index),
+    };
   }
   /** Values of all 13 objectives for a choice's triangulation (default: Delaunay). */
   evaluate(choice?: Choice): ObjectiveValues {
