@@ -28,11 +28,16 @@ TerrainPoints validate_points(std::vector<double> xyz, Dedupe dedupe, const Poin
         throw InputError(labels.describe(i) + ": " + axis[k] + " is " +
                          format_number(xyz[3 * i + k]) + ", expected a finite number");
 
-  // Sort by (x, y) to find duplicates; stable so the first of equals comes first.
+  // Sort by (x, y), ties by index, to find duplicates: equal points become
+  // neighbours, the earliest input index first. (Comparisons of doubles are exact.)
   std::vector<uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
-  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-    return compare_xy(&xyz[3 * a], &xyz[3 * b]) < 0;
+  const double* c = xyz.data();
+  std::sort(order.begin(), order.end(), [c](uint32_t a, uint32_t b) {
+    const double ax = c[3 * size_t(a)], bx = c[3 * size_t(b)];
+    if (ax != bx) return ax < bx;
+    const double ay = c[3 * size_t(a) + 1], by = c[3 * size_t(b) + 1];
+    return ay != by ? ay < by : a < b;
   });
   std::vector<char> keep(n, 1);
   for (size_t k = 1; k < n; ++k) {
