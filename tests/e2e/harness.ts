@@ -22,7 +22,8 @@ export async function startDemo(): Promise<Demo> {
     configFile: `${root}web/demo/vite.config.ts`,
     logLevel: 'warn',
     clearScreen: false,
-    server: { host: '127.0.0.1', port: 0, strictPort: false, hmr: false },
+    // No file watching: a concurrent build rewriting the wasm must not reload the page.
+    server: { host: '127.0.0.1', port: 0, strictPort: false, hmr: false, watch: null },
   });
   await server.listen();
   const { port } = server.httpServer!.address() as AddressInfo;

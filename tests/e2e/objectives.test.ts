@@ -1,21 +1,29 @@
 // Objectives: switching changes the highlighted flips, and the page's values
 // equal the CLI's on the points the page exports (exact doubles both ways).
-import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
+import { loadHodt, type Hodt } from 'hodt';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
-import { hooks, openPage, root, screenshot, settled, startDemo, type Demo } from './harness.ts';
+import { hooks, openPage, screenshot, settled, startDemo, type Demo } from './harness.ts';
 
 let demo: Demo;
+let hodt: Hodt;
 beforeAll(async () => {
   demo = await startDemo();
+  hodt = await loadHodt();
 });
 afterAll(async () => {
   await demo?.close();
 });
 
-const cli = (file: string, objective: string) =>
-  JSON.parse(execFileSync('node', [`${root}dist/cli.js`, 'solve', file, '--objective', objective, '--method', 'exact'], { encoding: 'utf8' }));
+/** `hodt solve FILE --objective ID --method exact`: the CLI (core/src/cli.cpp) run
+ * in-process exactly as the npm bin runs it, reading the file from disk (not
+ * dist/cli.js itself, which a concurrent build may be rewriting). */
+function cli(file: string, objective: string) {
+  const r = hodt.runCli(['solve', file, '--objective', objective, '--method', 'exact'], (p) => readFileSync(p, 'utf8'));
+  if (r.exitCode !== 0) throw new Error(`hodt solve failed (${r.exitCode}): ${r.stderr}`);
+  return JSON.parse(r.stdout);
+}
 
 describe('objectives', () => {
   test('switching objective changes the flips; values equal the CLI on the exported points', async () => {
