@@ -36,6 +36,7 @@ Solution baker_solution(const FirstOrder& fo, Objective o, const SolveOptions& o
   s.method = "approx";
   s.choice = std::move(r.choice);
   const bool improved = improve_locally(g, s.choice, options.progress);
+  prefer_delaunay(g, s.choice);
   s.local_search_improved = improved;
   s.value = evaluate(o, triangulate(fo, s.choice));
   const uint32_t interior = fo.base.num_vertices() - static_cast<uint32_t>(fo.base.hull.size());

@@ -87,6 +87,30 @@ BakerResult baker(const FactorGraph& g, const std::vector<uint32_t>& layer, doub
   return r;
 }
 
+void prefer_delaunay(const FactorGraph& g, Choice& x) {
+  if (g.combine != Combine::Sum) return;
+  const double sign = g.sense == Sense::Max ? 1 : -1;
+  std::vector<std::vector<uint32_t>> touching(g.num_vars);
+  for (uint32_t k = 0; k < g.factors.size(); ++k)
+    for (uint32_t v : g.factors[k].scope) touching[v].push_back(k);
+  auto local = [&](uint32_t v) {
+    double s = 0;
+    for (uint32_t k : touching[v]) {
+      const Factor& f = g.factors[k];
+      size_t idx = 0;
+      for (size_t j = 0; j < f.scope.size(); ++j) idx |= size_t(x[f.scope[j]] & 1) << j;
+      s += f.table[idx];
+    }
+    return s;
+  };
+  for (uint32_t v = 0; v < g.num_vars; ++v) {
+    if (!x[v]) continue;
+    const double before = local(v);
+    x[v] = 0;
+    if (sign * (local(v) - before) < 0) x[v] = 1;  // worse: keep the flip
+  }
+}
+
 bool improve_locally(const FactorGraph& g, Choice& x, const Progress& progress) {
   if (g.combine != Combine::Sum) return false;
   const double sign = g.sense == Sense::Max ? 1 : -1;

@@ -128,6 +128,25 @@ BottleneckResult solve_bottleneck(const BottleneckModel& m) {
     }
   }
   r.value = cand[lo];
+  // Among the optimal choices prefer Delaunay diagonals: revert a flipped quad when
+  // every term it is part of stays within the optimum (fewer, meaningful flips).
+  std::vector<std::vector<uint32_t>> terms_of(m.num_quads);
+  for (uint32_t k = 0; k < m.terms.size(); ++k) {
+    terms_of[static_cast<uint32_t>(m.terms[k].q)].push_back(k);
+    if (m.terms[k].r >= 0) terms_of[static_cast<uint32_t>(m.terms[k].r)].push_back(k);
+  }
+  for (uint32_t q = 0; q < m.num_quads; ++q) {
+    if (!r.choice[q]) continue;
+    r.choice[q] = 0;
+    for (uint32_t k : terms_of[q]) {
+      const PairTerm& t = m.terms[k];
+      const int idx = r.choice[static_cast<uint32_t>(t.q)] + (t.r >= 0 ? 2 * r.choice[static_cast<uint32_t>(t.r)] : 0);
+      if (t.v[idx] > r.value) {
+        r.choice[q] = 1;
+        break;
+      }
+    }
+  }
   return r;
 }
 

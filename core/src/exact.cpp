@@ -6,6 +6,9 @@
 #include "hodt/extrema.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/pair_measures.hpp"
+#include "hodt/skeleton.hpp"
+
+#include <algorithm>
 
 namespace hodt {
 
@@ -40,8 +43,18 @@ Choice shorter_diagonals(const FirstOrder& fo) {
 // of its two triangles: independent per quad, so each quad takes the diagonal
 // whose larger triangle is smaller (ties keep Delaunay).
 Choice smaller_largest_triangles(const FirstOrder& fo) {
+  // The optimum is the larger of the largest fixed triangle and, over the quads,
+  // the smaller of their two options; a quad flips only if Delaunay exceeds it.
+  const Mesh& m = fo.base;
+  double optimum = 0;
+  for (uint32_t t = 0; t < m.num_triangles(); ++t)
+    if (fo.quad_of_triangle[t] < 0)
+      optimum = std::max(optimum, triangle_area(m.point(m.triangles[3 * t]), m.point(m.triangles[3 * t + 1]),
+                                                m.point(m.triangles[3 * t + 2])));
+  for (uint32_t q = 0; q < fo.num_quads(); ++q)
+    optimum = std::max(optimum, std::min(largest_triangle(fo, q, false), largest_triangle(fo, q, true)));
   Choice c(fo.num_quads(), 0);
-  for (uint32_t q = 0; q < fo.num_quads(); ++q) c[q] = largest_triangle(fo, q, true) < largest_triangle(fo, q, false);
+  for (uint32_t q = 0; q < fo.num_quads(); ++q) c[q] = largest_triangle(fo, q, false) > optimum;
   return c;
 }
 

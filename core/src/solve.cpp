@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "hodt/approx.hpp"
+#include "hodt/baker.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/error.hpp"
 #include "hodt/exact.hpp"
@@ -38,8 +39,13 @@ Solution solve_factor_graph(const FirstOrder& fo, Objective objective, const Sol
   Solution s;
   s.objective = objective;
   s.method = "exact";
-  s.choice = objective == Objective::MinmaxDegree ? min_max_degree_exact(fo, limits)
-                                                  : solve_exact(factor_model(fo, objective), limits).choice;
+  if (objective == Objective::MinmaxDegree) {
+    s.choice = min_max_degree_exact(fo, limits);
+  } else {
+    const FactorGraph g = factor_model(fo, objective);
+    s.choice = solve_exact(g, limits).choice;
+    prefer_delaunay(g, s.choice);
+  }
   s.optimal = true;
   s.value = evaluate(objective, triangulate(fo, s.choice));
   return s;

@@ -51,4 +51,8 @@ BakerResult baker(const FactorGraph& g, const std::vector<uint32_t>& layer, doub
 // factor, until no move helps. Returns true if it improved the value.
 bool improve_locally(const FactorGraph& g, Choice& choice, const Progress& progress = {});
 
+// Reverts flipped quads to their Delaunay diagonal, one by one, whenever that does
+// not make the value worse (sum graphs): the same value with fewer flips.
+void prefer_delaunay(const FactorGraph& g, Choice& choice);
+
 }  // namespace hodt
