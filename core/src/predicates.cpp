@@ -18,6 +18,24 @@ constexpr double kInCircleBound = (10.0 + 96.0 * kEps) * kEps;
 constexpr double kTiny = 0x1p-900;
 inline int sign_of(double d) { return (d > 0) - (d < 0); }
 
+// Exact integer arithmetic for the cases the filter cannot decide and that are
+// common in practice: grids, whose coordinates are small integers after scaling by
+// a power of two (cell sizes like 10, 0.5, 30). Returns false if the coordinates
+// are not of that kind; CGAL's exact arithmetic decides those.
+bool integer_coords(const double* const* p, int count, int64_t* out) {
+  for (double scale = 1; scale <= 256; scale *= 2) {
+    bool ok = true;
+    for (int i = 0; i < count && ok; ++i)
+      for (int k = 0; k < 2 && ok; ++k) {
+        const double v = p[i][k] * scale;  // exact: a power of two
+        ok = v == std::floor(v) && std::abs(v) < 0x1p24;
+        if (ok) out[2 * i + k] = static_cast<int64_t>(v);
+      }
+    if (ok) return true;
+  }
+  return false;
+}
+
 Point2 p2(const double* p) { return Point2(p[0], p[1]); }
 Point3 p3(const double* p) { return Point3(p[0], p[1], p[2]); }
 int sign(CGAL::Sign s) { return static_cast<int>(s); }
@@ -27,6 +45,12 @@ int orient2d(const double* a, const double* b, const double* c) {
   const double l = (a[0] - c[0]) * (b[1] - c[1]), r = (a[1] - c[1]) * (b[0] - c[0]);
   const double det = l - r, sum = std::abs(l) + std::abs(r);
   if (std::abs(det) > kOrient2dBound * sum && sum > kTiny) return sign_of(det);
+  const double* pts[3] = {a, b, c};
+  int64_t v[6];
+  if (integer_coords(pts, 3, v)) {  // |differences| < 2^25: products fit in 64 bits
+    const int64_t d = (v[0] - v[4]) * (v[3] - v[5]) - (v[1] - v[5]) * (v[2] - v[4]);
+    return (d > 0) - (d < 0);
+  }
   return sign(CGAL::orientation(p2(a), p2(b), p2(c)));
 }
 
@@ -59,6 +83,15 @@ int in_circle_sign(const double* a, const double* b, const double* c, const doub
                       (std::abs(cdx * ady) + std::abs(adx * cdy)) * blift +
                       (std::abs(adx * bdy) + std::abs(bdx * ady)) * clift;
   if (std::abs(det) > kInCircleBound * perm && perm > kTiny) return sign_of(det);
+  const double* pts[4] = {a, b, c, d};
+  int64_t v[8];
+  if (integer_coords(pts, 4, v)) {  // |differences| < 2^25, lifts < 2^51: 128 bits suffice
+    using I = __int128;
+    const I ax = v[0] - v[6], ay = v[1] - v[7], bx = v[2] - v[6], by = v[3] - v[7], cx = v[4] - v[6], cy = v[5] - v[7];
+    const I al = ax * ax + ay * ay, bl = bx * bx + by * by, cl = cx * cx + cy * cy;
+    const I det_exact = al * (bx * cy - cx * by) + bl * (cx * ay - ax * cy) + cl * (ax * by - bx * ay);
+    return (det_exact > 0) - (det_exact < 0);
+  }
   return sign(CGAL::side_of_oriented_circle(p2(a), p2(b), p2(c), p2(d)));
 }
 

@@ -45,3 +45,18 @@ TEST_CASE("compare_xy is lexicographic") {
   CHECK(compare_xy(c, a) < 0);
   CHECK(compare_xy(a, a) == 0);
 }
+
+TEST_CASE("exact integer paths agree with CGAL on grid-like coordinates") {
+  // Cocircular and collinear points with coordinates on a 0.5 grid, far from 0.
+  const double base = 4096.5;
+  for (int i = 0; i < 200; ++i) {
+    const double a[3] = {base + (i % 7), base + (i % 5), 0}, b[3] = {base + (i % 7) + 2, base + (i % 5), 0};
+    const double c[3] = {base + (i % 7) + 2, base + (i % 5) + 1.5, 0}, d[3] = {base + (i % 7), base + (i % 5) + 1.5, 0};
+    CHECK(in_circle_sign(a, b, c, d) == 0);  // a rectangle: cocircular
+    const double m[3] = {base + (i % 7) + 1, base + (i % 5), 0};
+    CHECK(orient2d(a, m, b) == 0);
+    const double e[3] = {base + (i % 7) + 1, base + (i % 5) + 0.5, 0};
+    CHECK(in_circle_sign(a, b, c, e) == 1);
+    CHECK(orient2d(a, b, e) == 1);
+  }
+}
