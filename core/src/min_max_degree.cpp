@@ -38,6 +38,11 @@ bool on_side(const Quad& q, uint32_t v, bool side) { return side ? (v == q.c || 
 DegreeBounds degree_bounds(const FirstOrder& fo) {
   const DegreeStructure d = degree_structure(fo);
   DegreeBounds b{0, 0};
+  // Every triangulation of the points has the same number of edges E, so some
+  // vertex has degree at least the average 2E / n.
+  const Mesh& m = fo.base;
+  const uint64_t edges = (m.triangles.size() + m.hull.size()) / 2;
+  b.lower = static_cast<uint32_t>((2 * edges + m.num_vertices() - 1) / m.num_vertices());
   for (uint32_t v = 0; v < d.fixed.size(); ++v) {
     uint32_t base = d.fixed[v];
     for (const uint32_t* q = d.incidence.quads_begin(v); q != d.incidence.quads_end(v); ++q)

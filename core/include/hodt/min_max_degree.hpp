@@ -10,7 +10,7 @@
 namespace hodt {
 
 struct DegreeBounds {
-  uint32_t lower;  // max over vertices of the degree through fixed edges alone
+  uint32_t lower;  // max of the largest fixed degree and the average degree (rounded up)
   uint32_t upper;  // max degree of the Delaunay (base) triangulation
 };
 DegreeBounds degree_bounds(const FirstOrder& fo);
