@@ -5,6 +5,7 @@
 
 #include "hodt/kernel.hpp"
 #include "hodt/predicates.hpp"
+#include "hodt/spatial_order.hpp"
 
 namespace hodt {
 
@@ -32,20 +33,26 @@ struct Traits : Kernel {
 
 }  // namespace
 
-Mesh delaunay(std::vector<double> xyz) {
+Mesh delaunay(std::vector<double> xyz, bool spatially_ordered) {
   using Vb = CGAL::Triangulation_vertex_base_with_info_2<uint32_t, Traits>;
   using Fb = CGAL::Triangulation_face_base_2<Traits>;
   using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
   using DT = CGAL::Delaunay_triangulation_2<Traits, Tds>;
 
   const uint32_t n = static_cast<uint32_t>(xyz.size() / 3);
-  std::vector<std::pair<Point2, uint32_t>> pts;
-  pts.reserve(n);
-  for (uint32_t i = 0; i < n; ++i) pts.emplace_back(Point2(xyz[3 * i], xyz[3 * i + 1]), i);
   Mesh m;
   {  // CGAL's triangulation is freed before the flat mesh is linked
-    DT dt(pts.begin(), pts.end());
-    pts = {};
+    // Points are inserted one by one along a Morton order, each located from the
+    // previous one: short walks, and none of the copies a range insertion makes.
+    DT dt;
+    DT::Face_handle hint;
+    const std::vector<uint32_t> order = spatially_ordered ? std::vector<uint32_t>() : spatial_order(xyz);
+    for (uint32_t k = 0; k < n; ++k) {
+      const uint32_t i = spatially_ordered ? k : order[k];
+      const auto v = dt.insert(Point2(xyz[3 * i], xyz[3 * i + 1]), hint);
+      v->info() = i;
+      hint = v->face();
+    }
     m.triangles.reserve(3 * dt.number_of_faces());
     for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
       for (int k = 0; k < 3; ++k) m.triangles.push_back(f->vertex(k)->info());

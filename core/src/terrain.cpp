@@ -22,7 +22,7 @@ Terrain Terrain::from_points(std::vector<double> xyz, Dedupe dedupe, const Point
     t.input_index_[k] = pts.input_index[order[k]];
   }
   pts = {};  // the unsorted copy is not needed any more
-  t.fo_ = first_order(delaunay(std::move(sorted)));
+  t.fo_ = first_order(delaunay(std::move(sorted), true));
   return t;
 }
 

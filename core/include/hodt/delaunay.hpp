@@ -8,6 +8,7 @@
 namespace hodt {
 
 // xyz must be validated (validate_points): finite, distinct (x, y), not all collinear.
-Mesh delaunay(std::vector<double> xyz);
+// spatially_ordered: the points already follow spatial_order() (skips that sort).
+Mesh delaunay(std::vector<double> xyz, bool spatially_ordered = false);
 
 }  // namespace hodt
