@@ -81,7 +81,7 @@ Solution solve(const FirstOrder& fo, Objective objective, const SolveOptions& op
     throw InputError("epsilon is " + format_number(options.epsilon) + ", expected a number in (0, 1)");
   const auto t0 = std::chrono::steady_clock::now();
   Solution s = dispatch(fo, objective, options);
-  if (!s.critical) s.critical = critical_pair(objective, triangulate(fo, s.choice));
+  if (!s.critical && is_pair_objective(objective)) s.critical = critical_pair(objective, triangulate(fo, s.choice));
   s.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return s;
 }
