@@ -50,7 +50,7 @@ auto guarded(F f) -> decltype(f()) {
 }
 
 void check_order(uint32_t k) {
-  if (k < 1 || k > 64) throw InputError("order is " + std::to_string(k) + ", expected an integer from 1 to 64");
+  if (k < 1 || k > 16) throw InputError("order is " + std::to_string(k) + ", expected an integer from 1 to 16");
 }
 
 Objective objective_of(const std::string& id) {

@@ -65,7 +65,7 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
       } else if (a == "--epsilon") options.epsilon = parse_number(a, value());
       else if (a == "--order") {
         const double k = parse_number(a, value());
-        if (k != static_cast<int>(k) || k < 1 || k > 64) throw Usage("--order expects an integer from 1 to 64");
+        if (k != static_cast<int>(k) || k < 1 || k > 16) throw Usage("--order expects an integer from 1 to 16");
         order = static_cast<int>(k);
       } else if (a == "--triangles") triangles = true;
       else if (a == "--trace") options.trace = true;

@@ -76,7 +76,7 @@ describe('higher order: useful edges and triangles', () => {
     expect(triangles.length).toBeGreaterThanOrEqual(3 * (stats.triangles + 2 * t.numQuads));
     expect(stats).toMatchObject({ order: 1, usefulEdges: edges.length / 2, usefulTriangles: triangles.length / 3 });
     expect(t.usefulEdges(3).length).toBeGreaterThan(edges.length);
-    expect(() => t.usefulEdges(0)).toThrow('order is 0, expected an integer from 1 to 64');
+    expect(() => t.usefulEdges(0)).toThrow('order is 0, expected an integer from 1 to 16');
     expect(t.stats().order).toBeUndefined();
   });
 });

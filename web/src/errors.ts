@@ -8,7 +8,7 @@ export class HodtError extends Error {
   }
 }
 /** Bad input: malformed file, NaN coordinate, duplicate point, invalid choice or
- * option (an unknown objective or method, an order outside 1 to 64). */
+ * option (an unknown objective or method, an order outside 1 to 16). */
 export class InputError extends HodtError {
   override name = 'InputError';
 }

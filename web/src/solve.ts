@@ -21,7 +21,7 @@ export interface SolveOptions {
    * in (0, 1). Default 0.25. */
   epsilon?: number;
   /** Order k of the Delaunay triangulations to search (every triangle's
-   * circumcircle holds at most k points), 1 to 64. Default 1: the 2^m first order
+   * circumcircle holds at most k points), 1 to 16. Default 1: the 2^m first order
    * triangulations. k >= 2: exact by enumeration when the k-OD triangulations are
    * few enough, else the first order optimum improved by k-OD flips (`method`
    * 'heuristic', with a bound when one is known). */
@@ -45,10 +45,10 @@ function aborted(signal: AbortSignal): CancelledError {
   return new CancelledError('aborted', { cause: signal.reason });
 }
 
-/** Throws InputError unless order is an integer from 1 to 64. */
+/** Throws InputError unless order is an integer from 1 to 16. */
 export function checkOrder(order: unknown): asserts order is number {
-  if (typeof order !== 'number' || !Number.isInteger(order) || order < 1 || order > 64) {
-    throw new InputError(`order is ${String(order)}, expected an integer from 1 to 64`);
+  if (typeof order !== 'number' || !Number.isInteger(order) || order < 1 || order > 16) {
+    throw new InputError(`order is ${String(order)}, expected an integer from 1 to 16`);
   }
 }
 
