@@ -51,11 +51,12 @@ BottleneckModel BottleneckBuilder::finish() {
     for (int k = 0; k < 4; ++k) keep.v[k] = std::max(keep.v[k], gone.v[k]);
     drop[binary_keys_[i - 1].second] = 1;
   }
-  std::vector<PairTerm> terms;
-  terms.reserve(model_.terms.size());
+  // Compact in place (a second vector would double the peak memory).
+  size_t kept = 0;
   for (size_t i = 0; i < model_.terms.size(); ++i)
-    if (!drop[i]) terms.push_back(model_.terms[i]);
-  model_.terms.swap(terms);
+    if (!drop[i]) model_.terms[kept++] = model_.terms[i];
+  model_.terms.resize(kept);
+  binary_keys_ = {};
   return std::move(model_);
 }
 
