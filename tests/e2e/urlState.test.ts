@@ -11,6 +11,7 @@ const state = (points: Float64Array): SharedState => ({
   objective: 'minmax-degree',
   method: 'approx',
   epsilon: 0.1,
+  order: 3,
   view: 'plan',
   source: { kind: 'fractal', count: 300, seed: 42 },
 });
@@ -61,6 +62,10 @@ describe('link state', () => {
     };
     const ok = { n: 3, objective: 'min-local-minima', method: 'auto', epsilon: 0.25, view: 'split' };
     expect(decodeState(raw(ok, new Float64Array(9)))!.points).toHaveLength(9);
+    // Links made before the order control keep working: they mean order 1.
+    expect(decodeState(raw(ok, new Float64Array(9)))!.order).toBe(1);
+    expect(decodeState(raw({ ...ok, order: 5 }, new Float64Array(9)))!.order).toBe(5);
+    for (const order of [0, 9, 2.5, '2', null]) expect(decodeState(raw({ ...ok, order }, new Float64Array(9)))!.order).toBe(1);
     bad(raw({ ...ok, n: 4 }, new Float64Array(9)), /4 points need 96 bytes/);
     bad(raw({ ...ok, n: 2 }, new Float64Array(6)), /bad point count/);
     bad(raw({ ...ok, objective: 'nope' }, new Float64Array(9)), /unknown objective/);

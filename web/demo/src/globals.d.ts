@@ -14,6 +14,10 @@ export interface HodtTestHooks {
   solves: number;
   objective: string;
   method: string;
+  /** Order k of the triangulations searched (1: first order). */
+  order: number;
+  /** Number of useful order-k edges drawn, or null when they are hidden. */
+  usefulEdges: number | null;
   /** The last solution in the CLI's JSON format (parsed), or null. */
   solution: Record<string, unknown> | null;
   /** The shown choice, one '0'/'1' per quad. */
@@ -30,8 +34,17 @@ export interface HodtTestHooks {
   link(): string | null;
 }
 
+/** The teaching views' state (window.__hodtTeach), read by tests/e2e. */
+export interface HodtTeachHooks {
+  readonly visible: boolean;
+  readonly tab: string;
+  /** Plain data of one view: 'sat', 'baker', 'gadget' or 'brute'. */
+  view(id: string): Record<string, unknown> | null;
+}
+
 declare global {
   interface Window {
     __hodt?: HodtTestHooks;
+    __hodtTeach?: HodtTeachHooks;
   }
 }

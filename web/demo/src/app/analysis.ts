@@ -20,6 +20,9 @@ export interface Analysis {
   quads: Uint32Array;
   quadOfTriangle: Int32Array;
   choice: Choice;
+  /** Higher order results (not a choice of quad diagonals): per triangle slot, 1
+   * if the triangle is not a Delaunay triangle; null for first order. */
+  changed: Uint8Array | null;
   /** Triangles (input indices) of the pair attaining a min-max value, if any. */
   critical: { first: Uint32Array; second: Uint32Array } | null;
   /** All 13 objective values of this triangulation and of Delaunay; null in a
@@ -65,6 +68,7 @@ export function analyse(
     quads: structure.quads,
     quadOfTriangle: structure.quadOfTriangle,
     choice,
+    changed: null,
     critical,
     values: structure.delaunayValues ? terrain.evaluate(choice) : null,
     delaunayValues: structure.delaunayValues,
@@ -76,4 +80,54 @@ export function countFlipped(choice: Choice): number {
   let k = 0;
   for (const c of choice) k += c ? 1 : 0;
   return k;
+}
+
+/** The analysis of any triangulation of the terrain's points given as triangles
+ * (an order-k result): its measures and values from the library, halfedges
+ * matched here, and the triangles that are not Delaunay triangles marked. */
+export function analyseTriangles(terrain: Terrain, structure: Structure, points: Float64Array, triangles: Uint32Array): Analysis {
+  const delaunay = terrain.delaunay();
+  const m = terrain.measuresOfTriangles(triangles);
+  const key = (a: number, b: number, c: number) => [a, b, c].sort((x, y) => x - y).join(',');
+  const inDelaunay = new Set<string>();
+  for (let k = 0; k < delaunay.triangles.length; k += 3) inDelaunay.add(key(delaunay.triangles[k]!, delaunay.triangles[k + 1]!, delaunay.triangles[k + 2]!));
+  const numTriangles = triangles.length / 3;
+  const changed = new Uint8Array(numTriangles);
+  for (let k = 0; k < numTriangles; k++) changed[k] = inDelaunay.has(key(triangles[3 * k]!, triangles[3 * k + 1]!, triangles[3 * k + 2]!)) ? 0 : 1;
+  return {
+    points,
+    triangles,
+    halfedges: matchHalfedges(triangles),
+    hull: delaunay.hull,
+    edgeShape: m.edgeShape,
+    vertexClass: m.vertexClass,
+    extremum: m.extremum,
+    degree: m.degree,
+    quads: structure.quads,
+    quadOfTriangle: new Int32Array(numTriangles).fill(-1),
+    choice: new Uint8Array(0),
+    changed,
+    critical: null,
+    values: structure.delaunayValues ? terrain.evaluateTriangles(triangles) : null,
+    delaunayValues: structure.delaunayValues,
+  };
+}
+
+/** Twin of each halfedge (e of triangle floor(e / 3), from triangles[e] to the
+ * next corner), -1 on the hull. */
+export function matchHalfedges(triangles: Uint32Array): Int32Array {
+  const twin = new Int32Array(triangles.length).fill(-1);
+  const open = new Map<number, number>();
+  const n = 0x200000; // point indices are below 2^21 (the demo takes 20,000 points)
+  for (let e = 0; e < triangles.length; e++) {
+    const u = triangles[e]!;
+    const v = triangles[e % 3 === 2 ? e - 2 : e + 1]!;
+    const back = open.get(v * n + u);
+    if (back !== undefined) {
+      twin[e] = back;
+      twin[back] = e;
+      open.delete(v * n + u);
+    } else open.set(u * n + v, e);
+  }
+  return twin;
 }

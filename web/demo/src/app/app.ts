@@ -21,7 +21,7 @@ import { createToolbar } from '../ui/toolbar.ts';
 import { createPlanView } from '../views/plan/planView.ts';
 import { createTerrainScene } from '../views/three/terrainScene.ts';
 import { createViewer } from '../views/three/viewer.ts';
-import { analyse, countFlipped, type Analysis } from './analysis.ts';
+import { analyse, analyseTriangles, countFlipped, type Analysis } from './analysis.ts';
 import { dropDuplicateXY } from './dedupe.ts';
 import { describeVertex } from './describeVertex.ts';
 import { heightAt } from './heightAt.ts';
@@ -32,11 +32,12 @@ import type { ViewMode } from './settings.ts';
 import { buildTerrain, type Built } from './terrainBuild.ts';
 import { publishHooks } from './testHooks.ts';
 import { createUrlSync } from './urlSync.ts';
+import { createTeachPanel } from '../teach/teachPanel.ts';
 
 type Ready = Extract<Built, { ok: true }>;
 
 export const DEFAULT_SOURCE: TerrainSource = { kind: 'volcano', count: 200, seed: 7 };
-const DEFAULT_SETTINGS: SolveSettings = { objective: 'min-mixed-vertices', method: 'auto', epsilon: 0.25 };
+const DEFAULT_SETTINGS: SolveSettings = { objective: 'min-mixed-vertices', method: 'auto', epsilon: 0.25, order: 1 };
 /** How long an edit waits for its solution before drawing Delaunay meanwhile. */
 const SOLUTION_GRACE_MS = 150;
 
@@ -61,7 +62,7 @@ export function startApp(hodt: Hodt): void {
   const initial = readInitialState();
   let points = initial.points;
   let source = initial.source;
-  let settings: SolveSettings = { objective: initial.objective, method: initial.method, epsilon: initial.epsilon };
+  let settings: SolveSettings = { objective: initial.objective, method: initial.method, epsilon: initial.epsilon, order: initial.order };
   let view: ViewMode = initial.view;
   let selected: number | null = null;
   let current: Ready = initial.built;
@@ -75,7 +76,7 @@ export function startApp(hodt: Hodt): void {
   let cameraFramed = false;
   const history = createHistory({ points, source });
   const urlSync = createUrlSync(
-    (): SharedState => ({ points, objective: settings.objective, method: settings.method, epsilon: settings.epsilon, view, source }),
+    (): SharedState => ({ points, objective: settings.objective, method: settings.method, epsilon: settings.epsilon, order: settings.order, view, source }),
   );
 
   const plan = createPlanView(byId('view-plan'), {
@@ -114,7 +115,7 @@ export function startApp(hodt: Hodt): void {
       points: a.points.length / 3,
       triangles: a.triangles.length / 3,
       quads: a.quads.length / 4,
-      flipped: countFlipped(a.choice),
+      flipped: a.changed ? (solution?.flipped ?? 0) : countFlipped(a.choice),
     });
     if (a.values && a.delaunayValues) renderMeasures(objectives, a.values, a.delaunayValues, settings.objective, (id) => objectivePanel.choose(id));
     showSelection();
@@ -136,10 +137,40 @@ export function startApp(hodt: Hodt): void {
     display(analyse(current.terrain, current.structure, points, choice ?? new Uint8Array(m), critical));
   }
 
+  /** Draws a solution: a choice of diagonals (order 1) or, for order k >= 2,
+   * its triangles. */
+  function showSolution(s: Solution): void {
+    if (s.order > 1) display(analyseTriangles(current.terrain, current.structure, points, s.triangles));
+    else showChoice(s.choice, s.critical);
+  }
+
   /** Redraws what was committed (after a refused edit or drag). */
   function redraw(): void {
     disposePreview();
-    showChoice(solution?.choice ?? null, solution?.critical ?? null);
+    if (solution) showSolution(solution);
+    else showChoice(null);
+  }
+
+  // ---- useful order-k edges ------------------------------------------------
+  let useful: { terrain: unknown; order: number; edges: Uint32Array } | null = null;
+  /** Draws (or hides) the useful order-k edges of the committed terrain. */
+  function updateUseful(): void {
+    if (!objectivePanel.showUseful) {
+      plan.setUseful(null);
+      objectivePanel.setUsefulCount(null);
+      hooks();
+      return;
+    }
+    const k = settings.order;
+    if (!useful || useful.terrain !== current.terrain || useful.order !== k) {
+      useful = { terrain: current.terrain, order: k, edges: current.terrain.usefulEdges(k) };
+    }
+    plan.setUseful(useful.edges);
+    const count = useful.edges.length / 2;
+    objectivePanel.setUsefulCount(
+      `${count.toLocaleString('en')} useful ${k === 1 ? 'first order' : `order-${k}`} edges: the edges of some ${k === 1 ? 'first order' : `order-${k}`} Delaunay triangulation (violet lines where the shown triangulation does not use them, a violet halo where it does).`,
+    );
+    hooks();
   }
 
   // ---- solving -----------------------------------------------------------
@@ -160,18 +191,17 @@ export function startApp(hodt: Hodt): void {
       clearTimeout(fallback);
       solving = false;
       solves++;
-      if (outcome.status === 'solved' && outcome.solution.choice.length !== current.structure.quads.length / 4) {
+      if (outcome.status === 'solved' && outcome.solution.order === 1 && outcome.solution.choice.length !== current.structure.quads.length / 4) {
         outcome = { status: 'failed', name: 'InternalError', message: 'the worker found a different set of quads' };
       }
       // While a point is dragged the preview stays; dropping it re-solves.
-      const draw = (choice: Uint8Array | null, critical: Solution['critical'] = null) => preview || showChoice(choice, critical);
       if (outcome.status === 'solved') {
         solution = outcome.solution;
-        draw(solution.choice, solution.critical);
+        if (!preview) showSolution(solution);
         result.solved(objective, solution, current.structure.quads.length / 4);
       } else {
-        draw(null);
-        if (outcome.status === 'failed') result.failed(objective, outcome.message);
+        if (!preview) showChoice(null);
+        if (outcome.status === 'failed') result.failed(objective, outcome.message, settings.order);
         else result.cancelled(objective);
       }
       hooks();
@@ -217,6 +247,8 @@ export function startApp(hodt: Hodt): void {
     plan.select(selected);
     toolbar.setHistory(history.undoLabel, history.redoLabel);
     urlSync.changed();
+    updateUseful();
+    teach.changed();
     solve(false);
     return true;
   }
@@ -304,6 +336,7 @@ export function startApp(hodt: Hodt): void {
   function setView(mode: ViewMode): void {
     view = mode;
     toolbar.setView(mode);
+    teach.setVisible(mode === 'teach');
     frameCameraIfVisible();
     urlSync.changed();
   }
@@ -323,14 +356,34 @@ export function startApp(hodt: Hodt): void {
     }
   }
 
+  // ---- teaching views ------------------------------------------------------
+  const teach = createTeachPanel({
+    hodt,
+    terrain: () => current.terrain,
+    points: () => points,
+    settings: () => settings,
+    load: (next, label, objective) => {
+      if (objective && objective !== settings.objective) {
+        settings = { ...settings, objective, order: 1 };
+        objectivePanel.set(settings);
+      }
+      commit(next, label, { reframe: true, select: null });
+    },
+    showViews: () => setView('split'),
+    solver: createSolverClient(),
+  });
+
   // ---- wiring ------------------------------------------------------------
   objectivePanel.set(settings);
   objectivePanel.onChange((s) => {
     settings = s;
     toolbar.hideLink();
     urlSync.changed();
+    updateUseful();
+    teach.changed();
     solve(true);
   });
+  objectivePanel.onUseful(() => updateUseful());
   terrainPanel.set(source);
   terrainPanel.onGenerate((s) => {
     commit(TERRAINS[s.kind].make(s.count, s.seed), `load ${TERRAINS[s.kind].label.toLowerCase()}`, { source: s, reframe: true, select: null });
@@ -341,6 +394,7 @@ export function startApp(hodt: Hodt): void {
   selectionPanel.onEdit((i, x, y, z) => commit(movePoint(points, i, x, y, z), 'edit point', { select: i }));
   selectionPanel.onDelete(() => deleteSelected());
   toolbar.setView(view);
+  teach.setVisible(view === 'teach');
   toolbar.onView(setView);
   toolbar.onUndo(undo);
   toolbar.onRedo(redo);
@@ -353,7 +407,7 @@ export function startApp(hodt: Hodt): void {
     try {
       const s = decodeState(location.hash);
       if (!s) return;
-      settings = { objective: s.objective, method: s.method, epsilon: s.epsilon };
+      settings = { objective: s.objective, method: s.method, epsilon: s.epsilon, order: s.order };
       objectivePanel.set(settings);
       setView(s.view);
       commit(s.points, 'open link', { source: s.source, reframe: true, select: null, refused: 'Cannot open the link' });
@@ -390,6 +444,8 @@ export function startApp(hodt: Hodt): void {
       solves,
       objective: settings.objective,
       method: settings.method,
+      order: settings.order,
+      usefulEdges: objectivePanel.showUseful && useful ? useful.edges.length / 2 : null,
       solution: solution ? JSON.parse(solutionToJson(solution)) : null,
       choice: shown ? Array.from(shown.choice).join('') : '',
       selected,

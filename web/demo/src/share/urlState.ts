@@ -1,6 +1,6 @@
 import { deflateSync } from 'fflate';
 import { OBJECTIVE_IDS, type Method, type ObjectiveId } from 'hodt';
-import { METHODS, VIEW_MODES, type ViewMode } from '../app/settings.ts';
+import { isOrder, METHODS, VIEW_MODES, type ViewMode } from '../app/settings.ts';
 import { isTerrainKind, type TerrainKind } from '../terrains/kinds.ts';
 import { fromBase64Url, toBase64Url } from './base64url.ts';
 import { boundedInflate } from './boundedInflate.ts';
@@ -9,7 +9,8 @@ import { fromColumns, shuffleDoubles, toColumns, unshuffleDoubles } from './byte
 /**
  * The whole page state in the URL hash: `#v1=<base64url>`, the raw deflate of
  *   u32 (little-endian) length L of a JSON header,
- *   L bytes of UTF-8 JSON {n, objective, method, epsilon, view, source?},
+ *   L bytes of UTF-8 JSON {n, objective, method, epsilon, order, view, source?}
+ *     (order was added later: links without it mean order 1),
  *   24 n bytes: the 3n coordinates as doubles, by columns (all x, all y, all z),
  *   byte-shuffled.
  * The doubles are the exact bits of the points, so the link reproduces the exact
@@ -20,6 +21,8 @@ export interface SharedState {
   objective: ObjectiveId;
   method: Method;
   epsilon: number;
+  /** Order k of the Delaunay triangulations searched (1: first order). */
+  order: number;
   view: ViewMode;
   /** Where the points came from, for the terrain controls (optional). */
   source: { kind: TerrainKind; count: number; seed: number } | null;
@@ -41,6 +44,7 @@ export function encodeState(s: SharedState): string {
       objective: s.objective,
       method: s.method,
       epsilon: s.epsilon,
+      order: s.order,
       view: s.view,
       ...(s.source ? { source: s.source } : {}),
     }),
@@ -103,8 +107,9 @@ export function decodeState(hash: string): SharedState | null {
   if (!objective) throw new LinkError(`the link names an unknown objective ${JSON.stringify(header.objective)}`);
   const method = METHODS.find((m) => m === header.method) ?? 'auto';
   const epsilon = typeof header.epsilon === 'number' && header.epsilon > 0 && header.epsilon < 1 ? header.epsilon : 0.25;
+  const order = isOrder(header.order) ? header.order : 1;
   const view = VIEW_MODES.find((v) => v === header.view) ?? 'split';
-  return { points, objective, method, epsilon, view, source: readSource(header.source) };
+  return { points, objective, method, epsilon, order, view, source: readSource(header.source) };
 }
 
 function readSource(s: unknown): SharedState['source'] {

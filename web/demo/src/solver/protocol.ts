@@ -9,6 +9,10 @@ export interface SolveRequest {
   objective: ObjectiveId;
   method: Method;
   epsilon: number;
+  /** Order k (1: first order; k >= 2 leaves the method to the library). */
+  order: number;
+  /** Record the thresholds of a min-max search (Solution.trace). */
+  trace?: boolean;
 }
 
 export type WorkerReply =

@@ -11,6 +11,8 @@ export interface SolveJob {
   objective: ObjectiveId;
   method: Method;
   epsilon: number;
+  order: number;
+  trace?: boolean;
 }
 
 /** Runs one solve at a time in a Web Worker. A new solve or cancel() while one

@@ -10,7 +10,7 @@ const hodt = loadHodt();
 const reply = (message: WorkerReply) => scope.postMessage(message);
 
 scope.onmessage = async (event: MessageEvent<SolveRequest>) => {
-  const { id, points, objective, method, epsilon } = event.data;
+  const { id, points, objective, method, epsilon, order, trace } = event.data;
   try {
     const terrain = (await hodt).terrain(points);
     let last = 0;
@@ -21,7 +21,9 @@ scope.onmessage = async (event: MessageEvent<SolveRequest>) => {
       reply({ type: 'progress', id, done, total });
     };
     try {
-      reply({ type: 'solved', id, solution: terrain.solve(objective, { method, epsilon, progress }) });
+      // Order k >= 2 chooses its method itself: the library refuses one.
+      const options = order > 1 ? { order, progress } : { method, epsilon, trace, progress };
+      reply({ type: 'solved', id, solution: terrain.solve(objective, options) });
     } finally {
       terrain.dispose();
     }

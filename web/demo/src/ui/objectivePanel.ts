@@ -1,5 +1,5 @@
 import type { Method, ObjectiveId, ObjectiveInfo } from 'hodt';
-import { METHODS } from '../app/settings.ts';
+import { MAX_ORDER, METHODS } from '../app/settings.ts';
 import { byId, h } from './dom.ts';
 import { OBJECTIVE_HELP } from './objectiveHelp.ts';
 
@@ -7,6 +7,9 @@ export interface SolveSettings {
   objective: ObjectiveId;
   method: Method;
   epsilon: number;
+  /** Order k: 1 for first order; k >= 2 searches the order-k Delaunay
+   * triangulations (the library picks its method). */
+  order: number;
 }
 
 /** Objective picker with its help text, method and epsilon. */
@@ -16,6 +19,11 @@ export interface ObjectivePanel {
   onChange(handler: (s: SolveSettings) => void): void;
   /** Picks an objective as if chosen in the list. */
   choose(id: ObjectiveId): void;
+  /** The "useful edges" toggle. */
+  onUseful(handler: (show: boolean) => void): void;
+  readonly showUseful: boolean;
+  /** The count line under the order row (null hides it). */
+  setUsefulCount(text: string | null): void;
 }
 
 const METHOD_LABELS: Record<Method, string> = {
@@ -36,6 +44,14 @@ export function createObjectivePanel(objectives: readonly ObjectiveInfo[]): Obje
   const help = byId('objective-help');
   const method = byId<HTMLSelectElement>('method');
   const epsilon = byId<HTMLInputElement>('epsilon');
+  const order = byId<HTMLSelectElement>('order');
+  const useful = byId<HTMLInputElement>('show-useful');
+  const usefulCount = byId('useful-count');
+  order.replaceChildren(
+    ...Array.from({ length: MAX_ORDER }, (_, i) =>
+      h('option', { value: i + 1, title: i === 0 ? 'First order: one diagonal per flippable quad' : `At most ${i + 1} points in every circumcircle` }, i === 0 ? '1 · first order' : String(i + 1)),
+    ),
+  );
 
   select.replaceChildren(
     ...objectives.map((o) =>
@@ -46,12 +62,17 @@ export function createObjectivePanel(objectives: readonly ObjectiveInfo[]): Obje
 
   /** Epsilon only matters to the approximation (which auto may fall back to). */
   const enableEpsilon = () => {
-    epsilon.disabled = method.value !== 'approx' && method.value !== 'auto';
+    const higher = Number(order.value) > 1;
+    // Order k >= 2 chooses its method itself (exact enumeration or k-OD flips).
+    method.disabled = higher;
+    method.title = higher ? `Order ${order.value} chooses its method itself` : '';
+    epsilon.disabled = higher || (method.value !== 'approx' && method.value !== 'auto');
   };
   const get = (): SolveSettings => ({
     objective: select.value as ObjectiveId,
     method: method.value as Method,
     epsilon: clampEpsilon(Number(epsilon.value)),
+    order: Number(order.value) || 1,
   });
   const showHelp = () => {
     const id = select.value as ObjectiveId;
@@ -75,12 +96,16 @@ export function createObjectivePanel(objectives: readonly ObjectiveInfo[]): Obje
   select.addEventListener('change', changed);
   method.addEventListener('change', changed);
   epsilon.addEventListener('change', changed);
+  order.addEventListener('change', changed);
+  const usefulListeners: ((show: boolean) => void)[] = [];
+  useful.addEventListener('change', () => usefulListeners.forEach((l) => l(useful.checked)));
 
   return {
     set(s) {
       select.value = s.objective;
       method.value = s.method;
       epsilon.value = String(s.epsilon);
+      order.value = String(s.order);
       showHelp();
       enableEpsilon();
     },
@@ -92,6 +117,16 @@ export function createObjectivePanel(objectives: readonly ObjectiveInfo[]): Obje
       if (select.value === id) return;
       select.value = id;
       changed();
+    },
+    onUseful(handler) {
+      usefulListeners.push(handler);
+    },
+    get showUseful() {
+      return useful.checked;
+    },
+    setUsefulCount(text) {
+      usefulCount.hidden = text === null;
+      usefulCount.textContent = text ?? '';
     },
   };
 }

@@ -10,7 +10,7 @@ export interface ResultCard {
   /** Work done out of total in the solver's current phase. */
   progress(done: number, total: number): void;
   solved(objective: ObjectiveInfo, s: Solution, numQuads: number): void;
-  failed(objective: ObjectiveInfo, message: string): void;
+  failed(objective: ObjectiveInfo, message: string, order?: number): void;
   cancelled(objective: ObjectiveInfo): void;
 }
 
@@ -68,18 +68,20 @@ export function createResultCard(): ResultCard {
         h(
           'p',
           { class: 'line muted' },
-          `${s.flipped} of ${numQuads} quads flipped · ${s.method} · ${formatMs(s.timeMs)}`,
+          s.order > 1
+            ? `order ${s.order} · ${s.flipped} edge${s.flipped === 1 ? '' : 's'} not in Delaunay · ${s.method} · ${formatMs(s.timeMs)}`
+            : `${s.flipped} of ${numQuads} quads flipped · ${s.method} · ${formatMs(s.timeMs)}`,
           s.critical ? h('span', { class: 'chip critical' }, 'worst pair') : null,
         ),
         s.details ? h('p', { class: 'line muted' }, s.details) : '',
       );
     },
-    failed(o, message) {
+    failed(o, message, order = 1) {
       stopTimer();
       root.dataset.state = 'failed';
       root.replaceChildren(
         h('p', { class: 'line error' }, `Could not optimise ${o.id}: ${message}`),
-        h('p', { class: 'line muted' }, 'Showing the Delaunay triangulation. Try method auto or approximation.'),
+        h('p', { class: 'line muted' }, order > 1 ? 'Showing the Delaunay triangulation.' : 'Showing the Delaunay triangulation. Try method auto or approximation.'),
       );
     },
     cancelled(o) {

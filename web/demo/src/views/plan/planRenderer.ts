@@ -7,6 +7,7 @@ import {
   FLIPPED_COLOR,
   QUAD_COLOR,
   SELECTION_COLOR,
+  USEFUL_COLOR,
   VERTEX_CLASS_COLORS,
 } from '../palette.ts';
 import { toScreenX, toScreenY, type PlanTransform } from './planTransform.ts';
@@ -14,6 +15,8 @@ import { toScreenX, toScreenY, type PlanTransform } from './planTransform.ts';
 export interface PlanDrawOptions {
   selected: number | null;
   hovered: number | null;
+  /** Useful order-k edges to draw (pairs of point indices), or null. */
+  useful: Uint32Array | null;
 }
 
 /**
@@ -70,6 +73,7 @@ export function drawPlan(ctx: CanvasRenderingContext2D, a: Analysis, t: PlanTran
   for (let k = 0; k < numTriangles; k++) {
     const q = a.quadOfTriangle[k]!;
     if (q >= 0) addTriangle(a.choice[q] ? flipped : kept, k);
+    else if (a.changed?.[k]) addTriangle(flipped, k); // not a Delaunay triangle (order k >= 2)
   }
   ctx.fillStyle = withAlpha(QUAD_COLOR, 0.28);
   ctx.fill(kept);
@@ -81,6 +85,26 @@ export function drawPlan(ctx: CanvasRenderingContext2D, a: Analysis, t: PlanTran
   for (const k of criticalTriangles(a)) addTriangle(critical, k);
   ctx.fillStyle = withAlpha(CRITICAL_COLOR, 0.35);
   ctx.fill(critical);
+
+  // Useful order-k edges: a faint violet halo under the edges of the shown
+  // triangulation, and violet lines for the others (drawn after the edges).
+  let unused: Path2D | null = null;
+  if (o.useful) {
+    const key = (u: number, v: number) => (u < v ? u * n + v : v * n + u);
+    const shown = new Set<number>();
+    for (let e = 0; e < triangles.length; e++) shown.add(key(triangles[e]!, triangles[e % 3 === 2 ? e - 2 : e + 1]!));
+    const halo = new Path2D();
+    unused = new Path2D();
+    for (let i = 0; i < o.useful.length; i += 2) {
+      const u = o.useful[i]!, v = o.useful[i + 1]!;
+      const path = shown.has(key(u, v)) ? halo : unused;
+      path.moveTo(sx[u]!, sy[u]!);
+      path.lineTo(sx[v]!, sy[v]!);
+    }
+    ctx.strokeStyle = withAlpha(USEFUL_COLOR, 0.28);
+    ctx.lineWidth = n > 800 ? 2.5 : 4.5;
+    ctx.stroke(halo);
+  }
 
   // Edges by shape.
   const edgeWidth = n > 3000 ? 0.6 : n > 800 ? 0.9 : 1.4;
@@ -97,6 +121,12 @@ export function drawPlan(ctx: CanvasRenderingContext2D, a: Analysis, t: PlanTran
     ctx.strokeStyle = EDGE_SHAPE_COLORS[shape]!;
     ctx.lineWidth = shape === 3 ? edgeWidth + 0.8 : edgeWidth;
     ctx.stroke();
+  }
+
+  if (unused) {
+    ctx.strokeStyle = withAlpha(USEFUL_COLOR, 0.85);
+    ctx.lineWidth = n > 800 ? 0.8 : 1.2;
+    ctx.stroke(unused);
   }
 
   // The Delaunay diagonal a flipped quad gave up, dashed.
@@ -174,7 +204,7 @@ export function drawPlan(ctx: CanvasRenderingContext2D, a: Analysis, t: PlanTran
   }
 }
 
-function withAlpha(hex: string, alpha: number): string {
+export function withAlpha(hex: string, alpha: number): string {
   const v = parseInt(hex.slice(1), 16);
   return `rgba(${(v >> 16) & 255}, ${(v >> 8) & 255}, ${v & 255}, ${alpha})`;
 }

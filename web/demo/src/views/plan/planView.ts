@@ -17,6 +17,8 @@ export interface PlanHandlers {
 export interface PlanView {
   show(a: Analysis): void;
   select(index: number | null): void;
+  /** Useful order-k edges to draw (pairs of point indices), or null for none. */
+  setUseful(edges: Uint32Array | null): void;
   /** Fits all points in the view. */
   fit(): void;
   /** Canvas pixel position (CSS pixels, relative to the canvas) of a data point. */
@@ -54,6 +56,7 @@ export function createPlanView(container: HTMLElement, handlers: PlanHandlers): 
   let adjusted = false;
   let selected: number | null = null;
   let hovered: number | null = null;
+  let useful: Uint32Array | null = null;
   let queued = false;
 
   const size = () => ({ w: container.clientWidth || 1, h: container.clientHeight || 1 });
@@ -67,7 +70,7 @@ export function createPlanView(container: HTMLElement, handlers: PlanHandlers): 
     }
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     ctx.clearRect(0, 0, w, h);
-    if (analysis) drawPlan(ctx, analysis, transform, { selected, hovered });
+    if (analysis) drawPlan(ctx, analysis, transform, { selected, hovered, useful });
   };
   const redraw = () => {
     if (queued) return;
@@ -220,6 +223,10 @@ export function createPlanView(container: HTMLElement, handlers: PlanHandlers): 
     },
     select(index) {
       selected = index;
+      redraw();
+    },
+    setUseful(edges) {
+      useful = edges;
       redraw();
     },
     fit,

@@ -35,6 +35,7 @@ export function updateQuadFill(fill: Mesh, positions: Float32Array, a: Analysis)
   for (let k = 0; k < numTriangles; k++) {
     const q = a.quadOfTriangle[k]!;
     if (q >= 0) push(k, a.choice[q] ? FLIPPED : BASE, a.choice[q] ? 0.62 : 0.28);
+    else if (a.changed?.[k]) push(k, FLIPPED, 0.62); // a higher order result's non-Delaunay triangle
   }
   for (const k of criticalTriangles(a)) push(k, CRITICAL, 0.75);
   const geometry = new BufferGeometry();

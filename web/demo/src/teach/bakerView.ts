@@ -1,0 +1,338 @@
+// Teaching view 2: Baker's layering for the NP-hard objectives (Section 4). The
+// quads are nodes, joined when they share an edge; a quad's layer is its peeling
+// depth. For each shift, the edges between layers l and l + 1 with l = shift
+// (mod lambda) are cut; the thick layers left are solved exactly and the best
+// shift wins. The library runs the scheme; the per-shift numbers are recomputed
+// here (max-convex-edges) because the API reports only the best one.
+import type { ObjectiveId, Solution } from 'hodt';
+import { h } from '../ui/dom.ts';
+import { formatValue, OBJECTIVE_HELP } from '../ui/objectiveHelp.ts';
+import { FLIPPED_COLOR } from '../views/palette.ts';
+import { withAlpha } from '../views/plan/planRenderer.ts';
+import { createFittedCanvas, drawBackdrop, layerColor, type FittedCanvas } from './canvas.ts';
+import { button, createPane, paperLink, type TeachContext, type TeachView } from './common.ts';
+import { bakerShift, convexEdgeModel, isCut, TooWideError, type BakerShift, type FactorGraph } from './convexModel.ts';
+import { readStructure, trianglesOf, type QuadStructure } from './structure.ts';
+
+const OBJECTIVES = ['max-convex-edges', 'min-mixed-vertices'] as const satisfies readonly ObjectiveId[];
+/** Per-shift values are recomputed in the browser up to this many quads. */
+const MAX_QUADS_FOR_SHIFTS = 1500;
+const CUT_COLOR = '#d62728';
+
+interface State {
+  structure: QuadStructure;
+  objective: (typeof OBJECTIVES)[number];
+  epsilon: number;
+  layers: number;
+  lambda: number | null;
+  solution: Solution | null;
+  failure: string | null;
+  model: FactorGraph | null;
+  shifts: (BakerShift | null)[];
+  shiftsNote: string | null;
+}
+
+export function createBakerView(ctx: TeachContext): TeachView {
+  const { root, side, main, caption } = createPane('baker', 'Baker’s layers for NP-hard objectives', [
+    'Most convex edges and fewest mixed vertices are NP-hard, but the quads form a planar graph (dots: a quad each, joined when two quads share an edge). ',
+    'Peeling it from the hull gives layers (colours). For each shift i < λ = ⌈1/ε⌉, cutting the edges between layers l and l + 1 for every l ≡ i (mod λ) leaves thick layers of small treewidth, each solved exactly; ',
+    'some shift loses at most a 1/λ share of the optimum, so the best shift is within (1 − ε) of it, and each shift’s relaxed optimum plus what it cut bounds the optimum from above. See ',
+    paperLink('4'),
+    ' (4.1 for convex edges).',
+  ]);
+  const objective = h('select', { id: 'baker-objective', 'aria-label': 'Objective' });
+  objective.replaceChildren(...OBJECTIVES.map((id) => h('option', { value: id }, OBJECTIVE_HELP[id].name)));
+  const epsilon = h('input', { id: 'baker-epsilon', type: 'number', min: 0.05, max: 0.95, step: 0.05, value: 0.34, 'aria-label': 'epsilon' });
+  const lambdaOut = h('span', { class: 'teach-counter', id: 'baker-lambda' });
+  for (const el of [objective, epsilon]) {
+    el.addEventListener('change', () => {
+      stale = true;
+      update();
+    });
+  }
+  let timer = 0;
+  const play = button('baker-play', '▶ Play', 'Step through the shifts', () => (timer ? stop() : start()));
+  const counter = h('span', { class: 'teach-counter', id: 'baker-counter' });
+  const controls = h(
+    'div',
+    { class: 'teach-controls' },
+    button('baker-first', 'Start', 'Layers only', () => go(0)),
+    button('baker-prev', '◀ Prev', 'Previous shift', () => go(pos - 1)),
+    play,
+    button('baker-next', 'Next ▶', 'Next shift', () => go(pos + 1)),
+    counter,
+  );
+  const status = h('p', { class: 'teach-status', id: 'baker-status', 'aria-live': 'polite' });
+  const table = h('table', { class: 'teach-table', id: 'baker-table' });
+  const libraryLine = h('p', { class: 'teach-note', id: 'baker-library' });
+  const layerKey = h('div', { class: 'layer-key', id: 'baker-layers' });
+  side.append(
+    h('div', { class: 'row' }, objective),
+    h('div', { class: 'row' }, h('label', { for: 'baker-epsilon' }, 'ε'), epsilon, lambdaOut),
+    controls,
+    status,
+    table,
+    libraryLine,
+    layerKey,
+  );
+  const canvas = createFittedCanvas(main, (c, f) => draw(c, f), 'Quad graph coloured by layer, with the edges cut by the current shift');
+
+  let active = false;
+  let stale = true;
+  let state: State | null = null;
+  let pos = 0;
+  let token = 0;
+
+  function update(): void {
+    if (!active || !stale) return;
+    stale = false;
+    stop();
+    const my = ++token;
+    const eps = Math.min(0.95, Math.max(0.05, Number(epsilon.value) || 0.34));
+    const id = objective.value as State['objective'];
+    const terrain = ctx.terrain();
+    const structure = readStructure(terrain);
+    let layers = 0;
+    for (const d of structure.quadDepth) layers = Math.max(layers, d + 1);
+    state = { structure, objective: id, epsilon: eps, layers, lambda: null, solution: null, failure: null, model: null, shifts: [], shiftsNote: null };
+    pos = 0;
+    canvas.fit(structure.points);
+    render();
+    void ctx.solver.solve({ points: ctx.points(), objective: id, method: 'approx', epsilon: eps, order: 1 }).then((o) => {
+      if (my !== token || !state) return;
+      if (o.status === 'solved') {
+        state.solution = o.solution;
+        const m = /lambda (\d+)/.exec(o.solution.details);
+        state.lambda = m ? Number(m[1]) : Math.ceil(1 / eps);
+      } else {
+        state.failure = o.status === 'failed' ? o.message : 'cancelled';
+        state.lambda = Math.ceil(1 / eps - 1e-9);
+      }
+      state.shifts = Array.from({ length: state.lambda }, () => null);
+      if (id !== 'max-convex-edges') {
+        state.shiftsNote = 'Per-shift values are recomputed in the browser for most convex edges only; the library reports only the best shift (its value and the smallest bound).';
+      } else if (structure.m > MAX_QUADS_FOR_SHIFTS) {
+        state.shiftsNote = `Per-shift values are recomputed in the browser up to ${MAX_QUADS_FOR_SHIFTS} quads; this terrain has ${structure.m}.`;
+      } else {
+        state.model = convexEdgeModel(structure);
+        computeShifts(my, 0);
+      }
+      render();
+    });
+  }
+
+  /** The shifts one per task, so the page stays responsive. */
+  function computeShifts(my: number, i: number): void {
+    const s = state;
+    if (my !== token || !s || !s.model || i >= s.shifts.length) return;
+    window.setTimeout(() => {
+      if (my !== token) return;
+      try {
+        s.shifts[i] = bakerShift(s.model!, s.structure.quadDepth, s.lambda!, i);
+      } catch (e) {
+        if (!(e instanceof TooWideError)) throw e;
+        s.shiftsNote = `${e.message}: per-shift values not shown.`;
+        s.model = null;
+      }
+      render();
+      computeShifts(my, i + 1);
+    }, 0);
+  }
+
+  const last = () => (state?.lambda ? state.lambda + 1 : 0);
+  function go(p: number): void {
+    pos = Math.max(0, Math.min(last(), p));
+    if (pos === last()) stop();
+    render();
+  }
+  function start(): void {
+    if (pos >= last()) pos = 0;
+    play.textContent = '⏸ Pause';
+    timer = window.setInterval(() => go(pos + 1), 1400);
+    render();
+  }
+  function stop(): void {
+    clearInterval(timer);
+    timer = 0;
+    play.textContent = '▶ Play';
+  }
+
+  function render(): void {
+    canvas.redraw();
+    const s = state;
+    if (!s) return;
+    const fmt = (v: number) => formatValue(s.objective, v);
+    lambdaOut.textContent = s.lambda ? `λ = ${s.lambda}` : 'λ = …';
+    lambdaOut.title = `⌈1/ε⌉ = ${Math.ceil(1 / s.epsilon - 1e-9)}; the library takes λ = ⌈span/ε⌉ where span is the most layers one of its factors straddles`;
+    counter.textContent = !s.lambda ? '' : pos === 0 ? 'layers' : pos > s.lambda ? 'result' : `shift ${pos - 1} of 0–${s.lambda - 1}`;
+    caption.textContent =
+      !s.lambda || pos === 0
+        ? 'Quads by layer (peeling depth), joined when they share an edge'
+        : pos > s.lambda
+          ? 'The library’s result: flipped quads outlined amber'
+          : `Shift ${pos - 1}: red dashes are cut · amber outlines: this shift’s flips`;
+    layerKey.replaceChildren(
+      h('span', { class: 'muted' }, 'layer '),
+      ...Array.from({ length: s.layers }, (_, l) => h('i', { style: `background: ${layerColor(l, s.layers)}`, title: `layer ${l}` }, String(l))),
+    );
+    // Per-shift table.
+    const rows = s.shifts.map((x, i) => {
+      const tr = h(
+        'tr',
+        { class: i + 1 === pos ? 'current' : '', 'data-shift': String(i) },
+        h('td', {}, String(i)),
+        h('td', {}, x ? String(x.dropped.length) : s.model ? '…' : '—'),
+        h('td', {}, x ? fmt(x.relaxed) : '—'),
+        h('td', {}, x ? fmt(x.value) : '—'),
+        h('td', {}, x ? fmt(x.bound) : '—'),
+      );
+      tr.addEventListener('click', () => go(i + 1));
+      return tr;
+    });
+    const done = s.shifts.filter((x): x is BakerShift => x !== null);
+    if (done.length) {
+      const best = Math.max(...done.map((x) => x.value));
+      const bound = Math.min(...done.map((x) => x.bound));
+      rows.forEach((tr, i) => {
+        const x = s.shifts[i];
+        if (x && x.value === best) tr.children[3]!.classList.add('best');
+        if (x && x.bound === bound) tr.children[4]!.classList.add('best');
+      });
+    }
+    table.replaceChildren(
+      h('thead', {}, h('tr', {}, h('th', {}, 'shift'), h('th', { title: 'quad-graph edges cut' }, 'cut'), h('th', { title: 'optimum of what the shift keeps' }, 'kept opt.'), h('th', { title: 'convex edges of that triangulation' }, 'value'), h('th', { title: 'kept optimum + the most the cut factors could add' }, 'bound'))),
+      h('tbody', {}, ...rows),
+    );
+    table.hidden = s.shifts.length === 0;
+    // The library's result.
+    if (s.solution) {
+      const sol = s.solution;
+      libraryLine.replaceChildren(
+        'Library (approx): ',
+        h('b', { id: 'baker-value', 'data-value': String(sol.value) }, fmt(sol.value)),
+        sol.bound !== null ? ` · optimum ${sol.sense === 'max' ? '≤' : '≥'} ` : '',
+        sol.bound !== null ? h('b', { id: 'baker-bound', 'data-value': String(sol.bound) }, fmt(sol.bound)) : ' · proven optimal',
+        ` · Delaunay ${fmt(sol.delaunayValue)} · ${sol.details}${sol.localSearchImproved ? ' · local search improved the best shift' : ''}.`,
+        s.shiftsNote ? h('span', { class: 'muted' }, ` ${s.shiftsNote}`) : '',
+      );
+    } else {
+      libraryLine.textContent = s.failure ? `The library could not run the approximation: ${s.failure}` : 'Running the approximation…';
+    }
+    // What the current position shows.
+    if (pos === 0) {
+      status.replaceChildren(`${s.structure.m} quads in ${s.layers} layers (depth of a quad: fewest Delaunay edges from the hull to one of its corners). `, s.lambda ? 'Press Next for the shifts.' : '');
+    } else if (s.lambda && pos <= s.lambda) {
+      const i = pos - 1;
+      const cuts: number[] = [];
+      for (let l = i; l < s.layers - 1; l += s.lambda) cuts.push(l);
+      const x = s.shifts[i];
+      status.replaceChildren(
+        h('b', {}, `Shift ${i}: `),
+        cuts.length ? `cut between layers ${cuts.map((l) => `${l}|${l + 1}`).join(', ')} (red dashes). ` : 'no cut falls inside this terrain’s layers. ',
+        x ? `The thick layers' optimum keeps ${fmt(x.relaxed)}; its triangulation (amber flips) has ${fmt(x.value)}; the optimum is at most ${fmt(x.bound)}.` : '',
+      );
+    } else if (s.lambda) {
+      const done2 = s.shifts.filter((x): x is BakerShift => x !== null);
+      const best = done2.length ? done2.reduce((a, b) => (b.value > a.value ? b : a)) : null;
+      status.replaceChildren(
+        h('b', { id: 'baker-done' }, 'Result: '),
+        best ? `the best shift is ${best.shift} with ${fmt(best.value)}; the smallest bound is ${fmt(Math.min(...done2.map((x) => x.bound)))}. ` : '',
+        s.solution ? `The library returns ${fmt(s.solution.value)} (amber flips)${s.solution.bound !== null ? `, proven within ${fmt(s.solution.bound)}` : ', proven optimal'}.` : '',
+      );
+    }
+  }
+
+  function draw(c: CanvasRenderingContext2D, f: FittedCanvas): void {
+    const s = state;
+    if (!s) return;
+    const st = s.structure;
+    const p = st.points;
+    const shift = s.lambda && pos >= 1 && pos <= s.lambda ? pos - 1 : null;
+    const choice = shift !== null ? s.shifts[shift]?.choice : pos > 0 && s.solution ? s.solution.choice : null;
+    drawBackdrop(c, f, p, trianglesOf(st, choice ?? new Uint8Array(st.m)), 0.25);
+    // Quads filled by layer; flipped ones hatched amber.
+    const byLayer = Array.from({ length: s.layers }, () => new Path2D());
+    const flipped = new Path2D();
+    for (let q = 0; q < st.m; q++) {
+      const path = byLayer[st.quadDepth[q]!]!;
+      const corners = [st.quads[4 * q]!, st.quads[4 * q + 2]!, st.quads[4 * q + 1]!, st.quads[4 * q + 3]!];
+      for (const target of choice?.[q] ? [path, flipped] : [path]) {
+        corners.forEach((v, j) => (j === 0 ? target.moveTo(f.sx(p[3 * v]!), f.sy(p[3 * v + 1]!)) : target.lineTo(f.sx(p[3 * v]!), f.sy(p[3 * v + 1]!))));
+        target.closePath();
+      }
+    }
+    byLayer.forEach((path, l) => {
+      c.fillStyle = layerColor(l, s.layers).replace('rgb(', 'rgba(').replace(')', ', 0.42)');
+      c.fill(path);
+    });
+    c.strokeStyle = withAlpha(FLIPPED_COLOR, 0.95);
+    c.lineWidth = 2;
+    c.stroke(flipped);
+    // The quad graph.
+    const cx = (q: number) => f.sx(st.centroid[2 * q]!);
+    const cy = (q: number) => f.sy(st.centroid[2 * q + 1]!);
+    const kept = new Path2D(), cut = new Path2D();
+    for (const [q, r] of st.quadEdges) {
+      const lo = Math.min(st.quadDepth[q]!, st.quadDepth[r]!), hi = Math.max(st.quadDepth[q]!, st.quadDepth[r]!);
+      const target = shift !== null && isCut(lo, hi, shift, s.lambda!) ? cut : kept;
+      target.moveTo(cx(q), cy(q));
+      target.lineTo(cx(r), cy(r));
+    }
+    c.strokeStyle = 'rgba(30, 42, 38, 0.55)';
+    c.lineWidth = 1.3;
+    c.stroke(kept);
+    c.setLineDash([5, 4]);
+    c.strokeStyle = CUT_COLOR;
+    c.lineWidth = 2.4;
+    c.stroke(cut);
+    c.setLineDash([]);
+    const r = st.m > 600 ? 2.2 : 3.6;
+    for (let q = 0; q < st.m; q++) {
+      c.beginPath();
+      c.arc(cx(q), cy(q), r, 0, 2 * Math.PI);
+      c.fillStyle = layerColor(st.quadDepth[q]!, s.layers);
+      c.fill();
+      c.strokeStyle = '#fff';
+      c.lineWidth = 1;
+      c.stroke();
+    }
+  }
+
+  return {
+    id: 'baker',
+    label: 'Baker layers',
+    root,
+    activate() {
+      active = true;
+      if (!state) {
+        const page = ctx.settings();
+        if ((OBJECTIVES as readonly string[]).includes(page.objective)) objective.value = page.objective;
+      }
+      update();
+      canvas.redraw();
+    },
+    deactivate() {
+      active = false;
+      stop();
+    },
+    changed() {
+      stale = true;
+      token++;
+      update();
+    },
+    hooks() {
+      const s = state;
+      return {
+        objective: objective.value,
+        epsilon: s?.epsilon ?? null,
+        lambda: s?.lambda ?? null,
+        layers: s?.layers ?? 0,
+        position: pos,
+        atEnd: s !== null && s.lambda !== null && pos === last(),
+        shifts: s?.shifts.map((x) => (x ? { shift: x.shift, cut: x.dropped.length, relaxed: x.relaxed, value: x.value, bound: x.bound } : null)) ?? [],
+        library: s?.solution ? { value: s.solution.value, bound: s.solution.bound, details: s.solution.details } : null,
+        note: s?.shiftsNote ?? null,
+      };
+    },
+  };
+}

@@ -1,0 +1,80 @@
+import type { Hodt, ObjectiveId, Terrain } from 'hodt';
+import type { SolverClient } from '../solver/solverClient.ts';
+import type { SolveSettings } from '../ui/objectivePanel.ts';
+import { h } from '../ui/dom.ts';
+import { seededRandom } from '../terrains/rng.ts';
+
+/** What the teaching views may use of the page. */
+export interface TeachContext {
+  hodt: Hodt;
+  /** The page's committed terrain (owned by the page: never dispose it). */
+  terrain(): Terrain;
+  points(): Float64Array;
+  settings(): SolveSettings;
+  /** Replaces the page's points (undoable, like an import) and optionally picks
+   * an objective. */
+  load(points: Float64Array, label: string, objective?: ObjectiveId): void;
+  /** Switches the page to its 3D and plan views. */
+  showViews(): void;
+  /** The teaching views' own solver worker (the page's keeps running). */
+  solver: SolverClient;
+}
+
+export interface TeachView {
+  readonly id: string;
+  readonly label: string;
+  readonly root: HTMLElement;
+  /** Shown: bring the view up to date. */
+  activate(): void;
+  deactivate(): void;
+  /** The page's terrain or settings changed. */
+  changed(): void;
+  /** Plain data for tests/e2e (window.__hodtTeach). */
+  hooks(): Record<string, unknown>;
+}
+
+export const PAPER_TITLE = 'M. van Kreveld, M. Löffler, R. I. Silveira: Optimization for first order Delaunay triangulations (Computational Geometry, 2010)';
+export const PAPER_URL = 'https://dblp.org/search?q=Optimization+for+first+order+Delaunay+triangulations';
+
+/** "Section 2.1 of the paper", linked. */
+export function paperLink(section: string): HTMLAnchorElement {
+  return h('a', { href: PAPER_URL, target: '_blank', rel: 'noopener', title: PAPER_TITLE, class: 'paper' }, `Section ${section} of the paper`);
+}
+
+/** A teaching pane: a side column (title, lead, controls) and a main area. */
+export function createPane(id: string, title: string, lead: (Node | string)[]): { root: HTMLElement; side: HTMLElement; main: HTMLElement; caption: HTMLElement } {
+  const side = h('div', { class: 'teach-side' }, h('h3', {}, title), h('p', { class: 'teach-lead' }, ...lead));
+  const caption = h('span', { class: 'view-label teach-caption', id: `teach-${id}-caption` });
+  const main = h('div', { class: 'teach-main' }, caption);
+  const root = h('section', { class: 'teach-pane', id: `teach-${id}`, 'data-pane': id, role: 'tabpanel', hidden: true }, side, main);
+  return { root, side, main, caption };
+}
+
+/** Colours of strongly connected components (no red: red marks contradictions). */
+export const COMPONENT_COLORS = ['#1f77b4', '#9467bd', '#2ca02c', '#17becf', '#8c564b', '#e377c2', '#bcbd22', '#3f51b5'] as const;
+
+export function button(id: string, label: string, title: string, onClick: () => void, secondary = true): HTMLButtonElement {
+  const b = h('button', { type: 'button', id, class: secondary ? 'secondary small' : 'small', title }, label);
+  b.addEventListener('click', onClick);
+  return b;
+}
+
+/** A small random terrain with between lo and hi flippable quads (found by
+ * trying seeds in order, so always the same one). */
+export function smallTerrain(hodt: Hodt, n: number, lo: number, hi: number, firstSeed = 1): Float64Array {
+  for (let seed = firstSeed; seed < firstSeed + 500; seed++) {
+    const random = seededRandom(seed);
+    const xyz = new Float64Array(3 * n);
+    const corners = [0, 0, 100, 0, 100, 100, 0, 100];
+    for (let i = 0; i < n; i++) {
+      xyz[3 * i] = i < 4 ? corners[2 * i]! : 8 + random() * 84;
+      xyz[3 * i + 1] = i < 4 ? corners[2 * i + 1]! : 8 + random() * 84;
+      xyz[3 * i + 2] = random() * 12;
+    }
+    const terrain = hodt.terrain(xyz);
+    const m = terrain.numQuads;
+    terrain.dispose();
+    if (m >= lo && m <= hi) return xyz;
+  }
+  throw new Error('no small terrain found');
+}
