@@ -148,6 +148,19 @@ describe('teaching views', () => {
     keep('teach-baker.png');
     while (!(await teachView(page, 'baker')).atEnd) await page.click('#baker-next');
     expect(await page.locator('#baker-done').count()).toBe(1);
+
+    // Fewest mixed vertices: the shifts' lower bounds, the largest is the library's.
+    await page.selectOption('#baker-objective', 'min-mixed-vertices');
+    await page.waitForFunction(() => {
+      const v = window.__hodtTeach!.view('baker')!;
+      return v.objective === 'min-mixed-vertices' && v.library !== null && (v.shifts as unknown[]).length > 0 && (v.shifts as unknown[]).every((x) => x !== null);
+    });
+    const mixed = terrain.solve('min-mixed-vertices', { method: 'approx', epsilon: 0.34 });
+    const w = await teachView(page, 'baker');
+    expect(w.library.value).toBe(mixed.value);
+    const lower = w.shifts as { value: number; bound: number }[];
+    expect(Math.max(...lower.map((s) => s.bound))).toBe(mixed.bound ?? mixed.value);
+    expect(Math.min(...lower.map((s) => s.value))).toBeGreaterThanOrEqual(mixed.value);
     expect(errors).toEqual([]);
     await context.close();
   });
@@ -188,7 +201,7 @@ describe('teaching views', () => {
     let before = (await hooks(page)).solves;
     await page.click('#brute-small');
     await settled(page, before);
-    for (const id of ['minmax-edge-normal-angle', 'min-mixed-vertices'] as ObjectiveId[]) {
+    for (const id of ['minmax-edge-normal-angle', 'min-mixed-vertices', 'max-convex-edges'] as ObjectiveId[]) {
       before = (await hooks(page)).solves;
       await page.selectOption('#objective', id);
       await settled(page, before);

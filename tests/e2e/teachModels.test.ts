@@ -4,7 +4,7 @@
 // library's approximation bound.
 import { loadHodt, type Hodt } from 'hodt';
 import { beforeAll, describe, expect, test } from 'vitest';
-import { bakerLambda, bakerShift, convexEdgeModel, evaluateFactors, maxSum } from '../../web/demo/src/teach/convexModel.ts';
+import { bakerLambda, bakerShift, convexEdgeModel, evaluateFactors, maxSum, nonMixedModel } from '../../web/demo/src/teach/convexModel.ts';
 import { analyseStep, buildPairModel, PAIR_OBJECTIVES } from '../../web/demo/src/teach/pairModel.ts';
 import { readStructure } from '../../web/demo/src/teach/structure.ts';
 import { edgeShape } from '../../web/demo/src/teach/geometry.ts';
@@ -55,6 +55,23 @@ describe('teaching models', () => {
       const shifts = Array.from({ length: lambda }, (_, i) => bakerShift(g, s.quadDepth, lambda, i));
       expect(Math.min(...shifts.map((x) => x.bound))).toBe(sol.bound ?? sol.value);
       expect(Math.max(...shifts.map((x) => x.value))).toBeLessThanOrEqual(sol.value);
+    }
+  });
+
+  test('non-mixed vertex factors and their Baker bound match the library', () => {
+    for (const [seed, epsilon] of [[9, 0.3], [10, 0.5]] as const) {
+      using terrain = hodt.terrain(randomPoints(70, seed));
+      const s = readStructure(terrain);
+      const { graph, interior } = nonMixedModel(s);
+      for (let k = 0; k < 6; k++) {
+        const choice = Uint8Array.from({ length: s.m }, (_, q) => ((q * 5 + k * 11 + seed) % 3 === 0 ? 1 : 0));
+        expect(interior - evaluateFactors(graph, choice)).toBe(terrain.evaluate(choice)['min-mixed-vertices']);
+      }
+      const sol = terrain.solve('min-mixed-vertices', { method: 'approx', epsilon });
+      const lambda = bakerLambda(graph, s.quadDepth, epsilon);
+      expect(sol.details).toContain(`lambda ${lambda},`);
+      const shifts = Array.from({ length: lambda }, (_, i) => bakerShift(graph, s.quadDepth, lambda, i));
+      expect(interior - Math.min(...shifts.map((x) => x.bound))).toBe(sol.bound ?? sol.value);
     }
   });
 

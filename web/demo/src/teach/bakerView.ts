@@ -3,7 +3,8 @@
 // depth. For each shift, the edges between layers l and l + 1 with l = shift
 // (mod lambda) are cut; the thick layers left are solved exactly and the best
 // shift wins. The library runs the scheme; the per-shift numbers are recomputed
-// here (max-convex-edges) because the API reports only the best one.
+// here (the same factor models as the core) because the API reports only the
+// best shift's value and the smallest bound.
 import type { ObjectiveId, Solution } from 'hodt';
 import { h } from '../ui/dom.ts';
 import { formatValue, OBJECTIVE_HELP } from '../ui/objectiveHelp.ts';
@@ -11,7 +12,7 @@ import { FLIPPED_COLOR } from '../views/palette.ts';
 import { withAlpha } from '../views/plan/planRenderer.ts';
 import { createFittedCanvas, drawBackdrop, layerColor, type FittedCanvas } from './canvas.ts';
 import { button, createPane, paperLink, type TeachContext, type TeachView } from './common.ts';
-import { bakerShift, convexEdgeModel, isCut, TooWideError, type BakerShift, type FactorGraph } from './convexModel.ts';
+import { bakerShift, convexEdgeModel, isCut, nonMixedModel, TooWideError, type BakerShift, type FactorGraph } from './convexModel.ts';
 import { readStructure, trianglesOf, type QuadStructure } from './structure.ts';
 
 const OBJECTIVES = ['max-convex-edges', 'min-mixed-vertices'] as const satisfies readonly ObjectiveId[];
@@ -27,7 +28,10 @@ interface State {
   lambda: number | null;
   solution: Solution | null;
   failure: string | null;
+  /** The maximised sum the scheme runs on (non-mixed vertices for the fewest
+   * mixed), and how its numbers read in the objective's units. */
   model: FactorGraph | null;
+  units: (x: number) => number;
   shifts: (BakerShift | null)[];
   shiftsNote: string | null;
 }
@@ -94,7 +98,7 @@ export function createBakerView(ctx: TeachContext): TeachView {
     const structure = readStructure(terrain);
     let layers = 0;
     for (const d of structure.quadDepth) layers = Math.max(layers, d + 1);
-    state = { structure, objective: id, epsilon: eps, layers, lambda: null, solution: null, failure: null, model: null, shifts: [], shiftsNote: null };
+    state = { structure, objective: id, epsilon: eps, layers, lambda: null, solution: null, failure: null, model: null, units: (x) => x, shifts: [], shiftsNote: null };
     pos = 0;
     canvas.fit(structure.points);
     render();
@@ -109,12 +113,16 @@ export function createBakerView(ctx: TeachContext): TeachView {
         state.lambda = Math.ceil(1 / eps - 1e-9);
       }
       state.shifts = Array.from({ length: state.lambda }, () => null);
-      if (id !== 'max-convex-edges') {
-        state.shiftsNote = 'Per-shift values are recomputed in the browser for most convex edges only; the library reports only the best shift (its value and the smallest bound).';
-      } else if (structure.m > MAX_QUADS_FOR_SHIFTS) {
+      if (structure.m > MAX_QUADS_FOR_SHIFTS) {
         state.shiftsNote = `Per-shift values are recomputed in the browser up to ${MAX_QUADS_FOR_SHIFTS} quads; this terrain has ${structure.m}.`;
-      } else {
+      } else if (id === 'max-convex-edges') {
         state.model = convexEdgeModel(structure);
+        computeShifts(my, 0);
+      } else {
+        // The scheme maximises the non-mixed vertices: mixed = interior - that.
+        const { graph, interior } = nonMixedModel(structure);
+        state.model = graph;
+        state.units = (x) => interior - x;
         computeShifts(my, 0);
       }
       render();
@@ -162,6 +170,8 @@ export function createBakerView(ctx: TeachContext): TeachView {
     const s = state;
     if (!s) return;
     const fmt = (v: number) => formatValue(s.objective, v);
+    const u = s.units;
+    const max = s.objective === 'max-convex-edges';
     lambdaOut.textContent = s.lambda ? `λ = ${s.lambda}` : 'λ = …';
     lambdaOut.title = `⌈1/ε⌉ = ${Math.ceil(1 / s.epsilon - 1e-9)}; the library takes λ = ⌈span/ε⌉ where span is the most layers one of its factors straddles`;
     counter.textContent = !s.lambda ? '' : pos === 0 ? 'layers' : pos > s.lambda ? 'result' : `shift ${pos - 1} of 0–${s.lambda - 1}`;
@@ -182,15 +192,16 @@ export function createBakerView(ctx: TeachContext): TeachView {
         { class: i + 1 === pos ? 'current' : '', 'data-shift': String(i) },
         h('td', {}, String(i)),
         h('td', {}, x ? String(x.dropped.length) : s.model ? '…' : '—'),
-        h('td', {}, x ? fmt(x.relaxed) : '—'),
-        h('td', {}, x ? fmt(x.value) : '—'),
-        h('td', {}, x ? fmt(x.bound) : '—'),
+        h('td', {}, x ? fmt(u(x.relaxed)) : '—'),
+        h('td', {}, x ? fmt(u(x.value)) : '—'),
+        h('td', {}, x ? fmt(u(x.bound)) : '—'),
       );
       tr.addEventListener('click', () => go(i + 1));
       return tr;
     });
     const done = s.shifts.filter((x): x is BakerShift => x !== null);
     if (done.length) {
+      // In the maximised sum: the best value is the largest, the bound the smallest.
       const best = Math.max(...done.map((x) => x.value));
       const bound = Math.min(...done.map((x) => x.bound));
       rows.forEach((tr, i) => {
@@ -200,7 +211,19 @@ export function createBakerView(ctx: TeachContext): TeachView {
       });
     }
     table.replaceChildren(
-      h('thead', {}, h('tr', {}, h('th', {}, 'shift'), h('th', { title: 'quad-graph edges cut' }, 'cut'), h('th', { title: 'optimum of what the shift keeps' }, 'kept opt.'), h('th', { title: 'convex edges of that triangulation' }, 'value'), h('th', { title: 'kept optimum + the most the cut factors could add' }, 'bound'))),
+      h(
+        'thead',
+        {},
+        h(
+          'tr',
+          {},
+          h('th', {}, 'shift'),
+          h('th', { title: 'factors cut (convex edges: edges between quads; mixed vertices: vertices whose quads straddle the cut)' }, 'cut'),
+          h('th', { title: max ? 'optimum of what the shift keeps (cut factors count 0)' : 'mixed vertices if every cut vertex were mixed, at the optimum of what the shift keeps' }, 'kept opt.'),
+          h('th', { title: max ? 'convex edges of that triangulation' : 'mixed vertices of that triangulation' }, 'value'),
+          h('th', { title: max ? 'kept optimum + the most the cut factors could add: the optimum is at most this' : 'the fewest mixed vertices are at least this' }, 'bound'),
+        ),
+      ),
       h('tbody', {}, ...rows),
     );
     table.hidden = s.shifts.length === 0;
@@ -229,14 +252,18 @@ export function createBakerView(ctx: TeachContext): TeachView {
       status.replaceChildren(
         h('b', {}, `Shift ${i}: `),
         cuts.length ? `cut between layers ${cuts.map((l) => `${l}|${l + 1}`).join(', ')} (red dashes). ` : 'no cut falls inside this terrain’s layers. ',
-        x ? `The thick layers' optimum keeps ${fmt(x.relaxed)}; its triangulation (amber flips) has ${fmt(x.value)}; the optimum is at most ${fmt(x.bound)}.` : '',
+        x
+          ? max
+            ? `The thick layers' optimum keeps ${fmt(x.relaxed)}; its triangulation (amber flips) has ${fmt(x.value)}; the optimum is at most ${fmt(x.bound)}.`
+            : `The thick layers' optimum, with every cut vertex counted as mixed, has ${fmt(u(x.relaxed))} mixed vertices; its triangulation (amber flips) has ${fmt(u(x.value))}; the fewest possible are at least ${fmt(u(x.bound))}.`
+          : '',
       );
     } else if (s.lambda) {
       const done2 = s.shifts.filter((x): x is BakerShift => x !== null);
       const best = done2.length ? done2.reduce((a, b) => (b.value > a.value ? b : a)) : null;
       status.replaceChildren(
         h('b', { id: 'baker-done' }, 'Result: '),
-        best ? `the best shift is ${best.shift} with ${fmt(best.value)}; the smallest bound is ${fmt(Math.min(...done2.map((x) => x.bound)))}. ` : '',
+        best ? `the best shift is ${best.shift} with ${fmt(u(best.value))}; the tightest bound is ${fmt(u(Math.min(...done2.map((x) => x.bound))))}. ` : '',
         s.solution ? `The library returns ${fmt(s.solution.value)} (amber flips)${s.solution.bound !== null ? `, proven within ${fmt(s.solution.bound)}` : ', proven optimal'}.` : '',
       );
     }
@@ -329,7 +356,8 @@ export function createBakerView(ctx: TeachContext): TeachView {
         layers: s?.layers ?? 0,
         position: pos,
         atEnd: s !== null && s.lambda !== null && pos === last(),
-        shifts: s?.shifts.map((x) => (x ? { shift: x.shift, cut: x.dropped.length, relaxed: x.relaxed, value: x.value, bound: x.bound } : null)) ?? [],
+        // In the objective's units (mixed vertices: value and lower bound).
+        shifts: s?.shifts.map((x) => (x ? { shift: x.shift, cut: x.dropped.length, relaxed: s.units(x.relaxed), value: s.units(x.value), bound: s.units(x.bound) } : null)) ?? [],
         library: s?.solution ? { value: s.solution.value, bound: s.solution.bound, details: s.solution.details } : null,
         note: s?.shiftsNote ?? null,
       };

@@ -3,7 +3,7 @@
 // the subdivision S), Baker's shifted layers, and an exact max-sum solver (variable
 // elimination) for what each shift keeps. It mirrors the library's model
 // (core/src/factor_models.cpp, baker.cpp) so that the bounds can be compared.
-import { edgeShape } from './geometry.ts';
+import { edgeShape, isMixed } from './geometry.ts';
 import type { QuadStructure, Tri } from './structure.ts';
 
 export interface Factor {
@@ -42,6 +42,54 @@ export function convexEdgeModel(s: QuadStructure): FactorGraph {
   }
   simplify(g);
   return g;
+}
+
+/** Section 4.2: the number of non-mixed interior vertices as a sum of factors,
+ * one per interior vertex over the quads at it (1 if not mixed), as the core
+ * builds it (the fewest mixed vertices = interior - the most non-mixed). */
+export function nonMixedModel(s: QuadStructure): { graph: FactorGraph; interior: number } {
+  const p = s.points;
+  const n = p.length / 3;
+  const onHull = new Uint8Array(n);
+  for (const v of s.hull) onHull[v] = 1;
+  const neighbours: Set<number>[] = Array.from({ length: n }, () => new Set());
+  const t = s.tri[0];
+  for (let e = 0; e < t.length; e++) {
+    const u = t[e]!, v = t[e % 3 === 2 ? e - 2 : e + 1]!;
+    neighbours[u]!.add(v);
+    neighbours[v]!.add(u);
+  }
+  const quadsAt: number[][] = Array.from({ length: n }, () => []);
+  for (let q = 0; q < s.m; q++) for (let j = 0; j < 4; j++) quadsAt[s.quads[4 * q + j]!]!.push(q);
+  const mixed: FactorGraph = { numVars: s.m, constant: 0, factors: [] };
+  let interior = 0;
+  for (let v = 0; v < n; v++) {
+    if (onHull[v] || neighbours[v]!.size === 0) continue;
+    interior++;
+    const qs = quadsAt[v]!;
+    const isDiagonal = (w: number) => qs.some((q) => (s.quads[4 * q] === v && s.quads[4 * q + 1] === w) || (s.quads[4 * q + 1] === v && s.quads[4 * q] === w));
+    const fixed = [...neighbours[v]!].filter((w) => !isDiagonal(w));
+    const table: number[] = [];
+    for (let idx = 0; idx < 1 << qs.length; idx++) {
+      const nb = fixed.slice();
+      qs.forEach((q, i) => {
+        const [a, b, c, d] = [s.quads[4 * q]!, s.quads[4 * q + 1]!, s.quads[4 * q + 2]!, s.quads[4 * q + 3]!];
+        const flipped = (idx >> i) & 1;
+        if (!flipped && (v === a || v === b)) nb.push(v === a ? b : a);
+        if (flipped && (v === c || v === d)) nb.push(v === c ? d : c);
+      });
+      table.push(isMixed(p, v, nb) ? 1 : 0);
+    }
+    if (qs.length === 0) mixed.constant += table[0]!;
+    else mixed.factors.push({ scope: qs.slice(), table });
+  }
+  simplify(mixed);
+  const graph: FactorGraph = {
+    numVars: s.m,
+    constant: interior - mixed.constant - mixed.factors.length,
+    factors: mixed.factors.map((f) => ({ scope: f.scope, table: f.table.map((x) => 1 - x) })),
+  };
+  return { graph, interior };
 }
 
 function simplify(g: FactorGraph): void {

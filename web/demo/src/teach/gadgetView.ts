@@ -138,7 +138,7 @@ export function createGadgetView(ctx: TeachContext): TeachView {
   function render(): void {
     canvas.redraw();
     caption.textContent = built?.solution
-      ? 'The solver’s optimum: red diagonals convex, blue reflex · green clause edges convex, grey reflex · dashed: a skipped column'
+      ? 'Optimum: red convex, blue reflex diagonals · green clause edge convex · dashed: a skipped column'
       : 'The construction';
     if (error || !built) {
       summary.replaceChildren(error ? h('span', { class: 'error' }, `Cannot build the gadget: ${error}.`) : 'Type a formula and press Build and solve.');

@@ -87,3 +87,61 @@ export function edgeShape(p: P, u: number, v: number, w: number, x: number): 0 |
   const s = o3 * o2;
   return s < 0 ? 0 : s > 0 ? 1 : 2;
 }
+
+function orient2d(p: P, a: number, b: number, c: number): number {
+  const d = (X(p, b) - X(p, a)) * (Y(p, c) - Y(p, a)) - (Y(p, b) - Y(p, a)) * (X(p, c) - X(p, a));
+  return d > 0 ? 1 : d < 0 ? -1 : 0;
+}
+
+/** Sign of the determinant [b - a, c - a, d - a] (positive: d above the plane of
+ * a counterclockwise triangle a, b, c). */
+function orient3d(p: P, a: number, b: number, c: number, d: number): number {
+  const ax = X(p, b) - X(p, a), ay = Y(p, b) - Y(p, a), az = Z(p, b) - Z(p, a);
+  const bx = X(p, c) - X(p, a), by = Y(p, c) - Y(p, a), bz = Z(p, c) - Z(p, a);
+  const cx = X(p, d) - X(p, a), cy = Y(p, d) - Y(p, a), cz = Z(p, d) - Z(p, a);
+  const det = ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx);
+  return det > 0 ? 1 : det < 0 ? -1 : 0;
+}
+
+/** Is interior vertex v mixed among its neighbours nb (every plane through v has
+ * neighbours strictly above and strictly below)? The core's vertex_class. */
+export function isMixed(p: P, v: number, nb: readonly number[]): boolean {
+  const d = nb.length;
+  const o = new Int8Array(d * d);
+  for (let i = 0; i < d; i++) {
+    for (let j = i + 1; j < d; j++) {
+      const s = orient2d(p, v, nb[i]!, nb[j]!);
+      o[i * d + j] = s;
+      o[j * d + i] = -s;
+    }
+  }
+  let fi = -1, fj = -1;
+  for (let i = 0; i < d && fi < 0; i++) {
+    for (let j = i + 1; j < d; j++) {
+      if (o[i * d + j] !== 0) {
+        fi = i;
+        fj = j;
+        break;
+      }
+    }
+  }
+  if (fi < 0) return false;
+  let flat = true;
+  for (let k = 0; k < d && flat; k++) flat = k === fi || k === fj || orient3d(p, v, nb[fi]!, nb[fj]!, nb[k]!) === 0;
+  if (flat) return false;
+  let below = false, above = false;
+  for (let i = 0; i < d; i++) {
+    for (let j = i + 1; j < d; j++) {
+      for (let k = j + 1; k < d; k++) {
+        const s = orient2d(p, nb[i]!, nb[j]!, nb[k]!);
+        if (s === 0) continue;
+        if (o[i * d + j]! * s < 0 || o[j * d + k]! * s < 0 || o[k * d + i]! * s < 0) continue;
+        const h = orient3d(p, nb[i]!, nb[j]!, nb[k]!, v) * s;
+        if (h < 0) below = true;
+        if (h > 0) above = true;
+        if (below && above) return true;
+      }
+    }
+  }
+  return false;
+}
