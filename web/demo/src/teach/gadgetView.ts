@@ -56,9 +56,9 @@ export function createGadgetView(ctx: TeachContext): TeachView {
     input,
     h('div', { class: 'buttons' }, build, open),
     summary,
+    verdict,
     vars,
     clauses,
-    verdict,
     honesty,
   );
   const canvas = createFittedCanvas(main, (c, f) => draw(c, f), 'The hardness gadget: variable pools, tentacles and clause edges');

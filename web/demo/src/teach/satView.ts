@@ -230,24 +230,24 @@ export function createSatView(ctx: TeachContext): TeachView {
       return e;
     };
     const steps = s.solution.trace.length;
-    const rowY = (i: number) => 40 + 14 * i;
+    const rowY = (i: number) => 50 + 15 * i;
     const height = rowY(steps) + 10;
     line.setAttribute('viewBox', `0 0 320 ${height}`);
     const nodes: SVGElement[] = [];
     const fmt = (v: number) => formatValue(s.model.objective, v);
-    nodes.push(el('text', { x: 20, y: 9, 'font-size': 9, fill: '#5d6b66' }, `${fmt(s.model.candidates[0]!)} (lower bound)`));
-    nodes.push(el('text', { x: 310, y: 9, 'font-size': 9, 'text-anchor': 'end', fill: '#5d6b66' }, `${fmt(s.model.candidates[N - 1]!)} (Delaunay)`));
-    nodes.push(el('line', { x1: 16, x2: 314, y1: 21, y2: 21, stroke: '#8a9691', 'stroke-width': 1 }));
+    nodes.push(el('text', { x: 16, y: 10, 'font-size': 10, fill: '#5d6b66' }, `${fmt(s.model.candidates[0]!)} (lower bound)`));
+    nodes.push(el('text', { x: 314, y: 10, 'font-size': 10, 'text-anchor': 'end', fill: '#5d6b66' }, `${fmt(s.model.candidates[N - 1]!)} (Delaunay)`));
+    nodes.push(el('line', { x1: 16, x2: 314, y1: 22, y2: 22, stroke: '#8a9691', 'stroke-width': 1 }));
     const stride = Math.max(1, Math.ceil(N / 120));
-    for (let i = 0; i < N; i += stride) nodes.push(el('line', { x1: x(i), x2: x(i), y1: 17, y2: 25, stroke: '#aab3af', 'stroke-width': 0.8 }));
-    nodes.push(el('text', { x: 165, y: 34, 'font-size': 8.5, 'text-anchor': 'middle', fill: '#8a9691' }, `${N} candidate values, in increasing order`));
+    for (let i = 0; i < N; i += stride) nodes.push(el('line', { x1: x(i), x2: x(i), y1: 18, y2: 26, stroke: '#aab3af', 'stroke-width': 0.8 }));
+    nodes.push(el('text', { x: 165, y: 38, 'font-size': 9.5, 'text-anchor': 'middle', fill: '#8a9691' }, `${N} candidate values, in increasing order; a row per test`));
     let lo = 0, hi = N - 1;
     const upto = Math.min(pos, steps);
     s.solution.trace.forEach((t, i) => {
       const y = rowY(i);
       const current = i + 1 === pos;
       const shown = i < upto;
-      nodes.push(el('text', { x: 2, y: y + 3, 'font-size': 8.5, fill: shown ? '#1e2a26' : '#c3cac7', 'font-weight': current ? 700 : 400 }, String(i + 1)));
+      nodes.push(el('text', { x: 2, y: y + 3.5, 'font-size': 10, fill: shown ? '#1e2a26' : '#c3cac7', 'font-weight': current ? 700 : 400 }, String(i + 1)));
       nodes.push(el('rect', { x: x(lo) - 3, y: y - 4, width: Math.max(6, x(hi) - x(lo) + 6), height: 8, rx: 4, fill: shown ? 'rgba(31, 119, 180, 0.16)' : 'rgba(31, 119, 180, 0.05)' }));
       const r = s.rank[i]!;
       if (shown) {
@@ -261,7 +261,7 @@ export function createSatView(ctx: TeachContext): TeachView {
       const y = rowY(steps);
       const cx = x(nearest(s.model.candidates, s.solution.value));
       nodes.push(el('path', { d: `M${cx} ${y - 6} l5 9 h-10 z`, fill: '#111' }));
-      nodes.push(el('text', { x: cx + (cx > 200 ? -8 : 8), y: y + 2, 'font-size': 9, 'font-weight': 700, 'text-anchor': cx > 200 ? 'end' : 'start', fill: '#111' }, `optimum ${fmt(s.solution.value)}`));
+      nodes.push(el('text', { x: cx + (cx > 200 ? -8 : 8), y: y + 3, 'font-size': 10, 'font-weight': 700, 'text-anchor': cx > 200 ? 'end' : 'start', fill: '#111' }, `optimum ${fmt(s.solution.value)}`));
     }
     line.replaceChildren(...nodes);
   }
