@@ -49,7 +49,7 @@ export function createGadgetView(ctx: TeachContext): TeachView {
     'p',
     { class: 'teach-note' },
     h('b', {}, 'Not a proof. '),
-    'The paper proves the reduction for planar formulas with pools larger than their number of tentacles. Here pools are at most 8 quads high (so the exact solver can handle them), and the tentacles turn corners and skip columns in ways the paper only sketches, so this page does not claim the construction is exact in general: it checks every instance instead (below the tables), by scoring the chessboard pattern of all 2ⁿ assignments.',
+    'The paper proves the reduction for planar formulas with pools larger than their number of tentacles. Here pools are at most 8 quads high (so the exact solver can handle them), and the tentacles turn corners and skip columns in ways the paper only sketches, so this page does not claim the construction is exact in general: it checks every instance instead (the check above), by scoring the chessboard pattern of all 2ⁿ assignments.',
   );
   side.append(
     h('label', { for: 'gadget-formula', class: 'teach-label' }, 'Formula (clauses of two literals, up to 10 variables)'),
