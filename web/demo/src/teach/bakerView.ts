@@ -17,7 +17,7 @@ import { readStructure, trianglesOf, type QuadStructure } from './structure.ts';
 
 const OBJECTIVES = ['max-convex-edges', 'min-mixed-vertices'] as const satisfies readonly ObjectiveId[];
 /** Per-shift values are recomputed in the browser up to this many quads. */
-const MAX_QUADS_FOR_SHIFTS = 1500;
+const MAX_QUADS_FOR_SHIFTS = 4000;
 const CUT_COLOR = '#d62728';
 
 interface State {
