@@ -13,5 +13,8 @@ export default defineConfig({
     testTimeout: 120_000,
     hookTimeout: 120_000,
     fileParallelism: false,
+    // Software WebGL on a shared 2-core machine: a browser test that times out is
+    // tried once more; a failure that repeats fails the run.
+    retry: 1,
   },
 });
