@@ -14,6 +14,7 @@ import { createFittedCanvas, drawBackdrop, layerColor, type FittedCanvas } from 
 import { button, createPane, paperLink, type TeachContext, type TeachView } from './common.ts';
 import { bakerShift, convexEdgeModel, isCut, nonMixedModel, TooWideError, type BakerShift, type FactorGraph } from './convexModel.ts';
 import { readStructure, trianglesOf, type QuadStructure } from './structure.ts';
+import { StepPlayer } from './stepPlayer.ts';
 
 const OBJECTIVES = ['max-convex-edges', 'min-mixed-vertices'] as const satisfies readonly ObjectiveId[];
 /** Per-shift values are recomputed in the browser up to this many quads. */
@@ -54,16 +55,17 @@ export function createBakerView(ctx: TeachContext): TeachView {
       update();
     });
   }
-  let timer = 0;
-  const play = button('baker-play', '▶ Play', 'Step through the shifts', () => (timer ? stop() : start()));
+  const player = new StepPlayer(() => last(), () => render(), 1400);
+  const play = button('baker-play', '▶ Play', 'Step through the shifts', () => player.toggle());
+  player.attach(play);
   const counter = h('span', { class: 'teach-counter', id: 'baker-counter' });
   const controls = h(
     'div',
     { class: 'teach-controls' },
-    button('baker-first', 'Start', 'Layers only', () => go(0)),
-    button('baker-prev', '◀ Prev', 'Previous shift', () => go(pos - 1)),
+    button('baker-first', 'Start', 'Layers only', () => player.go(0)),
+    button('baker-prev', '◀ Prev', 'Previous shift', () => player.go(player.pos - 1)),
     play,
-    button('baker-next', 'Next ▶', 'Next shift', () => go(pos + 1)),
+    button('baker-next', 'Next ▶', 'Next shift', () => player.go(player.pos + 1)),
     counter,
   );
   const status = h('p', { class: 'teach-status', id: 'baker-status', 'aria-live': 'polite' });
@@ -84,13 +86,12 @@ export function createBakerView(ctx: TeachContext): TeachView {
   let active = false;
   let stale = true;
   let state: State | null = null;
-  let pos = 0;
   let token = 0;
 
   function update(): void {
     if (!active || !stale) return;
     stale = false;
-    stop();
+    player.stop();
     const my = ++token;
     const eps = Math.min(0.95, Math.max(0.05, Number(epsilon.value) || 0.34));
     const id = objective.value as State['objective'];
@@ -99,7 +100,7 @@ export function createBakerView(ctx: TeachContext): TeachView {
     let layers = 0;
     for (const d of structure.quadDepth) layers = Math.max(layers, d + 1);
     state = { structure, objective: id, epsilon: eps, layers, lambda: null, solution: null, failure: null, model: null, units: (x) => x, shifts: [], shiftsNote: null };
-    pos = 0;
+    player.pos = 0;
     canvas.fit(structure.points);
     render();
     void ctx.solver.solve({ points: ctx.points(), objective: id, method: 'approx', epsilon: eps, order: 1 }).then((o) => {
@@ -148,22 +149,6 @@ export function createBakerView(ctx: TeachContext): TeachView {
   }
 
   const last = () => (state?.lambda ? state.lambda + 1 : 0);
-  function go(p: number): void {
-    pos = Math.max(0, Math.min(last(), p));
-    if (pos === last()) stop();
-    render();
-  }
-  function start(): void {
-    if (pos >= last()) pos = 0;
-    play.textContent = '⏸ Pause';
-    timer = window.setInterval(() => go(pos + 1), 1400);
-    render();
-  }
-  function stop(): void {
-    clearInterval(timer);
-    timer = 0;
-    play.textContent = '▶ Play';
-  }
 
   function render(): void {
     canvas.redraw();
@@ -174,13 +159,13 @@ export function createBakerView(ctx: TeachContext): TeachView {
     const max = s.objective === 'max-convex-edges';
     lambdaOut.textContent = s.lambda ? `λ = ${s.lambda}` : 'λ = …';
     lambdaOut.title = `⌈1/ε⌉ = ${Math.ceil(1 / s.epsilon - 1e-9)}; the library takes λ = ⌈span/ε⌉ where span is the most layers one of its factors straddles`;
-    counter.textContent = !s.lambda ? '' : pos === 0 ? 'layers' : pos > s.lambda ? 'result' : `shift ${pos - 1} of 0–${s.lambda - 1}`;
+    counter.textContent = !s.lambda ? '' : player.pos === 0 ? 'layers' : player.pos > s.lambda ? 'result' : `shift ${player.pos - 1} of 0–${s.lambda - 1}`;
     caption.textContent =
-      !s.lambda || pos === 0
+      !s.lambda || player.pos === 0
         ? 'Quads by layer (peeling depth), joined when they share an edge'
-        : pos > s.lambda
+        : player.pos > s.lambda
           ? 'The library’s result: flipped quads outlined amber'
-          : `Shift ${pos - 1}: red dashes are cut · amber outlines: this shift’s flips`;
+          : `Shift ${player.pos - 1}: red dashes are cut · amber outlines: this shift’s flips`;
     layerKey.replaceChildren(
       h('span', { class: 'muted' }, 'layer '),
       ...Array.from({ length: s.layers }, (_, l) => h('i', { style: `background: ${layerColor(l, s.layers)}`, title: `layer ${l}` }, String(l))),
@@ -189,14 +174,14 @@ export function createBakerView(ctx: TeachContext): TeachView {
     const rows = s.shifts.map((x, i) => {
       const tr = h(
         'tr',
-        { class: i + 1 === pos ? 'current' : '', 'data-shift': String(i) },
+        { class: i + 1 === player.pos ? 'current' : '', 'data-shift': String(i) },
         h('td', {}, String(i)),
         h('td', {}, x ? String(x.dropped.length) : s.model ? '…' : '—'),
         h('td', {}, x ? fmt(u(x.relaxed)) : '—'),
         h('td', {}, x ? fmt(u(x.value)) : '—'),
         h('td', {}, x ? fmt(u(x.bound)) : '—'),
       );
-      tr.addEventListener('click', () => go(i + 1));
+      tr.addEventListener('click', () => player.go(i + 1));
       return tr;
     });
     const done = s.shifts.filter((x): x is BakerShift => x !== null);
@@ -242,10 +227,10 @@ export function createBakerView(ctx: TeachContext): TeachView {
       libraryLine.textContent = s.failure ? `The library could not run the approximation: ${s.failure}` : 'Running the approximation…';
     }
     // What the current position shows.
-    if (pos === 0) {
+    if (player.pos === 0) {
       status.replaceChildren(`${s.structure.m} quads in ${s.layers} layers (depth of a quad: fewest Delaunay edges from the hull to one of its corners). `, s.lambda ? 'Press Next for the shifts.' : '');
-    } else if (s.lambda && pos <= s.lambda) {
-      const i = pos - 1;
+    } else if (s.lambda && player.pos <= s.lambda) {
+      const i = player.pos - 1;
       const cuts: number[] = [];
       for (let l = i; l < s.layers - 1; l += s.lambda) cuts.push(l);
       const x = s.shifts[i];
@@ -274,8 +259,8 @@ export function createBakerView(ctx: TeachContext): TeachView {
     if (!s) return;
     const st = s.structure;
     const p = st.points;
-    const shift = s.lambda && pos >= 1 && pos <= s.lambda ? pos - 1 : null;
-    const choice = shift !== null ? s.shifts[shift]?.choice : pos > 0 && s.solution ? s.solution.choice : null;
+    const shift = s.lambda && player.pos >= 1 && player.pos <= s.lambda ? player.pos - 1 : null;
+    const choice = shift !== null ? s.shifts[shift]?.choice : player.pos > 0 && s.solution ? s.solution.choice : null;
     drawBackdrop(c, f, p, trianglesOf(st, choice ?? new Uint8Array(st.m)), 0.25);
     // Quads filled by layer; flipped ones hatched amber.
     const byLayer = Array.from({ length: s.layers }, () => new Path2D());
@@ -340,7 +325,7 @@ export function createBakerView(ctx: TeachContext): TeachView {
     },
     deactivate() {
       active = false;
-      stop();
+      player.stop();
     },
     changed() {
       stale = true;
@@ -354,8 +339,8 @@ export function createBakerView(ctx: TeachContext): TeachView {
         epsilon: s?.epsilon ?? null,
         lambda: s?.lambda ?? null,
         layers: s?.layers ?? 0,
-        position: pos,
-        atEnd: s !== null && s.lambda !== null && pos === last(),
+        position: player.pos,
+        atEnd: s !== null && s.lambda !== null && player.pos === last(),
         // In the objective's units (mixed vertices: value and lower bound).
         shifts: s?.shifts.map((x) => (x ? { shift: x.shift, cut: x.dropped.length, relaxed: s.units(x.relaxed), value: s.units(x.value), bound: s.units(x.bound) } : null)) ?? [],
         library: s?.solution ? { value: s.solution.value, bound: s.solution.bound, details: s.solution.details } : null,

@@ -11,6 +11,7 @@ import { jitteredGridPoints } from '../terrains/jitteredGrid.ts';
 import { button, COMPONENT_COLORS, createPane, paperLink, type TeachContext, type TeachView } from './common.ts';
 import { analyseStep, buildPairModel, isPairObjective, PAIR_OBJECTIVES, type PairModel, type PairObjective, type Source, type StepAnalysis } from './pairModel.ts';
 import { readStructure, trianglesOf, type QuadStructure } from './structure.ts';
+import { StepPlayer } from './stepPlayer.ts';
 
 const OVER_COLOR = '#f28e2b';
 const BLOCK_COLOR = '#c62828';
@@ -55,15 +56,16 @@ export function createSatView(ctx: TeachContext): TeachView {
   const status = h('p', { class: 'teach-status', id: 'sat-status', 'aria-live': 'polite' });
   const list = h('ol', { class: 'sat-steps', id: 'sat-steps' });
   const counter = h('span', { class: 'teach-counter', id: 'sat-counter' });
-  let timer = 0;
-  const play = button('sat-play', '▶ Play', 'Step through the search', () => (timer ? stop() : start()));
+  const player = new StepPlayer(() => last(), () => render(), 1300);
+  const play = button('sat-play', '▶ Play', 'Step through the search', () => player.toggle());
+  player.attach(play);
   const controls = h(
     'div',
     { class: 'teach-controls' },
-    button('sat-first', 'Start', 'Back to the start', () => go(0)),
-    button('sat-prev', '◀ Prev', 'Previous step', () => go(pos - 1)),
+    button('sat-first', 'Start', 'Back to the start', () => player.go(0)),
+    button('sat-prev', '◀ Prev', 'Previous step', () => player.go(player.pos - 1)),
     play,
-    button('sat-next', 'Next ▶', 'Next step', () => go(pos + 1)),
+    button('sat-next', 'Next ▶', 'Next step', () => player.go(player.pos + 1)),
     counter,
   );
   const legend = h(
@@ -83,12 +85,11 @@ export function createSatView(ctx: TeachContext): TeachView {
   let stale = true;
   let state: State | null = null;
   let error: string | null = null;
-  let pos = 0;
 
   function update(): void {
     if (!active || !stale) return;
     stale = false;
-    stop();
+    player.stop();
     const id = objective.value as PairObjective;
     try {
       const terrain = ctx.terrain();
@@ -103,7 +104,7 @@ export function createSatView(ctx: TeachContext): TeachView {
       state = null;
       error = e instanceof Error ? e.message : String(e);
     }
-    pos = 0;
+    player.pos = 0;
     render();
   }
 
@@ -121,22 +122,6 @@ export function createSatView(ctx: TeachContext): TeachView {
   }
 
   const last = () => (state ? state.solution.trace.length + 1 : 0);
-  function go(p: number): void {
-    pos = Math.max(0, Math.min(last(), p));
-    if (pos === last()) stop();
-    render();
-  }
-  function start(): void {
-    if (pos >= last()) pos = 0;
-    play.textContent = '⏸ Pause';
-    timer = window.setInterval(() => go(pos + 1), 1300);
-    render();
-  }
-  function stop(): void {
-    clearInterval(timer);
-    timer = 0;
-    play.textContent = '▶ Play';
-  }
 
   function render(): void {
     canvas.redraw();
@@ -151,24 +136,24 @@ export function createSatView(ctx: TeachContext): TeachView {
     const id = s.model.objective;
     const fmt = (v: number) => formatValue(id, v);
     const n = s.solution.trace.length;
-    counter.textContent = pos === 0 ? 'start' : pos > n ? 'done' : `step ${pos} of ${n}`;
+    counter.textContent = player.pos === 0 ? 'start' : player.pos > n ? 'done' : `step ${player.pos} of ${n}`;
     caption.textContent =
-      pos === 0
+      player.pos === 0
         ? 'Delaunay triangulation · flippable quads in pale teal'
-        : pos > n
+        : player.pos > n
           ? `Optimum: ${fmt(s.solution.value)} · flipped quads amber, worst pair pink`
-          : `Step ${pos}: t = ${fmt(s.solution.trace[pos - 1]!.threshold)} · ${s.solution.trace[pos - 1]!.satisfiable ? 'yes: the 2-SAT solution shown' : 'no'}`;
+          : `Step ${player.pos}: t = ${fmt(s.solution.trace[player.pos - 1]!.threshold)} · ${s.solution.trace[player.pos - 1]!.satisfiable ? 'yes: the 2-SAT solution shown' : 'no'}`;
     // The step list.
     list.replaceChildren(
       ...s.solution.trace.map((t, i) => {
         const li = h(
           'li',
-          { class: `${t.satisfiable ? 'yes' : 'no'}${i + 1 === pos ? ' current' : ''}`, 'data-threshold': String(t.threshold) },
+          { class: `${t.satisfiable ? 'yes' : 'no'}${i + 1 === player.pos ? ' current' : ''}`, 'data-threshold': String(t.threshold) },
           h('b', {}, `t = ${fmt(t.threshold)}`),
           ` ${t.satisfiable ? '✓ yes' : '✗ no'}`,
           h('span', { class: 'muted' }, t.immediateNo ? ' · immediate no' : ` · ${t.clauses} clause${t.clauses === 1 ? '' : 's'} · ${t.forced} forced`),
         );
-        li.addEventListener('click', () => go(i + 1));
+        li.addEventListener('click', () => player.go(i + 1));
         return li;
       }),
     );
@@ -181,14 +166,14 @@ export function createSatView(ctx: TeachContext): TeachView {
         final(s.solution),
         '.',
       );
-    } else if (pos === 0) {
+    } else if (player.pos === 0) {
       status.replaceChildren(
         `${s.model.candidates.length} candidate values lie between the lower bound (${fmt(s.model.candidates[0]!)}) and the Delaunay value (${fmt(s.solution.delaunayValue)}). `,
         `Binary search tests ${n} of them. Press Next.`,
       );
-    } else if (pos <= n) {
-      const t = s.solution.trace[pos - 1]!;
-      const a = stepAt(pos - 1);
+    } else if (player.pos <= n) {
+      const t = s.solution.trace[player.pos - 1]!;
+      const a = stepAt(player.pos - 1);
       const parts: (string | Node)[] = [h('b', {}, `Is there a triangulation with ${measure} ≤ ${fmt(t.threshold)}? `)];
       if (a.fixedOver.length) parts.push(`${a.fixedOver.length} pair${a.fixedOver.length === 1 ? '' : 's'} of fixed triangles exceed it: no, immediately. `);
       else if (a.blocked.length) parts.push(`${a.blocked.length} quad${a.blocked.length === 1 ? ' has' : 's have'} both diagonals over it: no, immediately. `);
@@ -201,7 +186,7 @@ export function createSatView(ctx: TeachContext): TeachView {
         );
       }
       parts.push(t.satisfiable ? 'The optimum is at most t: search below.' : 'The optimum is above t: search above.');
-      if (s.mismatches.includes(pos - 1)) parts.push(h('span', { class: 'warn' }, ' (this page’s doubles disagree with the library here; the library is right)'));
+      if (s.mismatches.includes(player.pos - 1)) parts.push(h('span', { class: 'warn' }, ' (this page’s doubles disagree with the library here; the library is right)'));
       status.replaceChildren(...parts);
     } else {
       status.replaceChildren(
@@ -242,10 +227,10 @@ export function createSatView(ctx: TeachContext): TeachView {
     for (let i = 0; i < N; i += stride) nodes.push(el('line', { x1: x(i), x2: x(i), y1: 18, y2: 26, stroke: '#aab3af', 'stroke-width': 0.8 }));
     nodes.push(el('text', { x: 165, y: 38, 'font-size': 9.5, 'text-anchor': 'middle', fill: '#8a9691' }, `${N} candidate values, in increasing order; a row per test`));
     let lo = 0, hi = N - 1;
-    const upto = Math.min(pos, steps);
+    const upto = Math.min(player.pos, steps);
     s.solution.trace.forEach((t, i) => {
       const y = rowY(i);
-      const current = i + 1 === pos;
+      const current = i + 1 === player.pos;
       const shown = i < upto;
       nodes.push(el('text', { x: 2, y: y + 3.5, 'font-size': 10, fill: shown ? '#1e2a26' : '#c3cac7', 'font-weight': current ? 700 : 400 }, String(i + 1)));
       nodes.push(el('rect', { x: x(lo) - 3, y: y - 4, width: Math.max(6, x(hi) - x(lo) + 6), height: 8, rx: 4, fill: shown ? 'rgba(31, 119, 180, 0.16)' : 'rgba(31, 119, 180, 0.05)' }));
@@ -257,7 +242,7 @@ export function createSatView(ctx: TeachContext): TeachView {
       if (t.satisfiable) hi = r;
       else lo = r + 1;
     });
-    if (pos > steps) {
+    if (player.pos > steps) {
       const y = rowY(steps);
       const cx = x(nearest(s.model.candidates, s.solution.value));
       nodes.push(el('path', { d: `M${cx} ${y - 6} l5 9 h-10 z`, fill: '#111' }));
@@ -272,8 +257,8 @@ export function createSatView(ctx: TeachContext): TeachView {
     const st = s.structure;
     const p = st.points;
     const n = s.solution.trace.length;
-    const a = pos >= 1 && pos <= n ? stepAt(pos - 1) : null;
-    const choice = pos > n ? s.solution.choice : a?.sat?.assignment ?? new Uint8Array(st.m);
+    const a = player.pos >= 1 && player.pos <= n ? stepAt(player.pos - 1) : null;
+    const choice = player.pos > n ? s.solution.choice : a?.sat?.assignment ?? new Uint8Array(st.m);
     const triangles = trianglesOf(st, choice);
     drawBackdrop(c, f, p, triangles);
     // Quads: faint; flipped amber; forced strong; blocked red.
@@ -306,7 +291,7 @@ export function createSatView(ctx: TeachContext): TeachView {
     c.strokeStyle = 'rgba(40, 50, 46, 0.55)';
     c.lineWidth = 1;
     c.stroke(trianglePath(f, p, triangles, quadSlots(st)));
-    if (pos > n && s.solution.critical) {
+    if (player.pos > n && s.solution.critical) {
       const crit = new Path2D();
       for (const t of [s.solution.critical.first, s.solution.critical.second]) {
         t.forEach((v, j) => (j === 0 ? crit.moveTo(f.sx(p[3 * v]!), f.sy(p[3 * v + 1]!)) : crit.lineTo(f.sx(p[3 * v]!), f.sy(p[3 * v + 1]!))));
@@ -410,7 +395,7 @@ export function createSatView(ctx: TeachContext): TeachView {
     },
     deactivate() {
       active = false;
-      stop();
+      player.stop();
     },
     changed() {
       stale = true;
@@ -421,8 +406,8 @@ export function createSatView(ctx: TeachContext): TeachView {
       return {
         objective: objective.value,
         steps: s ? s.solution.trace.length : 0,
-        position: pos,
-        atEnd: s !== null && pos === last(),
+        position: player.pos,
+        atEnd: s !== null && player.pos === last(),
         value: s?.solution.value ?? null,
         trace: s?.solution.trace ?? [],
         mismatches: s?.mismatches ?? [],
