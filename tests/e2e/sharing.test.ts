@@ -27,8 +27,8 @@ describe('sharing', () => {
     await settled(page, h.solves);
     await page.click('.segmented button[data-view="plan"]');
     await page.click('#copy-link');
+    await expect.poll(() => page.locator('#link').inputValue()).toMatch(/#v1=[A-Za-z0-9_-]+$/);
     const link = await page.locator('#link').inputValue();
-    expect(link).toMatch(/#v1=[A-Za-z0-9_-]+$/);
     const original = await hooks(page);
 
     const other = await openPage(demo, link.slice(link.indexOf('#')));

@@ -348,6 +348,7 @@ export function startApp(hodt: Hodt): void {
       return;
     }
     const size = `${(url.length / 1024).toFixed(1)} KB`;
+    toolbar.showLink(url, `Copy this link (${size}):`);  // at once; the clipboard may take a while
     try {
       await navigator.clipboard.writeText(url);
       toolbar.showLink(url, `Link copied (${size}).`);
