@@ -86,24 +86,47 @@ std::string link_halfedges(Mesh& m) {
 
 void canonicalize(Mesh& m) {
   const uint32_t nt = m.num_triangles(), nv = m.num_vertices();
+  // Rotate each triangle to start at its smallest vertex; remember by how much.
+  std::vector<uint8_t> rotation(nt);
   for (uint32_t t = 0; t < nt; ++t) {
     uint32_t* v = &m.triangles[3 * t];
-    while (v[0] > v[1] || v[0] > v[2]) std::rotate(v, v + 1, v + 3);
+    const uint8_t r = v[1] < v[0] && v[1] < v[2] ? 1 : v[2] < v[0] && v[2] < v[1] ? 2 : 0;
+    std::rotate(v, v + r, v + 3);
+    rotation[t] = r;
   }
   // Counting sort by first vertex, then by second within each bucket.
   std::vector<uint32_t> start(nv + 1, 0);
   for (uint32_t t = 0; t < nt; ++t) ++start[m.triangles[3 * t] + 1];
   for (uint32_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-  std::vector<uint32_t> order(nt), fill(start.begin(), start.end() - 1);
-  for (uint32_t t = 0; t < nt; ++t) order[fill[m.triangles[3 * t]]++] = t;
+  std::vector<uint32_t> order(nt);
+  for (uint32_t t = 0; t < nt; ++t) order[start[m.triangles[3 * t]]++] = t;  // start[v] ends at v + 1's
+  for (uint32_t v = nv; v-- > 0;) start[v + 1] = start[v];
+  start[0] = 0;
   for (uint32_t v = 0; v < nv; ++v)
     std::sort(order.begin() + start[v], order.begin() + start[v + 1],
               [&](uint32_t s, uint32_t t) { return m.triangles[3 * s + 1] < m.triangles[3 * t + 1]; });
-  std::vector<uint32_t> sorted(m.triangles.size());
-  for (uint32_t k = 0; k < nt; ++k)
-    std::copy_n(&m.triangles[3 * order[k]], 3, &sorted[3 * k]);
-  m.triangles.swap(sorted);
-  link_halfedges(m);
+  start = {};
+  {
+    std::vector<uint32_t> sorted(m.triangles.size());
+    for (uint32_t k = 0; k < nt; ++k) std::copy_n(&m.triangles[3 * order[k]], 3, &sorted[3 * k]);
+    m.triangles.swap(sorted);
+  }
+  if (m.halfedges.size() != m.triangles.size()) {
+    link_halfedges(m);
+    return;
+  }
+  // Halfedges known: renumber them instead of relinking (halfedge 3t + k of old
+  // triangle t is now 3 * position(t) + (k - rotation) mod 3).
+  std::vector<uint32_t> position(nt);
+  for (uint32_t k = 0; k < nt; ++k) position[order[k]] = k;
+  order = {};
+  auto renumber = [&](uint32_t e) { return 3 * position[e / 3] + (e % 3 + 3 - rotation[e / 3]) % 3; };
+  std::vector<int32_t> twins(m.halfedges.size());
+  for (uint32_t e = 0; e < twins.size(); ++e) {
+    const int32_t f = m.halfedges[e];
+    twins[renumber(e)] = f < 0 ? -1 : static_cast<int32_t>(renumber(static_cast<uint32_t>(f)));
+  }
+  m.halfedges.swap(twins);
 }
 
 std::vector<int32_t> vertex_halfedges(const Mesh& m) {

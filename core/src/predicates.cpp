@@ -7,15 +7,11 @@
 
 namespace hodt {
 namespace {
-// Semi-static filters (Shewchuk, "Adaptive precision floating-point arithmetic",
-// error bounds A): in round-to-nearest the double evaluation's sign is right when
-// |det| exceeds the bound; otherwise CGAL decides exactly. The bounds assume no
-// underflow, so tiny permanents also go to CGAL.
-constexpr double kEps = 0x1p-53;
-constexpr double kOrient2dBound = (3.0 + 16.0 * kEps) * kEps;
+// The semi-static filters are inline in predicates.hpp; what they cannot decide
+// comes here.
+using detail::kEps;
+using detail::kTiny;
 constexpr double kOrient3dBound = (7.0 + 56.0 * kEps) * kEps;
-constexpr double kInCircleBound = (10.0 + 96.0 * kEps) * kEps;
-constexpr double kTiny = 0x1p-900;
 inline int sign_of(double d) { return (d > 0) - (d < 0); }
 
 // Exact integer arithmetic for the cases the filter cannot decide and that are
@@ -41,10 +37,7 @@ Point3 p3(const double* p) { return Point3(p[0], p[1], p[2]); }
 int sign(CGAL::Sign s) { return static_cast<int>(s); }
 }  // namespace
 
-int orient2d(const double* a, const double* b, const double* c) {
-  const double l = (a[0] - c[0]) * (b[1] - c[1]), r = (a[1] - c[1]) * (b[0] - c[0]);
-  const double det = l - r, sum = std::abs(l) + std::abs(r);
-  if (std::abs(det) > kOrient2dBound * sum && sum > kTiny) return sign_of(det);
+int detail::orient2d_exact(const double* a, const double* b, const double* c) {
   const double* pts[3] = {a, b, c};
   int64_t v[6];
   if (integer_coords(pts, 3, v)) {  // |differences| < 2^25: products fit in 64 bits
@@ -73,16 +66,7 @@ int compare_xy(const double* a, const double* b) {  // comparisons of doubles ar
   return a[0] < b[0] ? -1 : a[0] > b[0] ? 1 : a[1] < b[1] ? -1 : a[1] > b[1] ? 1 : 0;
 }
 
-int in_circle_sign(const double* a, const double* b, const double* c, const double* d) {
-  const double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
-  const double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
-  const double alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy, clift = cdx * cdx + cdy * cdy;
-  const double bc = bdx * cdy - cdx * bdy, ca = cdx * ady - adx * cdy, ab = adx * bdy - bdx * ady;
-  const double det = alift * bc + blift * ca + clift * ab;
-  const double perm = (std::abs(bdx * cdy) + std::abs(cdx * bdy)) * alift +
-                      (std::abs(cdx * ady) + std::abs(adx * cdy)) * blift +
-                      (std::abs(adx * bdy) + std::abs(bdx * ady)) * clift;
-  if (std::abs(det) > kInCircleBound * perm && perm > kTiny) return sign_of(det);
+int detail::in_circle_exact(const double* a, const double* b, const double* c, const double* d) {
   const double* pts[4] = {a, b, c, d};
   int64_t v[8];
   if (integer_coords(pts, 4, v)) {  // |differences| < 2^25, lifts < 2^51: 128 bits suffice
@@ -108,9 +92,7 @@ int diametral_sign(const double* p, const double* q, const double* r) {
 // Mirrors Triangulation_2::side_of_oriented_circle(p0, p1, p2, p, perturb = true)
 // so that this predicate and CGAL's Delaunay triangulation decide degenerate
 // (cocircular) cases the same way.
-bool in_circle(const double* a, const double* b, const double* c, const double* d) {
-  const int s = in_circle_sign(a, b, c, d);
-  if (s != 0) return s > 0;
+bool detail::in_circle_perturbed(const double* a, const double* b, const double* c, const double* d) {
   const Point2 p0 = p2(a), p1 = p2(b), q2 = p2(c), p = p2(d);
   const Point2* pts[4] = {&p0, &p1, &q2, &p};
   std::sort(pts, pts + 4, [](const Point2* u, const Point2* v) {

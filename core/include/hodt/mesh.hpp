@@ -33,8 +33,9 @@ struct Mesh {
 void flip_edge(Mesh& mesh, uint32_t e);
 
 // Puts the triangles in a canonical order (each triangle starts at its smallest
-// vertex; triangles sorted by first, then second vertex) and rebuilds halfedges and
-// hull, so that equal triangulations give identical arrays on every platform.
+// vertex; triangles sorted by first, then second vertex), so that equal
+// triangulations give identical arrays on every platform. Halfedges are renumbered
+// if present, else linked (with the hull) by link_halfedges.
 void canonicalize(Mesh& mesh);
 
 // Rebuilds halfedges and hull from triangles. Returns an error message (empty if

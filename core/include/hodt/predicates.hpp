@@ -1,27 +1,61 @@
 // Exact geometric decisions. Every yes/no question of the project goes through
 // these functions; measured values (areas, angles) live in measures.hpp.
 #pragma once
+#include <cmath>
 #include <cstdint>
-#include <vector>
 
 namespace hodt {
 
+namespace detail {
+// Semi-static filters (Shewchuk, "Adaptive precision floating-point arithmetic",
+// error bounds A), inline because they decide almost every call: in
+// round-to-nearest the double evaluation's sign is right when |det| exceeds the
+// bound. The bounds assume no underflow, so tiny permanents go to the exact path
+// (64/128-bit integers for grid-like coordinates, else CGAL) in predicates.cpp.
+constexpr double kEps = 0x1p-53;
+constexpr double kOrient2dBound = (3.0 + 16.0 * kEps) * kEps;
+constexpr double kInCircleBound = (10.0 + 96.0 * kEps) * kEps;
+constexpr double kTiny = 0x1p-900;
+int orient2d_exact(const double* a, const double* b, const double* c);
+int in_circle_exact(const double* a, const double* b, const double* c, const double* d);
+bool in_circle_perturbed(const double* a, const double* b, const double* c, const double* d);
+}  // namespace detail
+
 // Sign of the xy orientation of (a, b, c): +1 counterclockwise, -1 clockwise, 0 collinear.
-int orient2d(const double* a, const double* b, const double* c);
+inline int orient2d(const double* a, const double* b, const double* c) {
+  const double l = (a[0] - c[0]) * (b[1] - c[1]), r = (a[1] - c[1]) * (b[0] - c[0]);
+  const double det = l - r, sum = std::abs(l) + std::abs(r);
+  if (std::abs(det) > detail::kOrient2dBound * sum && sum > detail::kTiny) return (det > 0) - (det < 0);
+  return detail::orient2d_exact(a, b, c);
+}
 
 // Sign of the 3D orientation: +1 if d lies strictly above the plane through the
 // lifted points a, b, c when (a, b, c) is counterclockwise in xy, -1 below, 0 on it.
 int orient3d(const double* a, const double* b, const double* c, const double* d);
 
+// Unperturbed in-circle sign: +1 if d is strictly inside the circle through a, b, c
+// (counterclockwise), 0 on it, -1 outside.
+inline int in_circle_sign(const double* a, const double* b, const double* c, const double* d) {
+  const double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
+  const double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
+  const double alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy, clift = cdx * cdx + cdy * cdy;
+  const double bc = bdx * cdy - cdx * bdy, ca = cdx * ady - adx * cdy, ab = adx * bdy - bdx * ady;
+  const double det = alift * bc + blift * ca + clift * ab;
+  const double perm = (std::abs(bdx * cdy) + std::abs(cdx * bdy)) * alift +
+                      (std::abs(cdx * ady) + std::abs(adx * cdy)) * blift +
+                      (std::abs(adx * bdy) + std::abs(bdx * ady)) * clift;
+  if (std::abs(det) > detail::kInCircleBound * perm && perm > detail::kTiny) return (det > 0) - (det < 0);
+  return detail::in_circle_exact(a, b, c, d);
+}
+
 // Is d strictly inside the circle through a, b, c (counterclockwise)? Points on the
 // circle are decided by CGAL's symbolic perturbation (lexicographic xy order), the
 // same one that makes the Delaunay triangulation unique; so this predicate never
 // answers "on the circle" and agrees with every decision the triangulation made.
-bool in_circle(const double* a, const double* b, const double* c, const double* d);
-
-// Unperturbed in-circle sign: +1 if d is strictly inside the circle through a, b, c
-// (counterclockwise), 0 on it, -1 outside.
-int in_circle_sign(const double* a, const double* b, const double* c, const double* d);
+inline bool in_circle(const double* a, const double* b, const double* c, const double* d) {
+  const int s = in_circle_sign(a, b, c, d);
+  return s != 0 ? s > 0 : detail::in_circle_perturbed(a, b, c, d);
+}
 
 // Position of r against the circle with diameter pq: +1 inside, 0 on, -1 outside.
 int diametral_sign(const double* p, const double* q, const double* r);

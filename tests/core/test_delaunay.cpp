@@ -1,0 +1,78 @@
+// hodt's triangulator (core/src/delaunay.cpp) against CGAL's Delaunay_triangulation_2:
+// the same triangles on random, clustered and degenerate input (grids, cocircular
+// points, collinear runs on the hull, points on edges), in any input order.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+
+#include "cgal_delaunay.hpp"
+#include "generators.hpp"
+#include "hodt/delaunay.hpp"
+#include "hodt/error.hpp"
+#include "hodt/points.hpp"
+
+using namespace hodt;
+using namespace hodt::test;
+
+namespace {
+
+void same_as_cgal(const std::vector<double>& input) {
+  std::vector<double> xyz;
+  try {
+    xyz = validate_points(input, Dedupe::KeepFirst).xyz;
+  } catch (const InputError&) {
+    return;  // a random draw with all points collinear: not a terrain
+  }
+  const Mesh m = delaunay(xyz);
+  REQUIRE(validate(m) == "");
+  CHECK(m.num_triangles() == 2 * m.num_vertices() - 2 - m.hull.size());
+  CHECK(triangle_set(m) == cgal_delaunay(xyz));
+}
+
+// Small integer coordinates: many collinear triples and cocircular quadruples.
+std::vector<double> integer_points(int n, int range, uint64_t seed) {
+  Rng r(seed);
+  std::vector<double> p;
+  for (int i = 0; i < n; ++i) p.insert(p.end(), {double(r.below(range)), double(r.below(range)), r.uniform()});
+  return p;
+}
+
+std::vector<double> shuffled(std::vector<double> p, uint64_t seed) {
+  Rng r(seed);
+  const int n = static_cast<int>(p.size() / 3);
+  for (int i = n - 1; i > 0; --i) {
+    const int j = r.below(i + 1);
+    for (int k = 0; k < 3; ++k) std::swap(p[3 * i + k], p[3 * j + k]);
+  }
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("triangulator equals CGAL on random and DEM-like points") {
+  for (uint64_t seed = 1; seed <= 200; ++seed) {
+    same_as_cgal(uniform_points(3 + int(seed % 40), seed));
+    same_as_cgal(dem_points(20 + int(seed), seed));
+  }
+  same_as_cgal(uniform_points(20000, 1));
+}
+
+TEST_CASE("triangulator equals CGAL on degenerate input") {
+  for (uint64_t seed = 1; seed <= 300; ++seed) {
+    same_as_cgal(integer_points(4 + int(seed % 30), 3 + int(seed % 6), seed));  // collinear and cocircular
+    same_as_cgal(shuffled(grid_points(2 + int(seed % 9), 2 + int(seed % 7), seed), seed));
+    same_as_cgal(shuffled(cocircular_points(3 + int(seed % 10), seed), seed));
+  }
+  same_as_cgal(grid_points(100, 100, 1));
+  // Collinear points first: the seed triangle comes late, and the first points lie
+  // on its edges or on their extensions.
+  std::vector<double> line;
+  for (int i = 0; i < 30; ++i) line.insert(line.end(), {double(i), double(i), 0.0});
+  line.insert(line.end(), {5.0, 0.0, 0.0, 0.0, 5.0, 0.0, 40.0, 3.0, 0.0});
+  same_as_cgal(line);
+  // Points on a hull edge and on its extensions.
+  std::vector<double> box = {0, 0, 0, 10, 0, 0, 10, 10, 0, 0, 10, 0};
+  for (int i = -5; i <= 15; i += 2) box.insert(box.end(), {double(i), 0.0, 0.0});
+  same_as_cgal(box);
+  same_as_cgal(shuffled(box, 3));
+}
