@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "hodt/circle_count.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/error.hpp"
 #include "hodt/predicates.hpp"
@@ -56,36 +55,48 @@ FirstOrder assemble(Mesh base, std::vector<Quad> quads, bool is_delaunay) {
   return fo;
 }
 
-}  // namespace
-
-// Cheap rejection: the triangles beyond the quad's four sides are the likeliest
-// second point inside the flipped triangles' circles (b is in circle(a, d, c) and a
-// in circle(d, b, c) by construction). Finding one there proves "not flippable";
-// not finding one proves nothing, and the full circle walk decides.
-bool quick_reject(const Mesh& m, uint32_t e, const Quad& q) {
-  const uint32_t f = static_cast<uint32_t>(m.halfedges[e]);
-  const double *a = m.point(q.a), *b = m.point(q.b), *c = m.point(q.c), *d = m.point(q.d);
-  for (uint32_t side : {next_halfedge(e), prev_halfedge(e), next_halfedge(f), prev_halfedge(f)}) {
-    const int32_t t = m.halfedges[side];
-    if (t < 0) continue;
-    const uint32_t p = m.apex(static_cast<uint32_t>(t));
-    if (p == q.a || p == q.b || p == q.c || p == q.d) continue;
-    if (in_circle(a, d, c, m.point(p)) || in_circle(d, b, c, m.point(p))) return true;
+// Is a neighbour of v, other than the skipped three, strictly inside the circle
+// of (p, q, r)? out[v] is an outgoing halfedge of v (the hull one on the hull).
+bool neighbour_inside(const Mesh& m, const std::vector<int32_t>& out, uint32_t v, const double* p,
+                      const double* q, const double* r, const uint32_t skip[3]) {
+  const uint32_t start = static_cast<uint32_t>(out[v]);
+  uint32_t e = start;
+  for (;;) {
+    const uint32_t w = m.target(e);
+    if (w != skip[0] && w != skip[1] && w != skip[2] && in_circle(p, q, r, m.point(w))) return true;
+    const int32_t t = m.halfedges[prev_halfedge(e)];
+    if (t < 0) {  // v on the hull: the last neighbour is this triangle's apex
+      const uint32_t x = m.apex(e);
+      return x != skip[0] && x != skip[1] && x != skip[2] && in_circle(p, q, r, m.point(x));
+    }
+    e = static_cast<uint32_t>(t);
+    if (e == start) return false;
   }
-  return false;
 }
 
+}  // namespace
+
+// Quad (a, b, c, d) with Delaunay diagonal ab is flippable iff it is strictly
+// convex and b is the only point inside circle(a, d, c) and a the only point inside
+// circle(d, b, c). b is inside the first (it is the other diagonal's end), and the
+// points strictly inside a circle through three vertices induce a connected
+// subgraph of the Delaunay triangulation (lifted to the paraboloid they are the
+// vertices below a plane, and a linear function on the lower hull decreases along
+// edges to its minimum; circle_count.hpp). So a second point inside would make a
+// neighbour of b inside: checking b's star (and a's for the other circle) decides.
 FirstOrder first_order(Mesh dt) {
   std::vector<Quad> quads;
-  CircleCounter circles(dt);
+  const std::vector<int32_t> out = vertex_halfedges(dt);
   for (uint32_t e = 0; e < dt.halfedges.size(); ++e) {
     const int32_t f = dt.halfedges[e];
     if (f < static_cast<int32_t>(e)) continue;  // hull edge, or seen from its twin
     const Quad q = quad_at(dt, e);
     if (!strictly_convex(dt, q.a, q.b, q.c, q.d)) continue;
-    if (quick_reject(dt, e, q)) continue;
-    if (circles.count(q.a, q.d, q.c, 1) > 1) continue;
-    if (circles.count(q.d, q.b, q.c, 1) > 1) continue;
+    const double *a = dt.point(q.a), *b = dt.point(q.b), *c = dt.point(q.c), *d = dt.point(q.d);
+    const uint32_t skip[3] = {q.a, q.c, q.d};
+    if (neighbour_inside(dt, out, q.b, a, d, c, skip)) continue;
+    const uint32_t skip_b[3] = {q.b, q.c, q.d};
+    if (neighbour_inside(dt, out, q.a, d, b, c, skip_b)) continue;
     quads.push_back(q);
   }
   // No triangle is in two flippable quads ([10]; the paper, Section 2): a violation

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "hodt/error.hpp"
 #include "hodt/format.hpp"
 #include "hodt/predicates.hpp"
+#include "hodt/spatial_order.hpp"
 
 namespace hodt {
 
@@ -16,7 +16,8 @@ std::string PointLabels::describe(size_t i) const {
   return s;
 }
 
-TerrainPoints validate_points(std::vector<double> xyz, Dedupe dedupe, const PointLabels& labels) {
+TerrainPoints validate_points(std::vector<double> xyz, Dedupe dedupe, const PointLabels& labels,
+                              PointOrder point_order) {
   if (xyz.size() % 3 != 0)
     throw InputError("expected x, y, z per point: " + std::to_string(xyz.size()) +
                      " numbers is not a multiple of 3");
@@ -28,42 +29,49 @@ TerrainPoints validate_points(std::vector<double> xyz, Dedupe dedupe, const Poin
         throw InputError(labels.describe(i) + ": " + axis[k] + " is " +
                          format_number(xyz[3 * i + k]) + ", expected a finite number");
 
-  // Sort by (x, y), ties by index, to find duplicates: equal points become
-  // neighbours, the earliest input index first. (Comparisons of doubles are exact.)
-  std::vector<uint32_t> order(n);
-  std::iota(order.begin(), order.end(), 0u);
-  const double* c = xyz.data();
-  std::sort(order.begin(), order.end(), [c](uint32_t a, uint32_t b) {
-    const double ax = c[3 * size_t(a)], bx = c[3 * size_t(b)];
-    if (ax != bx) return ax < bx;
-    const double ay = c[3 * size_t(a) + 1], by = c[3 * size_t(b) + 1];
-    return ay != by ? ay < by : a < b;
-  });
+  // Along the spatial order equal points are consecutive, the earliest input index
+  // first; the first of each run is kept. The error names the run with the
+  // smallest (x, y) and its two earliest points, whatever the order.
+  std::vector<uint32_t> order = spatial_order(xyz);
   std::vector<char> keep(n, 1);
-  for (size_t k = 1; k < n; ++k) {
-    const uint32_t a = order[k - 1], b = order[k];
-    if (compare_xy(&xyz[3 * a], &xyz[3 * b]) != 0) continue;
-    if (dedupe == Dedupe::Error) {
-      throw InputError(labels.describe(a) + " and " + labels.describe(b) +
-                       " have the same (x, y) = (" +
-                       format_number(xyz[3 * a]) + ", " + format_number(xyz[3 * a + 1]) +
-                       "); remove one or ask for dedupe \"first\"");
+  size_t dropped = 0;
+  const double* worst = nullptr;
+  uint32_t worst_a = 0, worst_b = 0;
+  for (size_t k = 1, first = 0; k < n; ++k) {
+    const uint32_t a = order[first], b = order[k];
+    if (compare_xy(&xyz[3 * size_t(a)], &xyz[3 * size_t(b)]) != 0) {
+      first = k;
+      continue;
     }
-    keep[b] = 0;   // the stable sort put the earliest input index of a run first
-    order[k] = a;  // so later duplicates are compared with it
+    if (keep[a] && dedupe == Dedupe::Error && (!worst || compare_xy(&xyz[3 * size_t(a)], worst) < 0))
+      worst = &xyz[3 * size_t(a)], worst_a = a, worst_b = b;
+    keep[b] = 0;
+    ++dropped;
   }
+  if (worst)
+    throw InputError(labels.describe(worst_a) + " and " + labels.describe(worst_b) + " have the same (x, y) = (" +
+                     format_number(worst[0]) + ", " + format_number(worst[1]) +
+                     "); remove one or ask for dedupe \"first\"");
 
-  order = {};
   TerrainPoints out;
-  out.input_index.reserve(n);
-  for (size_t i = 0; i < n; ++i)
-    if (keep[i]) out.input_index.push_back(static_cast<uint32_t>(i));
-  if (out.input_index.size() == n) {
-    out.xyz = std::move(xyz);  // nothing dropped: no copy
+  const size_t m = n - dropped;
+  out.input_index.reserve(m);
+  if (point_order == PointOrder::Spatial) {
+    out.xyz.resize(3 * m);
+    for (uint32_t i : order)
+      if (keep[i]) {
+        std::copy_n(&xyz[3 * size_t(i)], 3, &out.xyz[3 * out.input_index.size()]);
+        out.input_index.push_back(i);
+      }
   } else {
-    for (uint32_t i : out.input_index) out.xyz.insert(out.xyz.end(), &xyz[3 * i], &xyz[3 * i + 3]);
+    for (uint32_t i = 0; i < n; ++i)
+      if (keep[i]) out.input_index.push_back(i);
+    if (m == n) {
+      out.xyz = std::move(xyz);  // nothing dropped: no copy
+    } else {
+      for (uint32_t i : out.input_index) out.xyz.insert(out.xyz.end(), &xyz[3 * i], &xyz[3 * i + 3]);
+    }
   }
-  const size_t m = out.input_index.size();
   if (m < 3)
     throw InputError("need at least 3 distinct points, got " + std::to_string(m));
   const double* p = &out.xyz[0];

@@ -32,7 +32,16 @@ std::vector<uint32_t> spatial_order(const std::vector<double>& xyz) {
     }
     keys[i] = {spread(q[0]) | (spread(q[1]) << 1), static_cast<uint32_t>(i)};
   }
-  std::sort(keys.begin(), keys.end());
+  // Equal keys (rare: closer than the quantum) are ordered by x, y, then index, so
+  // that equal points end up next to each other (validate_points relies on it).
+  const double* c = xyz.data();
+  std::sort(keys.begin(), keys.end(), [c](const auto& a, const auto& b) {
+    if (a.first != b.first) return a.first < b.first;
+    const double *p = c + 3 * size_t(a.second), *q = c + 3 * size_t(b.second);
+    if (p[0] != q[0]) return p[0] < q[0];
+    if (p[1] != q[1]) return p[1] < q[1];
+    return a.second < b.second;
+  });
   std::vector<uint32_t> order(n);
   for (size_t k = 0; k < n; ++k) order[k] = keys[k].second;
   return order;

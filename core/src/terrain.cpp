@@ -2,7 +2,6 @@
 
 #include "hodt/delaunay.hpp"
 #include "hodt/error.hpp"
-#include "hodt/spatial_order.hpp"
 
 #include <algorithm>
 
@@ -11,18 +10,11 @@ namespace hodt {
 Terrain Terrain::from_points(std::vector<double> xyz, Dedupe dedupe, const PointLabels& labels) {
   Terrain t;
   t.num_input_ = static_cast<uint32_t>(xyz.size() / 3);
-  TerrainPoints pts = validate_points(std::move(xyz), dedupe, labels);
   // Vertices are numbered along a space-filling curve (cache-friendly); every
   // index leaving the terrain goes back through input_index_.
-  const std::vector<uint32_t> order = spatial_order(pts.xyz);
-  std::vector<double> sorted(pts.xyz.size());
-  t.input_index_.resize(order.size());
-  for (size_t k = 0; k < order.size(); ++k) {
-    std::copy_n(&pts.xyz[3 * size_t(order[k])], 3, &sorted[3 * k]);
-    t.input_index_[k] = pts.input_index[order[k]];
-  }
-  pts = {};  // the unsorted copy is not needed any more
-  t.fo_ = first_order(delaunay(std::move(sorted), true));
+  TerrainPoints pts = validate_points(std::move(xyz), dedupe, labels, PointOrder::Spatial);
+  t.input_index_ = std::move(pts.input_index);
+  t.fo_ = first_order(delaunay(std::move(pts.xyz), true));
   return t;
 }
 

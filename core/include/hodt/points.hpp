@@ -7,6 +7,9 @@
 namespace hodt {
 
 enum class Dedupe { Error, KeepFirst };
+// Input: kept points in input order. Spatial: along spatial_order() (what the
+// triangulation wants; input_index maps back).
+enum class PointOrder { Input, Spatial };
 
 // The points the triangulation uses: validated, duplicates removed if asked.
 struct TerrainPoints {
@@ -24,6 +27,6 @@ struct PointLabels {
 // coordinates (naming index and coordinate), duplicate (x, y) (naming both indices,
 // unless dedupe == KeepFirst), fewer than 3 points, all points collinear.
 TerrainPoints validate_points(std::vector<double> xyz, Dedupe dedupe = Dedupe::Error,
-                              const PointLabels& labels = {});
+                              const PointLabels& labels = {}, PointOrder order = PointOrder::Input);
 
 }  // namespace hodt

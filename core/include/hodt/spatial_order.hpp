@@ -8,7 +8,8 @@
 namespace hodt {
 
 // The permutation: order[k] is the index of the k-th point along the curve.
-// Deterministic on every platform (integer keys, ties by index).
+// Deterministic on every platform (integer keys, ties by x, y, index: equal points
+// are consecutive).
 std::vector<uint32_t> spatial_order(const std::vector<double>& xyz);
 
 }  // namespace hodt
