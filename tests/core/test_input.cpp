@@ -1,5 +1,6 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -45,6 +46,15 @@ TEST_CASE("duplicates: an error naming both indices, or dropped with dedupe firs
   // Three equal points: the first is kept.
   const TerrainPoints u = validate_points({2, 2, 9, 0, 0, 0, 2, 2, 8, 1, 0, 0, 2, 2, 7}, Dedupe::KeepFirst);
   CHECK(u.input_index == std::vector<uint32_t>{0, 1, 3});
+  // Several groups: the one with the smallest (x, y) is named, with its two
+  // earliest points, whatever order they are found in.
+  CHECK(error_of({9, 9, 0, 0, 8, 0, 9, 9, 1, 5, 0, 0, 0, 8, 2, 0, 8, 3, 5, 0, 4}).rfind(
+            "point 1 and point 4 have the same (x, y) = (0, 8)", 0) == 0);
+  // The spatial order keeps the same points.
+  const TerrainPoints s = validate_points(p, Dedupe::KeepFirst, {}, PointOrder::Spatial);
+  std::vector<uint32_t> kept = s.input_index;
+  std::sort(kept.begin(), kept.end());
+  CHECK(kept == t.input_index);
 }
 
 TEST_CASE("text files: separators, header, comments") {
