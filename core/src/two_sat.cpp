@@ -1,15 +1,30 @@
 #include "hodt/two_sat.hpp"
 
+#include <algorithm>
+
 namespace hodt {
 
 std::optional<std::vector<uint8_t>> TwoSat::solve() const {
-  const uint32_t nl = 2 * n_;
+  // Only variables in some clause, renumbered in order: a free variable's literals
+  // are isolated, Tarjan gives them their own components in between the others',
+  // which keeps the others' order, and false (its first literal) stays false.
+  std::vector<uint32_t> used;
+  used.reserve(2 * clauses_.size());
+  for (const Clause& c : clauses_) used.push_back(c.a >> 1), used.push_back(c.b >> 1);
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  auto local = [&](uint32_t l) {
+    return 2 * static_cast<uint32_t>(std::lower_bound(used.begin(), used.end(), l >> 1) - used.begin()) + (l & 1);
+  };
+  const uint32_t nl = 2 * static_cast<uint32_t>(used.size());
   // Implication graph in compressed rows: (a or b) gives !a -> b and !b -> a.
-  std::vector<uint32_t> start(nl + 1, 0), adj(2 * clauses_.size());
-  for (const Clause& c : clauses_) ++start[(c.a ^ 1) + 1], ++start[(c.b ^ 1) + 1];
+  std::vector<Clause> cl(clauses_.size());
+  for (size_t k = 0; k < clauses_.size(); ++k) cl[k] = {local(clauses_[k].a), local(clauses_[k].b)};
+  std::vector<uint32_t> start(nl + 1, 0), adj(2 * cl.size());
+  for (const Clause& c : cl) ++start[(c.a ^ 1) + 1], ++start[(c.b ^ 1) + 1];
   for (uint32_t i = 0; i < nl; ++i) start[i + 1] += start[i];
   std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-  for (const Clause& c : clauses_) adj[fill[c.a ^ 1]++] = c.b, adj[fill[c.b ^ 1]++] = c.a;
+  for (const Clause& c : cl) adj[fill[c.a ^ 1]++] = c.b, adj[fill[c.b ^ 1]++] = c.a;
 
   // Iterative Tarjan: components are numbered in reverse topological order.
   constexpr uint32_t kNone = UINT32_MAX;
@@ -50,11 +65,11 @@ std::optional<std::vector<uint8_t>> TwoSat::solve() const {
       if (!call.empty()) low[call.back()] = std::min(low[call.back()], low[v]);
     }
   }
-  std::vector<uint8_t> value(n_);
-  for (uint32_t v = 0; v < n_; ++v) {
-    const uint32_t f = comp[lit(v, false)], t = comp[lit(v, true)];
+  std::vector<uint8_t> value(n_, 0);
+  for (uint32_t i = 0; i < used.size(); ++i) {
+    const uint32_t f = comp[2 * i], t = comp[2 * i + 1];
     if (f == t) return std::nullopt;
-    value[v] = t < f;  // the literal later in topological order is true
+    value[used[i]] = t < f;  // the literal later in topological order is true
   }
   return value;
 }
