@@ -78,8 +78,7 @@ double triangle_area(const double* a, const double* b, const double* c) {
 
 double area_ratio(double a1, double a2) { return a1 > a2 ? a1 / a2 : a2 / a1; }
 
-namespace {
-void normal(const double* const t[3], double n[3]) {
+void triangle_normal(const double* const t[3], double n[3]) {
   const double *a = t[0], *b = t[1], *c = t[2];
   canonical(a, b, c);
   const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
@@ -88,16 +87,20 @@ void normal(const double* const t[3], double n[3]) {
   n[1] = u[2] * v[0] - u[0] * v[2];
   n[2] = u[0] * v[1] - u[1] * v[0];
 }
-}  // namespace
+
+double normals_dot(const double n[3], const double m[3]) { return n[0] * m[0] + n[1] * m[1] + n[2] * m[2]; }
+
+double normals_angle(const double n[3], const double m[3]) {
+  const double cx = n[1] * m[2] - n[2] * m[1], cy = n[2] * m[0] - n[0] * m[2],
+               cz = n[0] * m[1] - n[1] * m[0];
+  return portable_angle(std::sqrt(cx * cx + cy * cy + cz * cz), normals_dot(n, m));
+}
 
 double normal_angle(const double* const t1[3], const double* const t2[3]) {
   double n[3], m[3];
-  normal(t1, n);
-  normal(t2, m);
-  const double cx = n[1] * m[2] - n[2] * m[1], cy = n[2] * m[0] - n[0] * m[2],
-               cz = n[0] * m[1] - n[1] * m[0];
-  const double dot = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
-  return portable_angle(std::sqrt(cx * cx + cy * cy + cz * cz), dot);
+  triangle_normal(t1, n);
+  triangle_normal(t2, m);
+  return normals_angle(n, m);
 }
 
 double edge_length(const double* a, const double* b) {

@@ -1,11 +1,45 @@
 #include "hodt/pair_measures.hpp"
 
+#include <array>
+#include <cmath>
+#include <vector>
+
 #include "hodt/measures.hpp"
 
 namespace hodt {
 
 namespace {
 double area(const Mesh& m, const Tri& t) { return triangle_area(m.point(t[0]), m.point(t[1]), m.point(t[2])); }
+
+std::array<double, 3> normal(const Mesh& m, const Tri& t) {
+  const double* c[3] = {m.point(t[0]), m.point(t[1]), m.point(t[2])};
+  std::array<double, 3> n;
+  triangle_normal(c, n.data());
+  return n;
+}
+
+// cos(cut), recomputed only when the cut changes (it is a slowly rising max).
+double cos_of(double cut) {
+  static thread_local double last = NAN, value = NAN;
+  if (cut != last) last = cut, value = std::cos(cut);
+  return value;
+}
+
+// The angle of two normals, or 0 when it is at most cut. The angle is
+// portable_angle(y, x) of y = |n x k| and x = n . k, within 1e-15 of atan2(y, x),
+// and atan2(y, x) < cut - 1e-15 when x / |(x, y)| exceeds cos(cut) by the margin
+// (which also covers the rounding of cos, the norm and the product). Saves the
+// arctangent; with x >= 0 and a cut past pi/2 even the cross product.
+double angle_above(const std::array<double, 3>& n, const std::array<double, 3>& k, double cut) {
+  const double x = normals_dot(n.data(), k.data());
+  if (cut >= kRightAngleBound && x >= 0) return 0;
+  if (cut > 0) {
+    const double cx = n[1] * k[2] - n[2] * k[1], cy = n[2] * k[0] - n[0] * k[2], cz = n[0] * k[1] - n[1] * k[0];
+    const double r = std::sqrt(cx * cx + cy * cy + cz * cz + x * x);
+    if (r > 1e-140 && r < 1e140 && x >= r * (cos_of(cut) + 1e-9)) return 0;  // (no underflow or overflow)
+  }
+  return normals_angle(n.data(), k.data());
+}
 }  // namespace
 
 double pair_area_ratio(const Mesh& m, const Tri& s, const Tri& t) { return area_ratio(area(m, s), area(m, t)); }
@@ -14,6 +48,10 @@ double pair_normal_angle(const Mesh& m, const Tri& s, const Tri& t) {
   const double* a[3] = {m.point(s[0]), m.point(s[1]), m.point(s[2])};
   const double* b[3] = {m.point(t[0]), m.point(t[1]), m.point(t[2])};
   return normal_angle(a, b);
+}
+
+double pair_normal_angle(const Mesh& m, const Tri& s, const Tri& t, double cut) {
+  return angle_above(normal(m, s), normal(m, t), cut);
 }
 
 double pair_enclosing_circle(const Mesh& m, const Tri& s, const Tri& t) {
@@ -37,33 +75,53 @@ bool is_pair_objective(Objective o) {
   }
 }
 
-std::optional<CriticalPair> critical_pair(Objective o, const Mesh& m) {
-  double (*measure)(const Mesh&, const Tri&, const Tri&) = nullptr;
-  bool edge = true;
-  switch (o) {
-    case Objective::MinmaxEdgeAreaRatio: measure = pair_area_ratio; break;
-    case Objective::MinmaxEdgeNormalAngle: measure = pair_normal_angle; break;
-    case Objective::MinmaxEdgeEnclosingCircle: measure = pair_enclosing_circle; break;
-    case Objective::MinmaxVertexAreaRatio: measure = pair_area_ratio, edge = false; break;
-    case Objective::MinmaxVertexNormalAngle: measure = pair_normal_angle, edge = false; break;
-    default: return std::nullopt;
-  }
+namespace {
+
+// The first pair (edge- or vertex-adjacent, in mesh order) of largest value. A
+// feature of each triangle (its area, normal...) is computed once per edge or
+// star; value(fa, fb, cut) may answer anything <= cut for a pair that cannot win.
+template <class Feature, class Value>
+std::optional<CriticalPair> first_largest_pair(const Mesh& m, bool edge, Feature feature, Value value) {
   std::optional<CriticalPair> best;
-  auto consider = [&](uint32_t s, uint32_t t) {
-    const Tri a = base_triangle(m, s), b = base_triangle(m, t);
-    const double v = measure(m, a, b);
-    if (!best || v > best->value) best = CriticalPair{a, b, v};
+  auto consider = [&](uint32_t s, uint32_t t, const auto& fs, const auto& ft) {
+    const double v = value(fs, ft, best ? best->value : -INFINITY);
+    if (!best || v > best->value) best = CriticalPair{base_triangle(m, s), base_triangle(m, t), v};
   };
   if (edge) {
-    for (uint32_t e = 0; e < m.halfedges.size(); ++e)
-      if (m.halfedges[e] > static_cast<int32_t>(e)) consider(e / 3, static_cast<uint32_t>(m.halfedges[e]) / 3);
-  } else {
-    const Stars st = build_stars(m);
-    for (uint32_t v = 0; v < m.num_vertices(); ++v)
-      for (uint32_t i = st.tri_offset[v]; i < st.tri_offset[v + 1]; ++i)
-        for (uint32_t j = i + 1; j < st.tri_offset[v + 1]; ++j) consider(st.triangle[i], st.triangle[j]);
+    for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
+      const int32_t f = m.halfedges[e];
+      if (f > static_cast<int32_t>(e)) consider(e / 3, f / 3, feature(e / 3), feature(static_cast<uint32_t>(f) / 3));
+    }
+    return best;
+  }
+  const Stars st = build_stars(m);
+  std::vector<decltype(feature(0u))> star;
+  for (uint32_t v = 0; v < m.num_vertices(); ++v) {
+    const uint32_t b = st.tri_offset[v], e = st.tri_offset[v + 1];
+    star.clear();
+    for (uint32_t i = b; i < e; ++i) star.push_back(feature(st.triangle[i]));
+    for (uint32_t i = b; i < e; ++i)
+      for (uint32_t j = i + 1; j < e; ++j) consider(st.triangle[i], st.triangle[j], star[i - b], star[j - b]);
   }
   return best;
+}
+
+}  // namespace
+
+std::optional<CriticalPair> critical_pair(Objective o, const Mesh& m) {
+  auto tri_area = [&](uint32_t t) { return area(m, base_triangle(m, t)); };
+  auto ratio = [](double a, double b, double) { return area_ratio(a, b); };
+  auto tri_normal = [&](uint32_t t) { return normal(m, base_triangle(m, t)); };
+  auto tri = [&](uint32_t t) { return base_triangle(m, t); };
+  auto circle = [&](const Tri& a, const Tri& b, double) { return pair_enclosing_circle(m, a, b); };
+  switch (o) {
+    case Objective::MinmaxEdgeAreaRatio: return first_largest_pair(m, true, tri_area, ratio);
+    case Objective::MinmaxEdgeNormalAngle: return first_largest_pair(m, true, tri_normal, angle_above);
+    case Objective::MinmaxEdgeEnclosingCircle: return first_largest_pair(m, true, tri, circle);
+    case Objective::MinmaxVertexAreaRatio: return first_largest_pair(m, false, tri_area, ratio);
+    case Objective::MinmaxVertexNormalAngle: return first_largest_pair(m, false, tri_normal, angle_above);
+    default: return std::nullopt;
+  }
 }
 
 }  // namespace hodt

@@ -30,6 +30,14 @@ double area_ratio(double area1, double area2);
 // Angle in [0, pi] between the upward unit normals of two lifted triangles
 // (each counterclockwise in xy).
 double normal_angle(const double* const t1[3], const double* const t2[3]);
+// The same in two steps, for callers that reuse a triangle's normal: the upward
+// (unnormalised) normal, and the angle between two of them.
+void triangle_normal(const double* const t[3], double n[3]);
+double normals_dot(const double n[3], const double m[3]);
+double normals_angle(const double n[3], const double m[3]);
+// An angle whose normals have a dot product >= 0 is computed as at most pi/2 (plus
+// rounding): below this bound.
+constexpr double kRightAngleBound = 1.6;
 // Radius of the smallest circle containing the four points (plane).
 double enclosing_circle(const double* a, const double* b, const double* c, const double* d);
 // Radius of the circle through three non-collinear points (plane).

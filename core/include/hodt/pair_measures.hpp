@@ -12,6 +12,9 @@ namespace hodt {
 
 double pair_area_ratio(const Mesh& m, const Tri& s, const Tri& t);
 double pair_normal_angle(const Mesh& m, const Tri& s, const Tri& t);
+// The same when it exceeds `cut`, else some value <= cut (a max over pairs that
+// starts at cut loses nothing): most pairs then need no arctangent.
+double pair_normal_angle(const Mesh& m, const Tri& s, const Tri& t, double cut);
 // Smallest circle around the four points of two edge-adjacent triangles.
 double pair_enclosing_circle(const Mesh& m, const Tri& s, const Tri& t);
 
