@@ -6,25 +6,42 @@
 
 namespace hodt {
 
-BottleneckBuilder::BottleneckBuilder(uint32_t num_quads) : unary_index_(num_quads, -1) {
+BottleneckBuilder::BottleneckBuilder(uint32_t num_quads, bool prune)
+    : prune_(prune), unary_seq_(num_quads, kUnary) {
   model_.num_quads = num_quads;
 }
 
 void BottleneckBuilder::constant(double v) { model_.floor = std::max(model_.floor, v); }
 
+bool BottleneckBuilder::below_floor(const double* v, int n) const {
+  return prune_ && std::all_of(v, v + n, [&](double x) { return x <= model_.floor; });
+}
+
+PairTerm* BottleneckBuilder::find(uint32_t q, uint32_t r) {
+  const auto it = index_.find((uint64_t(q) << 32) | r);
+  return it == index_.end() ? nullptr : &model_.terms[it->second];
+}
+
+void BottleneckBuilder::add(const PairTerm& t, uint32_t seq) {
+  index_.emplace((uint64_t(uint32_t(t.q)) << 32) | uint32_t(t.r), static_cast<uint32_t>(model_.terms.size()));
+  model_.terms.push_back(t);
+  seq_.push_back(seq);
+}
+
 void BottleneckBuilder::unary(uint32_t q, double v0, double v1) {
-  if (unary_index_[q] < 0) {
-    unary_index_[q] = static_cast<int32_t>(model_.terms.size());
-    PairTerm t;
-    t.q = static_cast<int32_t>(q);
-    t.v[0] = t.v[2] = v0;
-    t.v[1] = t.v[3] = v1;
-    model_.terms.push_back(t);
+  if (unary_seq_[q] == kUnary) unary_seq_[q] = next_seq_++;
+  const double v[2] = {v0, v1};
+  if (below_floor(v, 2)) return;
+  if (PairTerm* t = find(q, kUnary)) {
+    t->v[0] = t->v[2] = std::max(t->v[0], v0);
+    t->v[1] = t->v[3] = std::max(t->v[1], v1);
     return;
   }
-  PairTerm& t = model_.terms[static_cast<size_t>(unary_index_[q])];
-  t.v[0] = t.v[2] = std::max(t.v[0], v0);
-  t.v[1] = t.v[3] = std::max(t.v[1], v1);
+  PairTerm t;
+  t.q = static_cast<int32_t>(q);
+  t.v[0] = t.v[2] = v0;
+  t.v[1] = t.v[3] = v1;
+  add(t, unary_seq_[q]);
 }
 
 void BottleneckBuilder::binary(uint32_t q, uint32_t r, const double v[4]) {
@@ -36,27 +53,23 @@ void BottleneckBuilder::binary(uint32_t q, uint32_t r, const double v[4]) {
     t.q = static_cast<int32_t>(r), t.r = static_cast<int32_t>(q);
     t.v[0] = v[0], t.v[1] = v[2], t.v[2] = v[1], t.v[3] = v[3];
   }
-  binary_keys_.push_back({(uint64_t(uint32_t(t.q)) << 32) | uint32_t(t.r), static_cast<uint32_t>(model_.terms.size())});
-  model_.terms.push_back(t);
+  const uint32_t seq = next_seq_++;
+  PairTerm* kept = find(uint32_t(t.q), uint32_t(t.r));
+  if (kept) seq_[static_cast<size_t>(kept - model_.terms.data())] = seq;  // even when this part is pruned
+  if (below_floor(t.v, 4)) return;
+  if (!kept) return add(t, seq);
+  for (int k = 0; k < 4; ++k) kept->v[k] = std::max(kept->v[k], t.v[k]);
 }
 
 BottleneckModel BottleneckBuilder::finish() {
-  // Merge binary terms over the same pair of quads (elementwise max).
-  std::sort(binary_keys_.begin(), binary_keys_.end());
-  std::vector<uint8_t> drop(model_.terms.size(), 0);
-  for (size_t i = 1; i < binary_keys_.size(); ++i) {
-    if (binary_keys_[i].first != binary_keys_[i - 1].first) continue;
-    PairTerm& keep = model_.terms[binary_keys_[i].second];
-    const PairTerm& gone = model_.terms[binary_keys_[i - 1].second];
-    for (int k = 0; k < 4; ++k) keep.v[k] = std::max(keep.v[k], gone.v[k]);
-    drop[binary_keys_[i - 1].second] = 1;
-  }
-  // Compact in place (a second vector would double the peak memory).
-  size_t kept = 0;
-  for (size_t i = 0; i < model_.terms.size(); ++i)
-    if (!drop[i]) model_.terms[kept++] = model_.terms[i];
-  model_.terms.resize(kept);
-  binary_keys_ = {};
+  // Terms kept before the floor rose may have fallen under it.
+  std::vector<uint32_t> order;
+  for (uint32_t k = 0; k < model_.terms.size(); ++k)
+    if (!below_floor(model_.terms[k].v, 4)) order.push_back(k);
+  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return seq_[a] < seq_[b]; });
+  std::vector<PairTerm> terms(order.size());
+  for (size_t k = 0; k < order.size(); ++k) terms[k] = model_.terms[order[k]];
+  model_.terms = std::move(terms);
   return std::move(model_);
 }
 
@@ -131,16 +144,21 @@ BottleneckResult solve_bottleneck(const BottleneckModel& m) {
   r.value = cand[lo];
   // Among the optimal choices prefer Delaunay diagonals: revert a flipped quad when
   // every term it is part of stays within the optimum (fewer, meaningful flips).
-  std::vector<std::vector<uint32_t>> terms_of(m.num_quads);
+  // Terms of each quad: (quad, term) sorted, as quads are visited in order.
+  std::vector<std::pair<uint32_t, uint32_t>> terms_of;
   for (uint32_t k = 0; k < m.terms.size(); ++k) {
-    terms_of[static_cast<uint32_t>(m.terms[k].q)].push_back(k);
-    if (m.terms[k].r >= 0) terms_of[static_cast<uint32_t>(m.terms[k].r)].push_back(k);
+    terms_of.push_back({static_cast<uint32_t>(m.terms[k].q), k});
+    if (m.terms[k].r >= 0) terms_of.push_back({static_cast<uint32_t>(m.terms[k].r), k});
   }
+  std::sort(terms_of.begin(), terms_of.end());
+  auto next = terms_of.begin();
   for (uint32_t q = 0; q < m.num_quads; ++q) {
+    const auto begin = next;
+    while (next != terms_of.end() && next->first == q) ++next;
     if (!r.choice[q]) continue;
     r.choice[q] = 0;
-    for (uint32_t k : terms_of[q]) {
-      const PairTerm& t = m.terms[k];
+    for (auto it = begin; it != next; ++it) {
+      const PairTerm& t = m.terms[it->second];
       const int idx = r.choice[static_cast<uint32_t>(t.q)] + (t.r >= 0 ? 2 * r.choice[static_cast<uint32_t>(t.r)] : 0);
       if (t.v[idx] > r.value) {
         r.choice[q] = 1;

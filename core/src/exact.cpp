@@ -60,9 +60,10 @@ Choice smaller_largest_triangles(const FirstOrder& fo) {
 
 BottleneckModel pair_model(const FirstOrder& fo, Objective o) {
   const Mesh& m = fo.base;
-  auto ratio = [&](const Tri& s, const Tri& t) { return pair_area_ratio(m, s, t); };
-  auto angle = [&](const Tri& s, const Tri& t) { return pair_normal_angle(m, s, t); };
-  auto circle = [&](const Tri& s, const Tri& t) { return pair_enclosing_circle(m, s, t); };
+  // With a cut: the search needs only values above the floor (a pruned model).
+  auto ratio = [&](const Tri& s, const Tri& t, double) { return pair_area_ratio(m, s, t); };
+  auto angle = [&](const Tri& s, const Tri& t, double cut) { return pair_normal_angle(m, s, t, cut); };
+  auto circle = [&](const Tri& s, const Tri& t, double) { return pair_enclosing_circle(m, s, t); };
   switch (o) {
     case Objective::MinmaxEdgeAreaRatio: return edge_pair_model(fo, ratio);
     case Objective::MinmaxEdgeNormalAngle: return edge_pair_model(fo, angle);
@@ -104,8 +105,8 @@ Solution solve_polynomial(const FirstOrder& fo, Objective o, const ExactOptions&
       throw LimitError(std::string(info(o).id) + " is NP-hard: it has no polynomial exact algorithm");
   }
   const Mesh mesh = triangulate(fo, s.choice);
-  s.value = evaluate(o, mesh);
   s.critical = critical_pair(o, mesh);
+  s.value = s.critical ? s.critical->value : evaluate(o, mesh);  // the same number, computed once
   return s;
 }
 

@@ -5,6 +5,7 @@
 // at most t?" by the paper's eliminations and a linear-time 2-SAT.
 #pragma once
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "hodt/first_order.hpp"
@@ -49,9 +50,14 @@ BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure);
 BottleneckResult solve_bottleneck(const BottleneckModel& model);
 
 // Models are assembled term by term; terms over the same quads are merged (max).
+// Pruned, a model keeps only values above its floor: every candidate threshold is
+// at least the floor, so other values never make a clause, a bound or a candidate
+// (constants should come first). Kept terms stay in the order the full model
+// would list them (the 2-SAT answer depends on the clause order).
 class BottleneckBuilder {
  public:
-  explicit BottleneckBuilder(uint32_t num_quads);
+  BottleneckBuilder(uint32_t num_quads, bool prune);
+  double floor() const { return model_.floor; }
   void constant(double v);
   void unary(uint32_t q, double v0, double v1);
   // v[x_q + 2 * x_r], q != r
@@ -59,9 +65,18 @@ class BottleneckBuilder {
   BottleneckModel finish();
 
  private:
+  bool below_floor(const double* v, int n) const;
+  // The kept term over (q, r), r = kUnary for a unary one; a new one at position seq.
+  PairTerm* find(uint32_t q, uint32_t r);
+  void add(const PairTerm& t, uint32_t seq);
+
+  static constexpr uint32_t kUnary = UINT32_MAX;
   BottleneckModel model_;
-  std::vector<int32_t> unary_index_;
-  std::vector<std::pair<uint64_t, uint32_t>> binary_keys_;  // (key, term index), sorted at finish
+  bool prune_;
+  uint32_t next_seq_ = 0;               // positions in the full model: a unary term at
+  std::vector<uint32_t> unary_seq_;     // its first part (per quad), a binary one at its last
+  std::vector<uint32_t> seq_;           // per kept term
+  std::unordered_map<uint64_t, uint32_t> index_;  // (q, r) -> kept term
 };
 
 }  // namespace hodt

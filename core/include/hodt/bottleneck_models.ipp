@@ -1,17 +1,36 @@
 // The two families of pair models (included by bottleneck.hpp).
 #pragma once
 #include <algorithm>
+#include <type_traits>
 
 namespace hodt {
+
+// A measure that takes a cut may answer any value <= cut for a pair whose value is
+// at most cut (see pair_measures.hpp). Given the floor as cut, the model loses
+// nothing the search needs, and is built pruned (BottleneckBuilder).
+template <class Measure>
+constexpr bool kTakesCut = std::is_invocable_v<Measure&, const Tri&, const Tri&, double>;
+
+template <class Measure>
+double measure_above(Measure& measure, const Tri& s, const Tri& t, double cut) {
+  if constexpr (kTakesCut<Measure>) return measure(s, t, cut);
+  else return measure(s, t);
+}
 
 // Edge-adjacent pairs: the two triangles beside every interior edge of the
 // triangulation. Fixed-fixed edges give the floor; an edge of a quad's boundary
 // gives a term over that quad and the quad (if any) on the other side; a quad's
-// own diagonal gives a unary term.
+// own diagonal gives a unary term. The floor comes first, to prune the rest.
 template <class Measure>
 BottleneckModel edge_pair_model(const FirstOrder& fo, Measure measure) {
   const Mesh& m = fo.base;
-  BottleneckBuilder b(fo.num_quads());
+  BottleneckBuilder b(fo.num_quads(), kTakesCut<Measure>);
+  auto fixed = [&](uint32_t e) { return fo.quad_of_triangle[e / 3] < 0; };
+  for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
+    const int32_t f = m.halfedges[e];
+    if (f > static_cast<int32_t>(e) && fixed(e) && fixed(static_cast<uint32_t>(f)))
+      b.constant(measure_above(measure, base_triangle(m, e / 3), base_triangle(m, static_cast<uint32_t>(f) / 3), b.floor()));
+  }
   const std::vector<uint8_t> diagonal = fo.diagonal_mask();
   for (uint32_t q = 0; q < fo.num_quads(); ++q) {
     uint32_t t[2][6];
@@ -19,48 +38,55 @@ BottleneckModel edge_pair_model(const FirstOrder& fo, Measure measure) {
     fo.triangles_of(q, true, t[1]);
     double v[2];
     for (int x = 0; x < 2; ++x)
-      v[x] = measure(Tri{t[x][0], t[x][1], t[x][2]}, Tri{t[x][3], t[x][4], t[x][5]});
+      v[x] = measure_above(measure, Tri{t[x][0], t[x][1], t[x][2]}, Tri{t[x][3], t[x][4], t[x][5]}, b.floor());
     b.unary(q, v[0], v[1]);
   }
   for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
     const int32_t f = m.halfedges[e];
-    if (f < static_cast<int32_t>(e) || diagonal[e]) continue;
+    if (f < static_cast<int32_t>(e) || diagonal[e] || (fixed(e) && fixed(static_cast<uint32_t>(f)))) continue;
     const Side L = side_of(fo, e), R = side_of(fo, static_cast<uint32_t>(f));
-    if (L.quad < 0 && R.quad < 0) {
-      b.constant(measure(L.tri[0], R.tri[0]));
-    } else if (L.quad < 0 || R.quad < 0) {  // a quad beside a fixed triangle
+    const double cut = b.floor();
+    if (L.quad < 0 || R.quad < 0) {  // a quad beside a fixed triangle
       const Side& Q = L.quad >= 0 ? L : R;
       const Side& F = L.quad >= 0 ? R : L;
-      b.unary(static_cast<uint32_t>(Q.quad), measure(Q.tri[0], F.tri[0]), measure(Q.tri[1], F.tri[0]));
+      b.unary(static_cast<uint32_t>(Q.quad), measure_above(measure, Q.tri[0], F.tri[0], cut),
+              measure_above(measure, Q.tri[1], F.tri[0], cut));
     } else {  // two quads (a non-diagonal edge never has the same quad on both sides)
       double v[4];
       for (int x = 0; x < 2; ++x)
-        for (int y = 0; y < 2; ++y) v[x + 2 * y] = measure(L.tri[x], R.tri[y]);
+        for (int y = 0; y < 2; ++y) v[x + 2 * y] = measure_above(measure, L.tri[x], R.tri[y], cut);
       b.binary(static_cast<uint32_t>(L.quad), static_cast<uint32_t>(R.quad), v);
     }
   }
   return b.finish();
 }
 
-// Vertex-adjacent pairs: all pairs of distinct triangles around each vertex.
+// Vertex-adjacent pairs: all pairs of distinct triangles around each vertex. The
+// floor (pairs of fixed triangles) comes first, to prune the rest.
 template <class Measure>
 BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure) {
   const Mesh& m = fo.base;
   const VertexIncidence vi = vertex_incidence(fo);
-  BottleneckBuilder b(fo.num_quads());
+  BottleneckBuilder b(fo.num_quads(), kTakesCut<Measure>);
   std::vector<Tri> fixed;
-  for (uint32_t v = 0; v < m.num_vertices(); ++v) {
+  auto fixed_at = [&](uint32_t v) {
     fixed.clear();
     for (uint32_t k = vi.fixed_offset[v]; k < vi.fixed_offset[v + 1]; ++k) fixed.push_back(base_triangle(m, vi.fixed[k]));
-    double floor = 0;
+  };
+  for (uint32_t v = 0; v < m.num_vertices(); ++v) {
+    fixed_at(v);
     for (size_t i = 0; i < fixed.size(); ++i)
-      for (size_t j = i + 1; j < fixed.size(); ++j) floor = std::max(floor, measure(fixed[i], fixed[j]));
-    b.constant(floor);
+      for (size_t j = i + 1; j < fixed.size(); ++j) b.constant(measure_above(measure, fixed[i], fixed[j], b.floor()));
+  }
+  const double cut = b.floor();
+  auto pair = [&](const Tri& s, const Tri& t) { return measure_above(measure, s, t, cut); };
+  std::vector<Tri> at[2];  // triangles of each quad at v, per choice
+  std::vector<uint32_t> count[2];
+  for (uint32_t v = 0; v < m.num_vertices(); ++v) {
     const uint32_t* qs = vi.quads_begin(v);
     const uint32_t nq = static_cast<uint32_t>(vi.quads_end(v) - qs);
-    // Triangles of each quad at v, per choice.
-    std::vector<Tri> at[2];
-    std::vector<uint32_t> count[2];
+    if (nq == 0) continue;
+    fixed_at(v);
     for (int x = 0; x < 2; ++x) {
       at[x].resize(2 * nq);
       count[x].resize(nq);
@@ -71,9 +97,9 @@ BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure) {
       for (int x = 0; x < 2; ++x) {
         u[x] = 0;
         const Tri* ti = &at[x][2 * i];
-        if (count[x][i] == 2) u[x] = std::max(u[x], measure(ti[0], ti[1]));
+        if (count[x][i] == 2) u[x] = std::max(u[x], pair(ti[0], ti[1]));
         for (uint32_t a = 0; a < count[x][i]; ++a)
-          for (const Tri& f : fixed) u[x] = std::max(u[x], measure(ti[a], f));
+          for (const Tri& f : fixed) u[x] = std::max(u[x], pair(ti[a], f));
       }
       b.unary(qs[i], u[0], u[1]);
       for (uint32_t j = i + 1; j < nq; ++j) {
@@ -82,7 +108,7 @@ BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure) {
           for (int y = 0; y < 2; ++y) {
             double worst = 0;
             for (uint32_t a = 0; a < count[x][i]; ++a)
-              for (uint32_t c = 0; c < count[y][j]; ++c) worst = std::max(worst, measure(at[x][2 * i + a], at[y][2 * j + c]));
+              for (uint32_t c = 0; c < count[y][j]; ++c) worst = std::max(worst, pair(at[x][2 * i + a], at[y][2 * j + c]));
             w[x + 2 * y] = worst;
           }
         b.binary(qs[i], qs[j], w);
