@@ -84,21 +84,27 @@ bool neighbour_inside(const Mesh& m, const std::vector<int32_t>& out, uint32_t v
 // vertices below a plane, and a linear function on the lower hull decreases along
 // edges to its minimum; circle_count.hpp). So a second point inside would make a
 // neighbour of b inside: checking b's star (and a's for the other circle) decides.
+bool flippable(const Mesh& dt, const std::vector<int32_t>& out, uint32_t e) {
+  if (dt.halfedges[e] < 0) return false;
+  const Quad q = quad_at(dt, e);
+  if (!strictly_convex(dt, q.a, q.b, q.c, q.d)) return false;
+  const double *a = dt.point(q.a), *b = dt.point(q.b), *c = dt.point(q.c), *d = dt.point(q.d);
+  const uint32_t skip_a[3] = {q.a, q.c, q.d}, skip_b[3] = {q.b, q.c, q.d};
+  return !neighbour_inside(dt, out, q.b, a, d, c, skip_a) && !neighbour_inside(dt, out, q.a, d, b, c, skip_b);
+}
+
 FirstOrder first_order(Mesh dt) {
-  std::vector<Quad> quads;
+  std::vector<uint8_t> marked(dt.halfedges.size(), 0);
   const std::vector<int32_t> out = vertex_halfedges(dt);
-  for (uint32_t e = 0; e < dt.halfedges.size(); ++e) {
-    const int32_t f = dt.halfedges[e];
-    if (f < static_cast<int32_t>(e)) continue;  // hull edge, or seen from its twin
-    const Quad q = quad_at(dt, e);
-    if (!strictly_convex(dt, q.a, q.b, q.c, q.d)) continue;
-    const double *a = dt.point(q.a), *b = dt.point(q.b), *c = dt.point(q.c), *d = dt.point(q.d);
-    const uint32_t skip[3] = {q.a, q.c, q.d};
-    if (neighbour_inside(dt, out, q.b, a, d, c, skip)) continue;
-    const uint32_t skip_b[3] = {q.b, q.c, q.d};
-    if (neighbour_inside(dt, out, q.a, d, b, c, skip_b)) continue;
-    quads.push_back(q);
-  }
+  for (uint32_t e = 0; e < dt.halfedges.size(); ++e)
+    marked[e] = dt.halfedges[e] > static_cast<int32_t>(e) && flippable(dt, out, e);
+  return first_order_of_marked(std::move(dt), marked);
+}
+
+FirstOrder first_order_of_marked(Mesh dt, const std::vector<uint8_t>& marked) {
+  std::vector<Quad> quads;
+  for (uint32_t e = 0; e < dt.halfedges.size(); ++e)
+    if (marked[e]) quads.push_back(quad_at(dt, e));
   // No triangle is in two flippable quads ([10]; the paper, Section 2): a violation
   // would be a bug in the predicates, reported rather than silently mis-modelled.
   try {

@@ -35,6 +35,13 @@ struct FirstOrder {
 // most one point inside their circumcircle (decided with the perturbed in_circle).
 FirstOrder first_order(Mesh delaunay);
 
+// The same, one edge at a time (for local updates): is the interior edge of
+// halfedge e flippable? out = vertex_halfedges(delaunay).
+bool flippable(const Mesh& delaunay, const std::vector<int32_t>& out, uint32_t e);
+// The structure from a mark per halfedge (1 on the smaller halfedge of each
+// flippable edge).
+FirstOrder first_order_of_marked(Mesh delaunay, const std::vector<uint8_t>& marked);
+
 // A singly-flippable triangulation: the user's triangles (either orientation) of
 // the points in `coords`, with designated flippable edges (pairs of vertices).
 // Throws InputError naming the triangle, edge or vertex that is wrong: triangles

@@ -24,6 +24,17 @@ class Terrain {
   static Terrain from_triangulation(const std::vector<double>& xyz, const std::vector<uint32_t>& triangles,
                                     const std::vector<uint32_t>& flippable_edges);
 
+  // Live edits of a terrain built from points. The triangulation and the first
+  // order structure are updated around the change, and equal those of a terrain
+  // built from the edited points (the same triangles and quads; their order may
+  // differ). Indices are input indices: add_point appends (and returns the new
+  // index), remove_point shifts later indices down by one, like splicing an array.
+  // Bad values, an index out of range, a position taken by another point, or too
+  // few / collinear points left throw InputError and leave the terrain unchanged.
+  uint32_t add_point(double x, double y, double z);
+  void move_point(uint32_t i, double x, double y, double z);
+  void remove_point(uint32_t i);
+
   const FirstOrder& structure() const { return fo_; }
   uint32_t num_input_points() const { return num_input_; }
   uint32_t to_input(uint32_t v) const { return input_index_.empty() ? v : input_index_[v]; }
@@ -43,6 +54,14 @@ class Terrain {
   const Mesh& delaunay_mesh() const;
 
  private:
+  uint32_t vertex_of_input(uint32_t i) const;
+  void check_editable(double x, double y, double z, const std::string& what) const;
+  // After a local mesh edit: recompute flippability around the changed vertices.
+  void restructure(Mesh mesh, std::vector<uint8_t> marked, const std::vector<uint32_t>& changed);
+  // When a local edit does not apply (hull vertex, huge star): build anew.
+  void rebuild(const std::vector<double>& xyz, const std::vector<uint32_t>& input_of, uint32_t num_input);
+  void forget_delaunay_values();
+
   FirstOrder fo_;
   std::vector<uint32_t> input_index_;  // empty: identity
   uint32_t num_input_ = 0;
