@@ -1,5 +1,5 @@
 // Live edit latency in Chromium (Playwright): serves the repository read-only on
-// loopback, opens bench/edit.html, returns {p50, p95, edits} in milliseconds.
+// loopback, opens bench/edit.html, returns {objective: {p50, p95, edits}} in ms.
 import { createServer } from 'node:http';
 import { readFile } from 'node:fs/promises';
 import { extname, join, normalize } from 'node:path';
@@ -12,7 +12,7 @@ const types = { '.html': 'text/html', '.js': 'text/javascript', '.mjs': 'text/ja
 export async function measureEditsInChromium() {
   const server = createServer(async (req, res) => {
     const path = normalize(decodeURIComponent(new URL(req.url, 'http://x').pathname)).replace(/^(\.\.[/\\])+/, '');
-    if (!path.startsWith('/dist/') && path !== '/bench/edit.html') return res.writeHead(404).end();
+    if (!path.startsWith('/dist/') && !path.startsWith('/node_modules/three/build/') && path !== '/bench/edit.html') return res.writeHead(404).end();
     try {
       const body = await readFile(join(root, path));
       res.writeHead(200, { 'content-type': types[extname(path)] ?? 'application/octet-stream' }).end(body);

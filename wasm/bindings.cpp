@@ -85,6 +85,11 @@ class TerrainHandle {
   }
   val quadOfTriangle() const { return copy_out("Int32Array", t_.structure().quad_of_triangle); }
 
+  // Live edits (input indices; see Terrain::add_point).
+  uint32_t addPoint(double x, double y, double z) { return guarded([&] { return t_.add_point(x, y, z); }); }
+  void movePoint(uint32_t i, double x, double y, double z) { guarded([&] { t_.move_point(i, x, y, z); }); }
+  void removePoint(uint32_t i) { guarded([&] { t_.remove_point(i); }); }
+
   // The triangulation of a choice: {triangles, halfedges, hull} in input indices.
   val triangulation(val choice) const {
     return guarded([&] {
@@ -320,6 +325,9 @@ EMSCRIPTEN_BINDINGS(hodt) {
       .function("quads", &TerrainHandle::quads)
       .function("quadEdges", &TerrainHandle::quadEdges)
       .function("quadOfTriangle", &TerrainHandle::quadOfTriangle)
+      .function("addPoint", &TerrainHandle::addPoint)
+      .function("movePoint", &TerrainHandle::movePoint)
+      .function("removePoint", &TerrainHandle::removePoint)
       .function("triangulation", &TerrainHandle::triangulation)
       .function("measures", &TerrainHandle::measures)
       .function("evaluate", &TerrainHandle::evaluate)

@@ -119,7 +119,7 @@ export interface TerrainStats {
  */
 export class Terrain implements Disposable {
   #raw: RawTerrain | null;
-  readonly #input: Float64Array;
+  #input: Float64Array;
 
   /** @internal use Hodt.terrain() or Hodt.fromTriangulation() */
   constructor(raw: RawTerrain, input: Float64Array) {
@@ -172,6 +172,42 @@ export class Terrain implements Disposable {
    * the triangle is the same in every first order triangulation. */
   get quadOfTriangle(): Int32Array {
     return this.#handle.quadOfTriangle();
+  }
+
+  /**
+   * Live edits: the triangulation and the flippable quads are updated around the
+   * change (a few hundred microseconds on 10k points, where building anew takes
+   * milliseconds); afterwards the terrain is the one `hodt.terrain()` would build
+   * from the edited points (same triangles and quads, maybe in another order).
+   * Indices are point indices as everywhere: addPoint appends and returns the new
+   * index, removePoint shifts the later points down by one (like splice). Only for
+   * terrains built from points. Throws InputError naming what is wrong (a
+   * non-finite value, an index out of range, a position taken by another point,
+   * fewer than 3 or only collinear points left) and then changes nothing.
+   */
+  addPoint(x: number, y: number, z: number): number {
+    const raw = this.#handle;
+    const i = guard(() => raw.addPoint(x, y, z));
+    const grown = new Float64Array(this.#input.length + 3);
+    grown.set(this.#input);
+    grown.set([x, y, z], this.#input.length);
+    this.#input = grown;
+    return i;
+  }
+  /** Moves point `index` to (x, y, z); see addPoint. */
+  movePoint(index: number, x: number, y: number, z: number): void {
+    const raw = this.#handle;
+    guard(() => raw.movePoint(checkIndex(index, this.#input.length / 3), x, y, z));
+    this.#input[3 * index] = x, this.#input[3 * index + 1] = y, this.#input[3 * index + 2] = z;
+  }
+  /** Removes point `index`; later points' indices go down by one. See addPoint. */
+  removePoint(index: number): void {
+    const raw = this.#handle;
+    guard(() => raw.removePoint(checkIndex(index, this.#input.length / 3)));
+    const shrunk = new Float64Array(this.#input.length - 3);
+    shrunk.set(this.#input.subarray(0, 3 * index));
+    shrunk.set(this.#input.subarray(3 * index + 3), 3 * index);
+    this.#input = shrunk;
   }
 
   /** The Delaunay triangulation (the choice of all zeros). */
@@ -289,6 +325,13 @@ export class Terrain implements Disposable {
   get disposed(): boolean {
     return this.#raw === null;
   }
+}
+
+// embind would truncate or wrap a bad index; name it instead.
+function checkIndex(index: number, count: number): number {
+  if (!Number.isInteger(index) || index < 0 || index >= count)
+    throw new InputError(`point ${index} is out of range (${count} points)`);
+  return index;
 }
 
 /** out[index[v]] = values[v]: per-vertex values into point order. */

@@ -37,6 +37,9 @@ export interface RawTerrain {
   quads(): Uint32Array;
   quadEdges(): Uint32Array;
   quadOfTriangle(): Int32Array;
+  addPoint(x: number, y: number, z: number): number;
+  movePoint(i: number, x: number, y: number, z: number): void;
+  removePoint(i: number): void;
   triangulation(choice: Uint8Array | null): RawChoiceResult;
   measures(choice: Uint8Array | null): RawMeasures;
   evaluate(choice: Uint8Array | null): Float64Array;
