@@ -72,7 +72,7 @@ class TerrainHandle {
     for (uint32_t v = 0; v < idx.size(); ++v) idx[v] = t_.to_input(v);
     return copy_out("Uint32Array", idx);
   }
-  val points() const { return copy_out("Float64Array", t_.structure().base.coords); }
+  val points() const { return copy_out("Float64Array", t_.structure().base.coords.vector()); }
   val quads() const {
     std::vector<uint32_t> q;
     for (const Quad& k : t_.structure().quads) q.insert(q.end(), {k.a, k.b, k.c, k.d});

@@ -19,7 +19,8 @@ int64_t vertex_at(const Mesh& m, double x, double y, uint32_t start) {
 MeshEdit insert_vertex(Mesh& m, double x, double y, double z, uint32_t start) {
   MeshEdit edit;
   std::vector<uint32_t> touched;
-  m.coords.insert(m.coords.end(), {x, y, z});
+  std::vector<double>& xyz = m.coords.write();
+  xyz.insert(xyz.end(), {x, y, z});
   Builder b(m, &touched);
   b.start_near(start);
   b.insert(m.num_vertices() - 1);
@@ -125,13 +126,14 @@ bool remove_vertex(Mesh& m, uint32_t v, MeshEdit& edit, uint32_t max_degree) {
   // The last vertex takes number v.
   const uint32_t last = m.num_vertices() - 1;
   if (v != last) {
-    std::copy_n(m.point(last), 3, &m.coords[3 * size_t(v)]);
+    std::vector<double>& xyz = m.coords.write();
+    std::copy_n(&xyz[3 * size_t(last)], 3, &xyz[3 * size_t(v)]);
     for (uint32_t& u : m.triangles)
       if (u == last) u = v;
     for (uint32_t& u : edit.changed_vertices)
       if (u == last) u = v;
   }
-  m.coords.resize(3 * size_t(last));
+  m.coords.write().resize(3 * size_t(last));
   Builder(m).finish();  // the hull's vertex numbers may have changed
   return true;
 }

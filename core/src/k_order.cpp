@@ -156,7 +156,7 @@ double local_value(Objective o, const Mesh& m, uint32_t e, const std::vector<uin
 
 }  // namespace
 
-Mesh mesh_of(const std::vector<double>& coords, const std::vector<Tri>& triangles) {
+Mesh mesh_of(const Coords& coords, const std::vector<Tri>& triangles) {
   Mesh m;
   m.coords = coords;
   for (const Tri& t : triangles) m.triangles.insert(m.triangles.end(), t.begin(), t.end());

@@ -106,27 +106,31 @@ void canonicalize(Mesh& m) {
     std::sort(order.begin() + start[v], order.begin() + start[v + 1],
               [&](uint32_t s, uint32_t t) { return m.triangles[3 * s + 1] < m.triangles[3 * t + 1]; });
   start = {};
-  {
-    std::vector<uint32_t> sorted(m.triangles.size());
-    for (uint32_t k = 0; k < nt; ++k) std::copy_n(&m.triangles[3 * order[k]], 3, &sorted[3 * k]);
-    m.triangles.swap(sorted);
-  }
-  if (m.halfedges.size() != m.triangles.size()) {
-    link_halfedges(m);
-    return;
-  }
-  // Halfedges known: renumber them instead of relinking (halfedge 3t + k of old
-  // triangle t is now 3 * position(t) + (k - rotation) mod 3).
-  std::vector<uint32_t> position(nt);
+  std::vector<uint32_t> position(nt);  // new slot of each old triangle
   for (uint32_t k = 0; k < nt; ++k) position[order[k]] = k;
   order = {};
-  auto renumber = [&](uint32_t e) { return 3 * position[e / 3] + (e % 3 + 3 - rotation[e / 3]) % 3; };
-  std::vector<int32_t> twins(m.halfedges.size());
-  for (uint32_t e = 0; e < twins.size(); ++e) {
-    const int32_t f = m.halfedges[e];
-    twins[renumber(e)] = f < 0 ? -1 : static_cast<int32_t>(renumber(static_cast<uint32_t>(f)));
+  const bool linked = m.halfedges.size() == m.triangles.size();
+  if (linked) {
+    // Halfedge 3t + k of old triangle t becomes 3 * position(t) + (k - rotation) mod 3:
+    // renumber the twins, rotate each triangle's entries like its vertices.
+    auto renumber = [&](uint32_t e) { return 3 * position[e / 3] + (e % 3 + 3 - rotation[e / 3]) % 3; };
+    for (int32_t& f : m.halfedges)
+      if (f >= 0) f = static_cast<int32_t>(renumber(static_cast<uint32_t>(f)));
+    for (uint32_t t = 0; t < nt; ++t) std::rotate(&m.halfedges[3 * t], &m.halfedges[3 * t + rotation[t]], &m.halfedges[3 * t + 3]);
   }
-  m.halfedges.swap(twins);
+  // Gather into new arrays, one at a time (triangles, then halfedges): faster than
+  // permuting in place, and at most one array's worth of extra memory.
+  {
+    std::vector<uint32_t> sorted(m.triangles.size());
+    for (uint32_t t = 0; t < nt; ++t) std::copy_n(&m.triangles[3 * t], 3, &sorted[3 * position[t]]);
+    m.triangles.swap(sorted);
+  }
+  if (linked) {
+    std::vector<int32_t> sorted(m.halfedges.size());
+    for (uint32_t t = 0; t < nt; ++t) std::copy_n(&m.halfedges[3 * t], 3, &sorted[3 * position[t]]);
+    m.halfedges.swap(sorted);
+  }
+  if (!linked) link_halfedges(m);
 }
 
 std::vector<int32_t> vertex_halfedges(const Mesh& m) {

@@ -65,7 +65,7 @@ void Terrain::check_choice(const Choice& choice) const {
 
 const Mesh& Terrain::delaunay_mesh() const {
   if (fo_.is_delaunay) return fo_.base;
-  if (!delaunay_) delaunay_ = std::make_shared<const Mesh>(delaunay(fo_.base.coords));
+  if (!delaunay_) delaunay_ = std::make_shared<const Mesh>(delaunay(fo_.base.coords.vector()));
   return *delaunay_;
 }
 

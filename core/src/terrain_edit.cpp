@@ -102,7 +102,7 @@ void Terrain::move_point(uint32_t i, double x, double y, double z) {
   const uint32_t v = vertex_of_input(i);
   const double* p = fo_.base.point(v);
   if (p[0] == x && p[1] == y) {  // a new height only: the structure is planar
-    fo_.base.coords[3 * size_t(v) + 2] = z;
+    fo_.base.coords.write()[3 * size_t(v) + 2] = z;
     forget_delaunay_values();
     return;
   }
@@ -113,7 +113,7 @@ void Terrain::move_point(uint32_t i, double x, double y, double z) {
   std::vector<uint8_t> marked = marks_of(fo_);
   MeshEdit edit;
   if (!remove_vertex(fo_.base, v, edit)) {
-    std::vector<double> xyz = fo_.base.coords;
+    std::vector<double> xyz = fo_.base.coords.vector();
     xyz[3 * size_t(v)] = x, xyz[3 * size_t(v) + 1] = y, xyz[3 * size_t(v) + 2] = z;
     rebuild(xyz, input_index_, num_input_);
     return;

@@ -1,5 +1,6 @@
-// The Delaunay triangulation (CGAL, exact predicates, symbolically perturbed so
-// that it is unique for cocircular input) as a flat Mesh in canonical order.
+// The Delaunay triangulation (exact predicates, in-circle symbolically perturbed as
+// CGAL does, so that it is unique for cocircular input and equal to CGAL's) as a
+// flat Mesh in canonical order (mesh.hpp).
 #pragma once
 #include <vector>
 

@@ -44,6 +44,6 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
 Solution k_order_solution(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options);
 
 // A mesh (canonical order) from a list of counterclockwise triangles.
-Mesh mesh_of(const std::vector<double>& coords, const std::vector<Tri>& triangles);
+Mesh mesh_of(const Coords& coords, const std::vector<Tri>& triangles);
 
 }  // namespace hodt

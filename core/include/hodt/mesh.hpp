@@ -3,6 +3,7 @@
 // triangles[next_halfedge(e)]; halfedges[e] is its twin or -1 on the hull.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -11,15 +12,36 @@ namespace hodt {
 inline uint32_t next_halfedge(uint32_t e) { return e % 3 == 2 ? e - 2 : e + 1; }
 inline uint32_t prev_halfedge(uint32_t e) { return e % 3 == 0 ? e + 2 : e - 1; }
 
+// Vertex coordinates x, y, z: one array shared by copies (a triangulation and the
+// flips of it made by triangulate() hold the same points), copied on write.
+class Coords {
+ public:
+  Coords() : v_(std::make_shared<std::vector<double>>()) {}
+  Coords(std::vector<double> v) : v_(std::make_shared<std::vector<double>>(std::move(v))) {}  // NOLINT: implicit by design
+  const std::vector<double>& vector() const { return *v_; }
+  operator const std::vector<double>&() const { return *v_; }  // NOLINT
+  size_t size() const { return v_->size(); }
+  const double* data() const { return v_->data(); }
+  double operator[](size_t i) const { return (*v_)[i]; }
+  // The array to modify, unshared first.
+  std::vector<double>& write() {
+    if (v_.use_count() > 1) v_ = std::make_shared<std::vector<double>>(*v_);
+    return *v_;
+  }
+
+ private:
+  std::shared_ptr<std::vector<double>> v_;
+};
+
 struct Mesh {
-  std::vector<double> coords;       // x, y, z per vertex
+  Coords coords;                    // x, y, z per vertex
   std::vector<uint32_t> triangles;  // 3 vertices per triangle, counterclockwise
   std::vector<int32_t> halfedges;   // twin halfedge, -1 on the hull
   std::vector<uint32_t> hull;       // hull vertices, counterclockwise
 
   uint32_t num_vertices() const { return static_cast<uint32_t>(coords.size() / 3); }
   uint32_t num_triangles() const { return static_cast<uint32_t>(triangles.size() / 3); }
-  const double* point(uint32_t v) const { return &coords[3 * size_t(v)]; }
+  const double* point(uint32_t v) const { return coords.data() + 3 * size_t(v); }
   uint32_t origin(uint32_t e) const { return triangles[e]; }
   uint32_t target(uint32_t e) const { return triangles[next_halfedge(e)]; }
   // The vertex of e's triangle that is not on e.
