@@ -71,13 +71,6 @@ void canonical(const double*& a, const double*& b, const double*& c) {
 }
 }  // namespace
 
-double triangle_area(const double* a, const double* b, const double* c) {
-  canonical(a, b, c);
-  return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
-}
-
-double area_ratio(double a1, double a2) { return a1 > a2 ? a1 / a2 : a2 / a1; }
-
 void triangle_normal(const double* const t[3], double n[3]) {
   const double *a = t[0], *b = t[1], *c = t[2];
   canonical(a, b, c);

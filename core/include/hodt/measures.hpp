@@ -3,6 +3,7 @@
 // doubles computed the same way everywhere, so every solver compares the same numbers.
 #pragma once
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "hodt/mesh.hpp"
@@ -24,9 +25,17 @@ VertexClass vertex_class(const double* p, const double* const* nb, uint32_t coun
 Extremum extremum(const double* p, const double* const* nb, uint32_t count);
 
 // Plane (xy) area of a counterclockwise triangle, positive.
-double triangle_area(const double* a, const double* b, const double* c);
+// (Inline: the min-max models evaluate it millions of times.)
+inline double triangle_area(const double* a, const double* b, const double* c) {
+  // Start at the lexicographically smallest corner, so that the value does not
+  // depend on how a mesh happens to list the corners.
+  auto less = [](const double* p, const double* q) { return p[0] < q[0] || (p[0] == q[0] && p[1] < q[1]); };
+  if (less(b, a) && less(b, c)) std::swap(a, b), std::swap(b, c);       // b c a
+  else if (less(c, a) && less(c, b)) std::swap(a, c), std::swap(b, c);  // c a b
+  return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+}
 // Larger over smaller plane area.
-double area_ratio(double area1, double area2);
+inline double area_ratio(double area1, double area2) { return area1 > area2 ? area1 / area2 : area2 / area1; }
 // Angle in [0, pi] between the upward unit normals of two lifted triangles
 // (each counterclockwise in xy).
 double normal_angle(const double* const t1[3], const double* const t2[3]);
