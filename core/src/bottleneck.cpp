@@ -30,6 +30,10 @@ void BottleneckBuilder::add(const PairTerm& t, uint32_t seq) {
 
 void BottleneckBuilder::unary(uint32_t q, double v0, double v1) {
   if (unary_seq_[q] == kUnary) unary_seq_[q] = next_seq_++;
+  // Quad q takes one of its states, so every triangulation's max is at least the
+  // smaller value: a floor as good as a fixed pair's (on a grid, where no triangle
+  // is fixed, it is the only one and prunes the whole model).
+  if (prune_) model_.floor = std::max(model_.floor, std::min(v0, v1));
   const double v[2] = {v0, v1};
   if (below_floor(v, 2)) return;
   if (PairTerm* t = find(q, kUnary)) {

@@ -22,7 +22,8 @@ struct PairTerm {
 
 struct BottleneckModel {
   uint32_t num_quads = 0;
-  double floor = 0;              // worst pair between fixed triangles
+  double floor = 0;              // a lower bound of the optimum: the worst pair between fixed
+                                 // triangles (pruned models: or a unary term's smaller value)
   std::vector<PairTerm> terms;   // one per quad (unary) or pair of quads (binary)
 };
 
