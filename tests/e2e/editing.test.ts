@@ -37,13 +37,21 @@ describe('editing', () => {
     expect(added.solution!.objective).toBe(start.objective);
 
     // Move: drag it 25 px right; the count stays, the position changes.
+    let during = start;
     const moved = await edit(async () => {
       await page.mouse.move(spot.x, spot.y);
       await page.mouse.down();
       for (let k = 1; k <= 5; k++) await page.mouse.move(spot.x + 5 * k, spot.y, { steps: 2 });
+      await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+      during = await hooks(page);
       await page.mouse.up();
     });
     expect(moved.points).toBe(added.points);
+    // The drag preview, edited in place frame by frame (the library's live edits),
+    // shows what the terrain built anew from the dropped points has.
+    expect(during.points).toBe(moved.points);
+    expect(during.triangles).toBe(moved.triangles);
+    expect(during.quads).toBe(moved.quads);
     const q = await page.evaluate((i) => window.__hodt!.point(i), start.points);
     expect(q.x).toBeGreaterThan(p.x);
     expect(q.y).toBe(p.y);

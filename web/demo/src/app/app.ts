@@ -21,7 +21,7 @@ import { createToolbar } from '../ui/toolbar.ts';
 import { createPlanView } from '../views/plan/planView.ts';
 import { createTerrainScene } from '../views/three/terrainScene.ts';
 import { createViewer } from '../views/three/viewer.ts';
-import { analyse, analyseTriangles, countFlipped, type Analysis } from './analysis.ts';
+import { analyse, analyseTriangles, countFlipped, readStructure, type Analysis } from './analysis.ts';
 import { dropDuplicateXY } from './dedupe.ts';
 import { describeVertex } from './describeVertex.ts';
 import { heightAt } from './heightAt.ts';
@@ -35,6 +35,13 @@ import { createUrlSync } from './urlSync.ts';
 import { createTeachPanel } from '../teach/teachPanel.ts';
 
 type Ready = Extract<Built, { ok: true }>;
+
+/** Do a and b hold the same points, except perhaps point i? */
+function sameExcept(a: Float64Array, b: Float64Array, i: number): boolean {
+  if (a.length !== b.length) return false;
+  for (let k = 0; k < a.length; ++k) if (a[k] !== b[k] && Math.floor(k / 3) !== i) return false;
+  return true;
+}
 
 export const DEFAULT_SOURCE: TerrainSource = { kind: 'volcano', count: 200, seed: 7 };
 const DEFAULT_SETTINGS: SolveSettings = { objective: 'min-mixed-vertices', method: 'auto', epsilon: 0.25, order: 1 };
@@ -85,7 +92,7 @@ export function startApp(hodt: Hodt): void {
       const z = shown ? heightAt(shown, x, y) : 0;
       commit(addPoint(points, x, y, z), 'add point', { select: points.length / 3 });
     },
-    drag: (i, x, y, z) => dragPreview(movePoint(points, i, x, y, z)),
+    drag: (i, x, y, z) => dragPreview(i, movePoint(points, i, x, y, z)),
     dragEnd: (i, x, y, z) => {
       const p = pointAt(points, i);
       const label = p.x === x && p.y === y ? 'change height' : 'move point';
@@ -253,14 +260,26 @@ export function startApp(hodt: Hodt): void {
     return true;
   }
 
-  let dragTarget: Float64Array | null = null;
-  function dragPreview(next: Float64Array): void {
+  let dragTarget: { index: number; points: Float64Array } | null = null;
+  function dragPreview(index: number, next: Float64Array): void {
     const queued = dragTarget !== null;
-    dragTarget = next;
+    dragTarget = { index, points: next };
     if (queued) return;
     requestAnimationFrame(() => {
-      const target = dragTarget!;
+      const { index: i, points: target } = dragTarget!;
       dragTarget = null;
+      // The first frame of a drag builds a preview terrain; later frames move the
+      // point in it (a live edit: the library updates the triangulation around it).
+      if (preview && sameExcept(preview.terrain.points, target, i)) {
+        try {
+          preview.terrain.movePoint(i, target[3 * i]!, target[3 * i + 1]!, target[3 * i + 2]!);
+        } catch {
+          return; // e.g. on top of another point: keep the last good picture
+        }
+        preview = { ...preview, structure: readStructure(preview.terrain, false) };
+        display(analyse(preview.terrain, preview.structure, target, new Uint8Array(preview.structure.quads.length / 4)));
+        return;
+      }
       const built = buildTerrain(hodt, target, false);
       if (!built.ok) return; // e.g. on top of another point: keep the last good picture
       disposePreview();
