@@ -179,9 +179,14 @@ class TerrainHandle {
   }
 
   // progress: undefined, or a JS function (done, total) returning false to cancel.
-  val solve(const std::string& objective, const std::string& method, double epsilon, bool trace, val progress) const {
+  // order k >= 2: over the k-th order Delaunay triangulations; the result then also
+  // carries the triangles (input indices), since it is not a choice of diagonals.
+  val solve(const std::string& objective, const std::string& method, double epsilon, bool trace, uint32_t order,
+            val progress) const {
     return guarded([&] {
+      check_order(order);
       SolveOptions options;
+      options.order = order;
       const auto m = parse_method(method);
       if (!m) throw InputError("unknown method '" + method + "'; valid methods: " + method_ids());
       options.method = *m;
@@ -195,7 +200,10 @@ class TerrainHandle {
       const Objective o = objective_of(objective);
       Solution s = hodt::solve(t_.structure(), o, options);
       s.delaunay_value = t_.delaunay_value(o);
-      return solution_value(s);
+      val out = solution_value(s);
+      out.set("order", order);
+      if (s.mesh) out.set("triangles", copy_out("Uint32Array", t_.to_input(s.mesh->triangles)));
+      return out;
     });
   }
   // Values of all objectives for all 2^m choices, row-major (choice index, objective).
@@ -206,22 +214,6 @@ class TerrainHandle {
       flat.reserve(rows.size() * kNumObjectives);
       for (const auto& r : rows) flat.insert(flat.end(), r.begin(), r.end());
       return copy_out("Float64Array", flat);
-    });
-  }
-  // Optimises over k-th order Delaunay triangulations (k >= 2); the result also
-  // carries the triangles (input indices), since it is not a choice of diagonals.
-  val solveHigherOrder(const std::string& objective, uint32_t order, val progress) const {
-    return guarded([&] {
-      check_order(order);
-      SolveOptions options;
-      if (progress.typeOf().as<std::string>() == "function")
-        options.progress = [progress](double done, double total) { return !progress(done, total).isFalse(); };
-      const Objective o = objective_of(objective);
-      Solution s = k_order_solution(t_.structure(), o, order, options);
-      val out = solution_value(s);
-      out.set("order", order);
-      out.set("triangles", copy_out("Uint32Array", t_.to_input(s.mesh->triangles)));
-      return out;
     });
   }
   std::string statsJson(uint32_t order) const { return stats_json(t_, order); }
@@ -338,7 +330,6 @@ EMSCRIPTEN_BINDINGS(hodt) {
       .function("enumerateAll", &TerrainHandle::enumerateAll)
       .function("statsJson", &TerrainHandle::statsJson)
       .function("usefulEdges", &TerrainHandle::usefulEdges)
-      .function("solveHigherOrder", &TerrainHandle::solveHigherOrder)
       .function("usefulTriangles", &TerrainHandle::usefulTriangles);
   emscripten::function("fromPoints", &fromPoints, emscripten::allow_raw_pointers());
   emscripten::function("fromTriangulation", &fromTriangulation, emscripten::allow_raw_pointers());

@@ -100,8 +100,8 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
     if (command == "stats") {
       r.out = stats_json(terrain, static_cast<uint32_t>(order)) + "\n";
     } else {
-      Solution s = order > 1 ? k_order_solution(terrain.structure(), *objective, static_cast<uint32_t>(order), options)
-                             : solve(terrain.structure(), *objective, options);
+      options.order = static_cast<uint32_t>(order);
+      Solution s = solve(terrain.structure(), *objective, options);
       s.delaunay_value = terrain.delaunay_value(*objective);
       r.out = solution_json(terrain, s, triangles, options.trace) + "\n";
     }

@@ -10,6 +10,7 @@
 #include "hodt/exact.hpp"
 #include "hodt/factor_models.hpp"
 #include "hodt/format.hpp"
+#include "hodt/k_order.hpp"
 #include "hodt/min_max_degree.hpp"
 #include "hodt/pair_measures.hpp"
 
@@ -79,6 +80,7 @@ Solution dispatch(const FirstOrder& fo, Objective objective, const SolveOptions&
 Solution solve(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
   if (!(options.epsilon > 0 && options.epsilon < 1))
     throw InputError("epsilon is " + format_number(options.epsilon) + ", expected a number in (0, 1)");
+  if (options.order > 1) return k_order_solution(fo, objective, options.order, options);
   const auto t0 = std::chrono::steady_clock::now();
   Solution s = dispatch(fo, objective, options);
   if (!s.critical && is_pair_objective(objective)) s.critical = critical_pair(objective, triangulate(fo, s.choice));

@@ -182,11 +182,14 @@ describe('higher order: hodt solve --order K', () => {
       expect(withoutTime(hodt(args).out)).toEqual(withoutTime(native(args).out));
     }
   });
-  it('a heuristic with a bound on larger inputs', () => {
-    const j = JSON.parse(hodt(['solve', fixture('dem-hills-400.txt'), '--objective', 'min-local-minima', '--order', '4']).out);
-    expect(j.method).toBe('heuristic');
-    expect(j.order).toBe(4);
-    expect(j.bound).toBeLessThanOrEqual(j.value);
-    expect(j.value).toBeLessThanOrEqual(j.delaunayValue);
+  it('exact over the regions on larger inputs; approx is a local search with a bound', () => {
+    const args = ['solve', fixture('dem-hills-400.txt'), '--objective', 'min-local-minima', '--order', '4'];
+    const exact = JSON.parse(hodt(args).out);
+    expect(exact).toMatchObject({ method: 'exact', order: 4, optimal: true, bound: null });
+    expect(exact.value).toBeLessThanOrEqual(exact.delaunayValue);
+    const approx = JSON.parse(hodt([...args, '--method', 'approx']).out);
+    expect(approx.method).toBe('heuristic');
+    expect(approx.value).toBeGreaterThanOrEqual(exact.value);
+    if (!approx.optimal) expect(approx.bound).toBeLessThanOrEqual(exact.value);
   });
 });

@@ -58,14 +58,20 @@ describe('order', () => {
     expect(() => small.solve('min-local-minima', { order: 2, signal: AbortSignal.abort() })).toThrow(CancelledError);
     expect(() => small.solve('min-local-minima', { order: 2, progress: () => false })).toThrow(CancelledError);
   });
-  it('refuses bad orders, and methods other than auto above order 1, with a clear InputError', () => {
+  it('refuses bad orders with a clear InputError; brute force at order k enumerates small instances only', () => {
     for (const order of [0, 17, 1.5, Number.NaN]) {
       expect(() => terrain.solve('min-local-minima', { order })).toThrow(InputError);
     }
     expect(() => terrain.solve('min-local-minima', { order: 0 })).toThrow('order is 0, expected an integer from 1 to 16');
-    expect(() => terrain.solve('min-local-minima', { order: 2, method: 'brute-force' })).toThrow(
-      "method 'brute-force' applies to order 1 only; order 2 chooses its method itself (leave method out)",
+    using small = hodt.terrain(randomPoints(200, 3));
+    expect(() => small.solve('min-local-minima', { order: 2, method: 'brute-force' })).toThrow(
+      /brute force at order 2 enumerates every k-OD triangulation and refuses 200 points \(at most 30\)/,
     );
+    using tiny = hodt.terrain(randomPoints(10, 3));
+    const bf = tiny.solve('minmax-edge-area-ratio', { order: 2, method: 'brute-force' });
+    const ex = tiny.solve('minmax-edge-area-ratio', { order: 2, method: 'exact' });
+    expect(bf).toMatchObject({ method: 'brute-force', optimal: true });
+    expect(ex).toMatchObject({ method: 'exact', optimal: true, value: bf.value });
   });
 });
 

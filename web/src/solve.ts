@@ -14,17 +14,20 @@ export type ProgressCallback = (done: number, total: number) => boolean | void;
 
 export interface SolveOptions {
   /** 'auto' (default): exact when the instance fits the memory cap, else the
-   * approximation; 'exact'; 'approx'; 'brute-force' (all 2^m choices, m <= 24).
-   * Order 1 only: higher orders choose their method themselves. */
+   * approximation (order 1) or a local search with a certified bound (order k >= 2);
+   * 'exact' (refuses, naming the limit, when it does not fit); 'approx';
+   * 'brute-force' (the reference: all 2^m choices, m <= 24, at order 1; every k-OD
+   * triangulation of at most 30 points at order k). */
   method?: Method;
   /** Approximation schemes: a value within a factor (1 - epsilon) of the optimum,
    * in (0, 1). Default 0.25. */
   epsilon?: number;
   /** Order k of the Delaunay triangulations to search (every triangle's
    * circumcircle holds at most k points), 1 to 16. Default 1: the 2^m first order
-   * triangulations. k >= 2: exact by enumeration when the k-OD triangulations are
-   * few enough, else the first order optimum improved by k-OD flips (`method`
-   * 'heuristic', with a bound when one is known). */
+   * triangulations. k >= 2: the regions cut by the fixed edges, each region's k-OD
+   * triangulations, and an exact DP over them (`method` 'exact'); when a region has
+   * too many triangulations or a table would be too large, a local search from the
+   * first order optimum (`method` 'heuristic') with a proven `bound`. */
   order?: number;
   /** Min-max pair objectives: record every threshold the search tested in
    * `Solution.trace`. */
@@ -58,9 +61,6 @@ function checkOptions(objective: unknown, options: SolveOptions): void {
   if (typeof method !== 'string') throw new InputError(`method is ${String(method)}, expected brute-force, exact, approx or auto`);
   if (typeof epsilon !== 'number') throw new InputError(`epsilon is ${String(epsilon)}, expected a number in (0, 1)`);
   checkOrder(order);
-  if (order > 1 && method !== 'auto') {
-    throw new InputError(`method '${method}' applies to order 1 only; order ${order} chooses its method itself (leave method out)`);
-  }
 }
 
 /** Runs the raw solver with checked options, progress and cancellation. */
@@ -85,7 +85,7 @@ export function solveRaw(raw: RawTerrain, objective: ObjectiveId, options: Solve
         }
       : undefined;
   try {
-    return order === 1 ? raw.solve(objective, method, epsilon, trace, tick) : raw.solveHigherOrder(objective, order, tick);
+    return raw.solve(objective, method, epsilon, trace, order, tick);
   } catch (e) {
     if (thrown) throw (thrown as { error: unknown }).error;
     const error = toHodtError(e);

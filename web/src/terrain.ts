@@ -57,7 +57,8 @@ export interface Solution {
   /** Order k of the triangulations searched (SolveOptions.order). */
   order: number;
   /** The method that ran: 'auto' reports what it chose; order >= 2 reports
-   * 'exact' (enumeration) or 'heuristic'. */
+   * 'brute-force', 'exact' (the DP over the regions) or 'heuristic' (local search
+   * with a bound). */
   method: string;
   /** Objective value of the returned triangulation. */
   value: number;

@@ -1,14 +1,15 @@
 // Optimising over k-th order Delaunay triangulations (k >= 1; paper Section 4.3).
 //
-// The paper's DP over augmented tree decompositions is impractical as written;
-// what runs here:
-//  - exact: every k-OD triangulation is enumerated (exact cover of the hull by
-//    candidate triangles: k-OD, all edges useful, empty), and the best kept; used
-//    when the enumeration fits its node budget, so `optimal` is then proven;
-//  - otherwise: the first order optimum (a k-OD triangulation for every k >= 1)
-//    improved by flips that keep every triangle k-OD and strictly improve the
-//    objective (after the flip heuristic of de Kok, van Kreveld and Loeffler),
-//    reported with optimal = false and a bound where one is known.
+// The fixed edges cut the hull into regions (regions.hpp); each region's k-OD
+// triangulations are enumerated, and the objective's terms become a state graph
+// over the regions (region_model.hpp):
+//  - exact: the state graph's DP over a tree decomposition (every region
+//    enumerated, every table within the memory cap): `optimal` is then proven;
+//  - otherwise: coordinate descent over the regions' states from the first order
+//    optimum, with the bound of a relaxation (each factor at its best), so the
+//    gap is known; `optimal` when the bound meets the value.
+//  - brute force: every k-OD triangulation of the whole instance (small inputs):
+//    the reference the engine is tested against.
 // Every returned triangulation is verified k-OD.
 #pragma once
 #include <functional>
@@ -27,9 +28,13 @@ struct KOrderResult {
   double delaunay_value = 0;
   bool optimal = false;
   std::optional<double> bound;
-  uint64_t enumerated = 0;  // triangulations enumerated (exact)
-  std::string method;       // "exact" (enumeration) or "heuristic"
+  uint64_t enumerated = 0;  // triangulations enumerated (brute force)
+  std::string method;       // "brute-force", "exact" or "heuristic"
+  std::string details;      // what ran, in a few words
 };
+
+// Brute force at order k enumerates the whole instance: at most this many points.
+constexpr uint32_t kKOrderBruteForceMaxPoints = 30;
 
 // Calls visit for every k-OD triangulation of the points of `delaunay` (as a list
 // of triangles); returns false if it stopped because `max_nodes` was reached.
@@ -37,6 +42,7 @@ struct KOrderResult {
 bool enumerate_k_order(const Mesh& delaunay, uint32_t k, uint64_t max_nodes,
                        const std::function<void(const std::vector<Tri>&)>& visit, const Progress& progress = {});
 
+// max_nodes: the enumeration budget of one region (brute force: of the instance).
 KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options,
                            uint64_t max_nodes = 300'000);
 

@@ -10,6 +10,7 @@ namespace hodt {
 enum class Method : uint8_t { BruteForce, Exact, Approx, Auto };
 
 struct SolveOptions {
+  uint32_t order = 1;     // k: optimise over the k-th order Delaunay triangulations
   Method method = Method::Auto;
   double epsilon = 0.25;  // approximation schemes: value within (1 - epsilon) of optimal
   bool trace = false;     // record the bottleneck search (min-max pair objectives)
@@ -21,7 +22,8 @@ const char* method_id(Method m);
 std::optional<Method> parse_method(std::string_view id);
 std::string method_ids();  // "brute-force, exact, approx, auto"
 
-// Solves objective over the first order triangulations of fo. Throws LimitError
+// Solves objective over the first order triangulations of fo (over the k-th
+// order ones for options.order = k > 1: the result then carries its mesh). Throws LimitError
 // when the method cannot handle the instance (with the reason) and InputError for
 // bad options. The delaunay_value of the result is filled in.
 Solution solve(const FirstOrder& fo, Objective objective, const SolveOptions& options);

@@ -51,16 +51,12 @@ export interface RawTerrain {
     method: string,
     epsilon: number,
     trace: boolean,
+    order: number,
     progress: ((done: number, total: number) => boolean | void) | undefined,
-  ): RawSolution;
+  ): RawSolution & { order: number; triangles?: Uint32Array };
   enumerateAll(): Float64Array;
   statsJson(order: number): string;
   usefulEdges(order: number): Uint32Array;
-  solveHigherOrder(
-    objective: string,
-    order: number,
-    progress: ((done: number, total: number) => boolean | void) | undefined,
-  ): RawSolution & { order: number; triangles: Uint32Array };
   usefulTriangles(order: number): Uint32Array;
   delete(): void;
   isDeleted(): boolean;

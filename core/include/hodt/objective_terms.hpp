@@ -1,0 +1,79 @@
+// Every objective written once, as local terms and how they combine
+// (DEFINITIONS.md): a term per vertex (over its star), per edge (over its two
+// triangles), or per triangle, combined by sum or max. evaluate_terms() and the
+// region engine (region_model.hpp) read only this description, at every order:
+// adding an objective means adding its terms here, not touching a solver.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "hodt/mesh.hpp"
+#include "hodt/objectives.hpp"
+#include "hodt/skeleton.hpp"
+
+namespace hodt {
+
+// Where an objective's terms live.
+enum class TermSite : uint8_t {
+  InteriorVertex,  // every vertex not on the convex hull
+  Vertex,          // every vertex
+  InteriorEdge,    // every edge with a triangle on each side
+  Edge,            // every edge (hull edges have no right apex)
+  Triangle,        // every triangle
+  EdgePair,        // every pair of triangles sharing an edge (a max over pairs)
+  VertexPair,      // every pair of triangles sharing a vertex (a max over pairs)
+};
+
+enum class TermCombine : uint8_t { Sum, Max };
+
+constexpr uint32_t kNoApex = UINT32_MAX;
+
+// A vertex's star in one triangulation: its neighbours and its triangles, in any
+// order (the terms do not depend on it).
+struct Star {
+  uint32_t center;
+  const std::vector<uint32_t>& neighbors;
+  const std::vector<Tri>& triangles;  // counterclockwise
+};
+
+struct ObjectiveTerms {
+  TermSite site;
+  TermCombine combine;
+  // Each term's value lies in [0, term_max] (INFINITY when unbounded): what a
+  // relaxation may assume of a term it cannot tabulate.
+  double term_max;
+  // Exactly one of these is set, matching the site.
+  double (*vertex)(const Mesh& points, const Star& star) = nullptr;
+  // Edge u -> v with w the apex on its left and x on its right (kNoApex on the hull).
+  double (*edge)(const Mesh& points, uint32_t u, uint32_t v, uint32_t w, uint32_t x) = nullptr;
+  double (*triangle)(const Mesh& points, const Tri& t) = nullptr;
+  // Pair sites: the measure of two triangles (symmetric).
+  double (*pair)(const Mesh& points, const Tri& s, const Tri& t) = nullptr;
+};
+
+const ObjectiveTerms& objective_terms(Objective o);
+
+// The site a term is attached to: a vertex-pair term is a vertex's max over the
+// pairs of its star, an edge-pair term an interior edge's pair.
+inline bool vertex_site(TermSite s) {
+  return s == TermSite::InteriorVertex || s == TermSite::Vertex || s == TermSite::VertexPair;
+}
+inline bool edge_site(TermSite s) {
+  return s == TermSite::InteriorEdge || s == TermSite::Edge || s == TermSite::EdgePair;
+}
+inline bool interior_only(TermSite s) {
+  return s == TermSite::InteriorVertex || s == TermSite::InteriorEdge || s == TermSite::EdgePair;
+}
+
+// One vertex term (vertex sites; hull vertices of an interior site are not asked).
+double vertex_term(const ObjectiveTerms& d, const Mesh& points, const Star& star);
+// One edge term; x = kNoApex on the hull (only asked for the Edge site).
+double edge_term(const ObjectiveTerms& d, const Mesh& points, uint32_t u, uint32_t v, uint32_t w, uint32_t x);
+
+// The identity of the combination (0: every term is >= 0, and a max over nothing is 0).
+inline double combine(TermCombine c, double a, double b) { return c == TermCombine::Sum ? a + b : (a > b ? a : b); }
+
+// The objective's value on a triangulation, from its terms alone.
+double evaluate_terms(Objective o, const Mesh& mesh);
+
+}  // namespace hodt

@@ -1,0 +1,31 @@
+// An objective over the k-OD triangulations as a state graph: one variable per
+// region with a choice, its states the region's triangulations, and the
+// objective's terms (objective_terms.hpp) as factors over the regions each term
+// can see: a vertex term over the regions around the vertex (through the fan each
+// state puts at the vertex), an edge term on a fixed edge over the regions on its
+// two sides (through the apex), everything inside one region as its unary.
+#pragma once
+#include "hodt/objectives.hpp"
+#include "hodt/regions.hpp"
+#include "hodt/state_graph.hpp"
+
+namespace hodt {
+
+struct RegionModel {
+  StateGraph graph;
+  std::vector<uint32_t> region_of_variable;
+  std::vector<int32_t> variable_of_region;  // -1 for a region with one state
+  // Per region, its state for an assignment of the variables.
+  std::vector<uint32_t> region_states(const std::vector<uint32_t>& variable_state) const;
+  // The variables' states for per-region states.
+  std::vector<uint32_t> variable_states(const std::vector<uint32_t>& region_state) const;
+};
+
+struct RegionModelLimits {
+  double max_factor = 1 << 20;  // entries of one vertex factor; larger ones are relaxed
+};
+
+RegionModel region_model(const Mesh& delaunay, const Regions& regions, Objective o,
+                         const RegionModelLimits& limits = {});
+
+}  // namespace hodt

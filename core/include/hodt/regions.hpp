@@ -1,0 +1,56 @@
+// The regions of order k. A useful k-OD edge that crosses no other useful k-OD
+// edge is in every k-OD triangulation (a triangulation is a maximal plane graph
+// and uses only useful edges). Such fixed edges are Delaunay edges (any other
+// useful edge crosses a Delaunay edge), and they cut the hull into regions: unions
+// of Delaunay triangles glued across the free Delaunay edges. The k-OD
+// triangulations are exactly the products of one k-OD triangulation per region.
+// At order 1 the regions with a choice are the flippable quads.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "hodt/factor_graph.hpp"
+#include "hodt/mesh.hpp"
+#include "hodt/skeleton.hpp"
+
+namespace hodt {
+
+struct Region {
+  std::vector<uint32_t> delaunay_triangles;             // its triangles in the Delaunay mesh
+  std::vector<std::pair<uint32_t, uint32_t>> boundary;  // directed edges, the region on their left
+  // Its k-OD triangulations; states[0] is the Delaunay one. Each lists the
+  // triangles counterclockwise, starting at their smallest vertex, sorted.
+  std::vector<std::vector<Tri>> states;
+  bool complete = true;  // every k-OD triangulation of the region is in states
+};
+
+struct Regions {
+  uint32_t order = 1;
+  uint64_t useful_edges = 0;
+  std::vector<uint8_t> fixed;                 // per Delaunay halfedge: in every k-OD triangulation
+  std::vector<uint32_t> region_of_triangle;   // per Delaunay triangle
+  std::vector<Region> regions;
+  uint64_t incomplete = 0;                    // regions whose enumeration hit the budget
+
+  // The triangles of one state per region, as a mesh (canonical order).
+  Mesh triangulation(const Mesh& delaunay, const std::vector<uint32_t>& state) const;
+};
+
+struct RegionLimits {
+  uint64_t max_nodes_per_region = 200'000;  // enumeration search nodes
+  uint64_t max_states_per_region = 20'000;  // triangulations kept per region
+  Progress progress;
+};
+
+// Fixed edges, regions and each region's k-OD triangulations (within the limits:
+// a region over them keeps the ones found and is marked incomplete).
+Regions k_order_regions(const Mesh& delaunay, uint32_t k, const RegionLimits& limits = {});
+
+// The Delaunay halfedges crossed by the segment u v (u, v vertices, uv not a
+// Delaunay edge and through no other point).
+std::vector<uint32_t> crossed_edges(const Mesh& delaunay, const std::vector<int32_t>& vertex_halfedge, uint32_t u,
+                                    uint32_t v);
+
+}  // namespace hodt

@@ -1,0 +1,76 @@
+// A factor graph over variables with any number of states (a region's k-OD
+// triangulations), solved exactly by variable elimination over a tree
+// decomposition, or heuristically with a relaxation bound. A factor reads each of
+// its variables through a projection of the states to classes (what the factor
+// sees of a state: a fan around a vertex, an apex beside an edge), so its table
+// stays small; states no factor can tell apart are merged before the DP.
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "hodt/factor_graph.hpp"
+#include "hodt/objective_terms.hpp"
+#include "hodt/objectives.hpp"
+
+namespace hodt {
+
+struct StateFactor {
+  std::vector<uint32_t> scope;                 // distinct variables
+  std::vector<std::vector<uint32_t>> project;  // per scope variable: state -> class
+  std::vector<uint32_t> dims;                  // classes per scope variable
+  std::vector<double> table;                   // over the classes, first variable fastest
+  uint32_t num_terms = 1;                      // objective terms combined in it
+};
+
+struct StateGraph {
+  TermCombine combine = TermCombine::Sum;
+  Sense sense = Sense::Min;
+  double term_max = INFINITY;  // a term's largest possible value (relaxations)
+  double constant = 0;
+  std::vector<uint32_t> domain;              // states per variable
+  std::vector<std::vector<double>> unary;    // per variable and state (combined)
+  std::vector<uint32_t> unary_terms;         // terms in each variable's unary
+  std::vector<StateFactor> factors;
+  // Terms left out of the factors (too large to tabulate, or over a variable
+  // whose states are not all known): the solution is then not exact, and a bound
+  // must assume the best of them.
+  uint64_t relaxed_terms = 0;
+  std::vector<uint8_t> partial;  // per variable: its states are not all known
+};
+
+struct StateDpLimits {
+  double max_table = 1 << 22;  // entries of the largest table the DP may build
+  Progress progress;
+};
+
+struct StateDpResult {
+  std::vector<uint32_t> state;  // per variable
+  double value;                 // the model's value of it
+  uint32_t width = 0;           // largest bag minus one
+  double largest_table = 0;     // entries
+};
+
+// Merges the classes of a factor's variable that its table cannot tell apart,
+// drops the variables it does not depend on, and folds factors of one variable
+// into the unary terms (same values for every assignment).
+void simplify(StateGraph& g);
+
+// The exact optimum (ignoring relaxed terms: exact only if there are none):
+// variable elimination for sums; for min-max, a binary search over the tables'
+// values with a feasibility DP per threshold. Throws LimitError before building a
+// table over limits.max_table entries.
+StateDpResult solve_states(const StateGraph& g, const StateDpLimits& limits = {});
+
+// The model's value of an assignment.
+double evaluate_states(const StateGraph& g, const std::vector<uint32_t>& state);
+
+// Coordinate descent from `start`: each variable in turn takes its best state for
+// the others' current states, until no variable improves.
+std::vector<uint32_t> improve_states(const StateGraph& g, std::vector<uint32_t> start, const Progress& progress = {});
+
+// A proven bound on the optimum over all assignments (including states not
+// listed in partial variables and relaxed terms): each factor at its best.
+double relaxation_bound(const StateGraph& g);
+
+}  // namespace hodt

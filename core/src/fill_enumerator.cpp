@@ -1,0 +1,125 @@
+#include "hodt/fill_enumerator.hpp"
+
+#include <unordered_set>
+
+#include "hodt/circle_count.hpp"
+#include "hodt/error.hpp"
+#include "hodt/higher_order.hpp"
+#include "hodt/predicates.hpp"
+
+namespace hodt {
+
+Candidates k_order_candidates(const Mesh& dt, uint32_t k, const std::vector<std::pair<uint32_t, uint32_t>>& edges) {
+  CircleCounter circles(dt);
+  Candidates out;
+  for (auto t : useful_triangles(dt, k, edges)) {
+    if (orient2d(dt.point(t[0]), dt.point(t[1]), dt.point(t[2])) < 0) std::swap(t[1], t[2]);
+    circles.count(t[0], t[1], t[2], k);  // the at most k points in its circle
+    bool empty = true;
+    for (uint32_t p : circles.inside())
+      empty = empty && !(orient2d(dt.point(t[0]), dt.point(t[1]), dt.point(p)) >= 0 &&
+                         orient2d(dt.point(t[1]), dt.point(t[2]), dt.point(p)) >= 0 &&
+                         orient2d(dt.point(t[2]), dt.point(t[0]), dt.point(p)) >= 0);
+    if (!empty) continue;
+    for (int i = 0; i < 3; ++i) out[edge_key(t[i], t[(i + 1) % 3])].push_back(t[(i + 2) % 3]);
+  }
+  return out;
+}
+
+namespace {
+
+bool crosses(const Mesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+  if (a == c || a == d || b == c || b == d) return false;
+  const int o1 = orient2d(m.point(a), m.point(b), m.point(c)), o2 = orient2d(m.point(a), m.point(b), m.point(d));
+  const int o3 = orient2d(m.point(c), m.point(d), m.point(a)), o4 = orient2d(m.point(c), m.point(d), m.point(b));
+  return o1 * o2 < 0 && o3 * o4 < 0;
+}
+
+struct Enumerator {
+  const Mesh& dt;
+  const Candidates& cand;
+  uint64_t budget;
+  const std::function<void(const std::vector<Tri>&)>& visit;
+  const Progress& progress;
+  std::unordered_set<uint64_t> open;  // directed edges with the uncovered side on their left
+  std::vector<std::pair<uint32_t, uint32_t>> edges;
+  std::vector<Tri> tris;
+  uint64_t nodes = 0;
+  bool complete = true;
+
+  const std::vector<uint32_t>* options(uint64_t e) const {
+    const auto it = cand.find(e);
+    return it == cand.end() ? nullptr : &it->second;
+  }
+
+  void run() {
+    if (++nodes > budget) {
+      complete = false;
+      return;
+    }
+    if (progress && (nodes & 4095) == 0 && !progress(static_cast<double>(nodes), static_cast<double>(budget)))
+      throw Cancelled();
+    if (open.empty()) {
+      visit(tris);
+      return;
+    }
+    // The open edge with the fewest candidate triangles (ties: smallest key).
+    uint64_t best = 0;
+    size_t fewest = SIZE_MAX;
+    for (uint64_t e : open) {
+      const auto* o = options(e);
+      const size_t c = o ? o->size() : 0;
+      if (c < fewest || (c == fewest && e < best)) fewest = c, best = e;
+    }
+    if (fewest == 0) return;  // a dead end: nothing can cover this edge
+    const uint32_t u = static_cast<uint32_t>(best >> 32), v = static_cast<uint32_t>(best);
+    for (uint32_t w : *options(best)) {
+      if (!complete) return;
+      // The triangle's other sides v -> w and w -> u: each closes the open edge in
+      // the same direction (that region is this triangle), or leaves the region
+      // beyond it uncovered: the reversed edge opens, if it crosses nothing placed.
+      bool ok = true;
+      bool close[2];
+      const uint32_t side[2][2] = {{v, w}, {w, u}};
+      for (int s = 0; s < 2 && ok; ++s) {
+        const uint32_t a = side[s][0], b = side[s][1];
+        close[s] = open.count(edge_key(a, b)) > 0;
+        if (close[s]) continue;
+        if (open.count(edge_key(b, a))) { ok = false; break; }  // its far side is covered already
+        for (auto [c, d] : edges)
+          if ((c == a && d == b) || (c == b && d == a) || crosses(dt, a, b, c, d)) { ok = false; break; }
+      }
+      if (!ok) continue;
+      open.erase(best);
+      size_t added = 0;
+      for (int s = 0; s < 2; ++s) {
+        const uint32_t a = side[s][0], b = side[s][1];
+        if (close[s]) open.erase(edge_key(a, b));
+        else open.insert(edge_key(b, a)), edges.push_back({a, b}), ++added;
+      }
+      tris.push_back({u, v, w});
+      run();
+      tris.pop_back();
+      for (int s = 1; s >= 0; --s) {
+        const uint32_t a = side[s][0], b = side[s][1];
+        if (close[s]) open.insert(edge_key(a, b));
+        else open.erase(edge_key(b, a));
+      }
+      edges.resize(edges.size() - added);
+      open.insert(best);
+    }
+  }
+};
+
+}  // namespace
+
+bool enumerate_fills(const Mesh& dt, const Candidates& candidates, const std::vector<std::pair<uint32_t, uint32_t>>& boundary,
+                     uint64_t max_nodes, const std::function<void(const std::vector<Tri>&)>& visit,
+                     const Progress& progress) {
+  Enumerator en{dt, candidates, max_nodes, visit, progress, {}, {}, {}};
+  for (auto [a, b] : boundary) en.open.insert(edge_key(a, b));
+  en.run();
+  return en.complete;
+}
+
+}  // namespace hodt

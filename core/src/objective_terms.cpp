@@ -1,0 +1,126 @@
+#include "hodt/objective_terms.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "hodt/measures.hpp"
+#include "hodt/pair_measures.hpp"
+
+namespace hodt {
+
+namespace {
+
+// Neighbour points of a star, for the exact vertex tests.
+struct NeighborPoints {
+  std::vector<const double*> p;
+  NeighborPoints(const Mesh& m, const Star& s) {
+    p.reserve(s.neighbors.size());
+    for (uint32_t w : s.neighbors) p.push_back(m.point(w));
+  }
+  uint32_t size() const { return static_cast<uint32_t>(p.size()); }
+};
+
+double is_class(const Mesh& m, const Star& s, VertexClass c) {
+  const NeighborPoints nb(m, s);
+  return vertex_class(m.point(s.center), nb.p.data(), nb.size()) == c;
+}
+
+double convex_vertex(const Mesh& m, const Star& s) { return is_class(m, s, kConvex); }
+double mixed_vertex(const Mesh& m, const Star& s) { return is_class(m, s, kMixed); }
+double local_minimum(const Mesh& m, const Star& s) {
+  const NeighborPoints nb(m, s);
+  return extremum(m.point(s.center), nb.p.data(), nb.size()) == kLocalMinimum;
+}
+double local_extremum(const Mesh& m, const Star& s) {
+  const NeighborPoints nb(m, s);
+  return extremum(m.point(s.center), nb.p.data(), nb.size()) != kNotExtremum;
+}
+double degree(const Mesh&, const Star& s) { return static_cast<double>(s.neighbors.size()); }
+
+double convex_edge(const Mesh& m, uint32_t u, uint32_t v, uint32_t w, uint32_t x) {
+  return edge_shape(m.point(u), m.point(v), m.point(w), m.point(x)) == kConvexEdge;
+}
+double length(const Mesh& m, uint32_t u, uint32_t v, uint32_t, uint32_t) { return edge_length(m.point(u), m.point(v)); }
+double area(const Mesh& m, const Tri& t) { return triangle_area(m.point(t[0]), m.point(t[1]), m.point(t[2])); }
+
+constexpr double kCount = 1, kUnbounded = INFINITY;
+
+std::array<ObjectiveTerms, kNumObjectives> make_table() {
+  using S = TermSite;
+  using C = TermCombine;
+  std::array<ObjectiveTerms, kNumObjectives> t{};
+  auto set = [&](Objective o, ObjectiveTerms d) { t[static_cast<size_t>(o)] = d; };
+  set(Objective::MaxConvexVertices, {S::InteriorVertex, C::Sum, kCount, convex_vertex});
+  set(Objective::MinMixedVertices, {S::InteriorVertex, C::Sum, kCount, mixed_vertex});
+  set(Objective::MinLocalMinima, {S::InteriorVertex, C::Sum, kCount, local_minimum});
+  set(Objective::MinLocalExtrema, {S::InteriorVertex, C::Sum, kCount, local_extremum});
+  set(Objective::MinmaxDegree, {S::Vertex, C::Max, kUnbounded, degree});
+  set(Objective::MaxConvexEdges, {S::InteriorEdge, C::Sum, kCount, nullptr, convex_edge});
+  set(Objective::MinTotalEdgeLength, {S::Edge, C::Sum, kUnbounded, nullptr, length});
+  set(Objective::MinmaxTriangleArea, {S::Triangle, C::Max, kUnbounded, nullptr, nullptr, area});
+  set(Objective::MinmaxEdgeAreaRatio, {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_area_ratio});
+  set(Objective::MinmaxEdgeNormalAngle, {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_normal_angle});
+  set(Objective::MinmaxEdgeEnclosingCircle,
+      {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_enclosing_circle});
+  set(Objective::MinmaxVertexAreaRatio, {S::VertexPair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_area_ratio});
+  set(Objective::MinmaxVertexNormalAngle,
+      {S::VertexPair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_normal_angle});
+  return t;
+}
+
+}  // namespace
+
+const ObjectiveTerms& objective_terms(Objective o) {
+  static const std::array<ObjectiveTerms, kNumObjectives> table = make_table();
+  return table[static_cast<size_t>(o)];
+}
+
+double vertex_term(const ObjectiveTerms& d, const Mesh& m, const Star& s) {
+  if (d.site != TermSite::VertexPair) return d.vertex(m, s);
+  double best = 0;
+  for (size_t i = 0; i < s.triangles.size(); ++i)
+    for (size_t j = i + 1; j < s.triangles.size(); ++j) best = std::max(best, d.pair(m, s.triangles[i], s.triangles[j]));
+  return best;
+}
+
+double edge_term(const ObjectiveTerms& d, const Mesh& m, uint32_t u, uint32_t v, uint32_t w, uint32_t x) {
+  if (d.site != TermSite::EdgePair) return d.edge(m, u, v, w, x);
+  return d.pair(m, Tri{u, v, w}, Tri{v, u, x});
+}
+
+double evaluate_terms(Objective o, const Mesh& m) {
+  const ObjectiveTerms& d = objective_terms(o);
+  // Sums are added in sorted order, so that equal triangulations listed
+  // differently have bit-identical totals.
+  std::vector<double> terms;
+  double max = 0;
+  auto add = [&](double t) {
+    if (d.combine == TermCombine::Sum) terms.push_back(t);
+    else max = std::max(max, t);
+  };
+  if (vertex_site(d.site)) {
+    const Stars st = build_stars(m);
+    std::vector<uint32_t> nb;
+    std::vector<Tri> tris;
+    for (uint32_t v = 0; v < m.num_vertices(); ++v) {
+      if (interior_only(d.site) && st.on_hull[v]) continue;
+      nb.assign(st.neighbor.begin() + st.offset[v], st.neighbor.begin() + st.offset[v + 1]);
+      tris.clear();
+      for (uint32_t i = st.tri_offset[v]; i < st.tri_offset[v + 1]; ++i) tris.push_back(base_triangle(m, st.triangle[i]));
+      add(vertex_term(d, m, Star{v, nb, tris}));
+    }
+  } else if (edge_site(d.site)) {
+    for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
+      const int32_t f = m.halfedges[e];
+      if (f < 0 ? interior_only(d.site) : f < static_cast<int32_t>(e)) continue;
+      add(edge_term(d, m, m.origin(e), m.target(e), m.apex(e), f < 0 ? kNoApex : m.apex(static_cast<uint32_t>(f))));
+    }
+  } else {
+    for (uint32_t t = 0; t < m.num_triangles(); ++t) add(d.triangle(m, base_triangle(m, t)));
+  }
+  return d.combine == TermCombine::Sum ? order_free_sum(std::move(terms)) : max;
+}
+
+}  // namespace hodt

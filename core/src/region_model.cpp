@@ -1,0 +1,257 @@
+#include "hodt/region_model.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "hodt/measures.hpp"
+
+namespace hodt {
+
+std::vector<uint32_t> RegionModel::region_states(const std::vector<uint32_t>& variable_state) const {
+  std::vector<uint32_t> s(variable_of_region.size(), 0);
+  for (size_t x = 0; x < region_of_variable.size(); ++x) s[region_of_variable[x]] = variable_state[x];
+  return s;
+}
+
+std::vector<uint32_t> RegionModel::variable_states(const std::vector<uint32_t>& region_state) const {
+  std::vector<uint32_t> s(region_of_variable.size(), 0);
+  for (size_t x = 0; x < region_of_variable.size(); ++x) s[x] = region_state[region_of_variable[x]];
+  return s;
+}
+
+namespace {
+
+// What each state of a region puts around each of its vertices: the fan of
+// triangles at the vertex, as a class (states with equal fans share a class).
+struct Fans {
+  std::vector<uint32_t> vertices;                  // sorted
+  std::vector<std::vector<uint32_t>> class_of;     // per local vertex, per state
+  std::vector<std::vector<std::vector<Tri>>> fan;  // per local vertex, per class
+  uint32_t local(uint32_t v) const {
+    return static_cast<uint32_t>(std::lower_bound(vertices.begin(), vertices.end(), v) - vertices.begin());
+  }
+};
+
+Fans fans_of(const Region& r) {
+  Fans f;
+  for (const Tri& t : r.states[0]) f.vertices.insert(f.vertices.end(), t.begin(), t.end());
+  std::sort(f.vertices.begin(), f.vertices.end());
+  f.vertices.erase(std::unique(f.vertices.begin(), f.vertices.end()), f.vertices.end());
+  const size_t nv = f.vertices.size();
+  f.class_of.assign(nv, std::vector<uint32_t>(r.states.size()));
+  f.fan.assign(nv, {});
+  std::vector<std::map<std::vector<Tri>, uint32_t>> ids(nv);
+  std::vector<std::vector<Tri>> around(nv);
+  for (size_t s = 0; s < r.states.size(); ++s) {
+    for (auto& a : around) a.clear();
+    for (const Tri& t : r.states[s])
+      for (uint32_t v : t) around[f.local(v)].push_back(t);
+    for (size_t i = 0; i < nv; ++i) {
+      auto [it, fresh] = ids[i].try_emplace(around[i], static_cast<uint32_t>(f.fan[i].size()));
+      if (fresh) f.fan[i].push_back(around[i]);
+      f.class_of[i][s] = it->second;
+    }
+  }
+  return f;
+}
+
+// The apex of directed edge u -> v in a list of counterclockwise triangles.
+uint32_t apex_of(const std::vector<Tri>& tris, uint32_t u, uint32_t v) {
+  for (const Tri& t : tris)
+    for (int i = 0; i < 3; ++i)
+      if (t[i] == u && t[(i + 1) % 3] == v) return t[(i + 2) % 3];
+  return kNoApex;
+}
+
+struct Builder {
+  const Mesh& dt;
+  const Regions& R;
+  const ObjectiveTerms& d;
+  RegionModel& M;
+  StateGraph& g;
+
+  int32_t var(uint32_t r) const { return M.variable_of_region[r]; }
+  void add_constant(double v) { g.constant = combine(d.combine, g.constant, v); }
+  // A term of region r that depends on its state only.
+  void add_unary(uint32_t r, uint32_t s, double v, bool count) {
+    const int32_t x = var(r);
+    if (x < 0) return add_constant(v);
+    g.unary[x][s] = combine(d.combine, g.unary[x][s], v);
+    g.unary_terms[x] += count;
+  }
+
+  void triangle_terms() {
+    for (uint32_t r = 0; r < R.regions.size(); ++r)
+      for (uint32_t s = 0; s < R.regions[r].states.size(); ++s)
+        for (const Tri& t : R.regions[r].states[s]) add_unary(r, s, d.triangle(dt, t), s == 0);
+  }
+
+  void edge_terms() {
+    // Edges inside a region: both triangles are the region's.
+    for (uint32_t r = 0; r < R.regions.size(); ++r)
+      for (uint32_t s = 0; s < R.regions[r].states.size(); ++s) {
+        const auto& tris = R.regions[r].states[s];
+        for (const Tri& t : tris)
+          for (int i = 0; i < 3; ++i) {
+            const uint32_t u = t[i], v = t[(i + 1) % 3];
+            if (u > v) continue;
+            const uint32_t x = apex_of(tris, v, u);
+            if (x != kNoApex) add_unary(r, s, edge_term(d, dt, u, v, t[(i + 2) % 3], x), s == 0);
+          }
+      }
+    // Fixed edges between regions, and hull edges.
+    for (uint32_t e = 0; e < dt.halfedges.size(); ++e) {
+      const int32_t f = dt.halfedges[e];
+      const uint32_t u = dt.origin(e), v = dt.target(e), r1 = R.region_of_triangle[e / 3];
+      const auto& s1 = R.regions[r1].states;
+      if (f < 0) {
+        if (interior_only(d.site)) continue;
+        for (uint32_t s = 0; s < s1.size(); ++s) add_unary(r1, s, edge_term(d, dt, u, v, apex_of(s1[s], u, v), kNoApex), s == 0);
+        continue;
+      }
+      const uint32_t r2 = R.region_of_triangle[static_cast<uint32_t>(f) / 3];
+      if (f < static_cast<int32_t>(e) || r1 == r2) continue;  // once; inside a region: done above
+      const auto& s2 = R.regions[r2].states;
+      // Apex classes on each side.
+      auto classes = [&](const std::vector<std::vector<Tri>>& states, uint32_t a, uint32_t b, std::vector<uint32_t>& apex) {
+        std::vector<uint32_t> cls(states.size());
+        for (size_t s = 0; s < states.size(); ++s) {
+          const uint32_t w = apex_of(states[s], a, b);
+          auto it = std::find(apex.begin(), apex.end(), w);
+          cls[s] = static_cast<uint32_t>(it - apex.begin());
+          if (it == apex.end()) apex.push_back(w);
+        }
+        return cls;
+      };
+      std::vector<uint32_t> a1, a2;
+      std::vector<uint32_t> c1 = classes(s1, u, v, a1), c2 = classes(s2, v, u, a2);
+      const int32_t x1 = var(r1), x2 = var(r2);
+      if (x1 < 0 || x2 < 0) {  // at most one side has a choice: a unary term
+        const bool left = x1 >= 0;
+        const auto& cls = left ? c1 : c2;
+        for (uint32_t s = 0; s < cls.size(); ++s)
+          add_unary(left ? r1 : r2, s,
+                    edge_term(d, dt, u, v, a1[left ? cls[s] : 0], a2[left ? 0 : cls[s]]), s == 0);
+        continue;
+      }
+      StateFactor fac;
+      fac.scope = {static_cast<uint32_t>(x1), static_cast<uint32_t>(x2)};
+      fac.dims = {static_cast<uint32_t>(a1.size()), static_cast<uint32_t>(a2.size())};
+      for (uint32_t j = 0; j < a2.size(); ++j)
+        for (uint32_t i = 0; i < a1.size(); ++i) fac.table.push_back(edge_term(d, dt, u, v, a1[i], a2[j]));
+      fac.project = {std::move(c1), std::move(c2)};
+      g.factors.push_back(std::move(fac));
+    }
+  }
+
+  void vertex_terms(double max_factor) {
+    std::vector<Fans> fans(R.regions.size());
+    std::vector<uint8_t> have(R.regions.size(), 0);
+    auto fans_at = [&](uint32_t r) -> const Fans& {
+      if (!have[r]) fans[r] = fans_of(R.regions[r]), have[r] = 1;
+      return fans[r];
+    };
+    std::vector<uint8_t> on_hull(dt.num_vertices(), 0);
+    for (uint32_t v : dt.hull) on_hull[v] = 1;
+    const Stars st = build_stars(dt);
+    std::vector<uint32_t> around, nb;
+    std::vector<Tri> tris;
+    for (uint32_t v = 0; v < dt.num_vertices(); ++v) {
+      if (interior_only(d.site) && on_hull[v]) continue;
+      around.clear();
+      for (uint32_t i = st.tri_offset[v]; i < st.tri_offset[v + 1]; ++i) around.push_back(R.region_of_triangle[st.triangle[i]]);
+      std::sort(around.begin(), around.end());
+      around.erase(std::unique(around.begin(), around.end()), around.end());
+      // Fixed fans, and the regions with a choice with their fan classes.
+      std::vector<Tri> fixed;
+      std::vector<uint32_t> choice_regions, local;
+      double size = 1;
+      for (uint32_t r : around) {
+        const Fans& f = fans_at(r);
+        const uint32_t lv = f.local(v);
+        if (var(r) < 0) {
+          const auto& fan = f.fan[lv][0];
+          fixed.insert(fixed.end(), fan.begin(), fan.end());
+        } else {
+          choice_regions.push_back(r), local.push_back(lv);
+          size *= static_cast<double>(f.fan[lv].size());
+        }
+      }
+      auto term = [&](const std::vector<uint32_t>& cls) {
+        tris = fixed;
+        for (size_t j = 0; j < choice_regions.size(); ++j) {
+          const auto& fan = fans[choice_regions[j]].fan[local[j]][cls[j]];
+          tris.insert(tris.end(), fan.begin(), fan.end());
+        }
+        nb.clear();
+        for (const Tri& t : tris)
+          for (uint32_t w : t)
+            if (w != v) nb.push_back(w);
+        std::sort(nb.begin(), nb.end());
+        nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+        return vertex_term(d, dt, Star{v, nb, tris});
+      };
+      if (choice_regions.empty()) {
+        add_constant(term({}));
+        continue;
+      }
+      if (size > max_factor) {  // relaxed: the model ignores this term
+        ++g.relaxed_terms;
+        continue;
+      }
+      if (choice_regions.size() == 1) {
+        const uint32_t r = choice_regions[0];
+        const Fans& f = fans[r];
+        std::vector<double> by_class(f.fan[local[0]].size());
+        for (uint32_t c = 0; c < by_class.size(); ++c) by_class[c] = term({c});
+        for (uint32_t s = 0; s < R.regions[r].states.size(); ++s) add_unary(r, s, by_class[f.class_of[local[0]][s]], s == 0);
+        continue;
+      }
+      StateFactor fac;
+      for (size_t j = 0; j < choice_regions.size(); ++j) {
+        const Fans& f = fans[choice_regions[j]];
+        fac.scope.push_back(static_cast<uint32_t>(var(choice_regions[j])));
+        fac.project.push_back(f.class_of[local[j]]);
+        fac.dims.push_back(static_cast<uint32_t>(f.fan[local[j]].size()));
+      }
+      std::vector<uint32_t> cls(fac.dims.size(), 0);
+      fac.table.reserve(static_cast<size_t>(size));
+      for (;;) {
+        fac.table.push_back(term(cls));
+        size_t j = 0;
+        while (j < cls.size() && ++cls[j] == fac.dims[j]) cls[j++] = 0;
+        if (j == cls.size()) break;
+      }
+      g.factors.push_back(std::move(fac));
+    }
+  }
+};
+
+}  // namespace
+
+RegionModel region_model(const Mesh& dt, const Regions& R, Objective o, const RegionModelLimits& limits) {
+  const ObjectiveTerms& d = objective_terms(o);
+  RegionModel M;
+  StateGraph& g = M.graph;
+  g.combine = d.combine;
+  g.sense = info(o).sense;
+  g.term_max = d.term_max;
+  M.variable_of_region.assign(R.regions.size(), -1);
+  for (uint32_t r = 0; r < R.regions.size(); ++r) {
+    const Region& region = R.regions[r];
+    if (region.states.size() < 2 && region.complete) continue;
+    M.variable_of_region[r] = static_cast<int32_t>(M.region_of_variable.size());
+    M.region_of_variable.push_back(r);
+    g.domain.push_back(static_cast<uint32_t>(region.states.size()));
+    g.unary.emplace_back(region.states.size(), 0.0);
+    g.unary_terms.push_back(0);
+    g.partial.push_back(!region.complete);
+  }
+  Builder b{dt, R, d, M, g};
+  if (vertex_site(d.site)) b.vertex_terms(limits.max_factor);
+  else if (edge_site(d.site)) b.edge_terms();
+  else b.triangle_terms();
+  return M;
+}
+
+}  // namespace hodt

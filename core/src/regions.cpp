@@ -1,0 +1,153 @@
+#include "hodt/regions.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+
+#include "hodt/error.hpp"
+#include "hodt/fill_enumerator.hpp"
+#include "hodt/higher_order.hpp"
+#include "hodt/k_order.hpp"
+#include "hodt/predicates.hpp"
+
+namespace hodt {
+
+namespace {
+// For collinear u, a, v: is a on the ray from u towards v? (Exact: coordinate comparisons.)
+bool same_direction(const double* u, const double* a, const double* v) {
+  const int axis = v[0] != u[0] ? 0 : 1;
+  return (a[axis] > u[axis]) == (v[axis] > u[axis]) && a[axis] != u[axis];
+}
+}  // namespace
+
+std::vector<uint32_t> crossed_edges(const Mesh& m, const std::vector<int32_t>& out, uint32_t u, uint32_t v) {
+  auto orient = [&](uint32_t a, uint32_t b, uint32_t c) { return orient2d(m.point(a), m.point(b), m.point(c)); };
+  auto through_point = [&](uint32_t w) {
+    return std::logic_error("segment " + std::to_string(u) + " " + std::to_string(v) + " passes through point " +
+                            std::to_string(w));
+  };
+  // The triangle u, a, b around u whose angle holds the direction of v.
+  uint32_t e = static_cast<uint32_t>(out[u]);
+  const uint32_t first = e;
+  uint32_t h = UINT32_MAX;
+  for (;;) {
+    const uint32_t a = m.target(e), b = m.apex(e);
+    if (a == v || b == v) return {};  // a Delaunay edge
+    const int oa = orient(u, a, v), ob = orient(u, b, v);
+    if (oa > 0 && ob < 0) {
+      h = next_halfedge(e);
+      break;
+    }
+    if (oa == 0 && same_direction(m.point(u), m.point(a), m.point(v))) throw through_point(a);
+    const int32_t t = m.halfedges[prev_halfedge(e)];
+    if (t < 0 || static_cast<uint32_t>(t) == first) throw std::logic_error("segment leaves the hull");
+    e = static_cast<uint32_t>(t);
+  }
+  // Cross triangles until v: the crossed edge runs from a (right of u -> v) to b (left).
+  std::vector<uint32_t> crossed;
+  for (;;) {
+    crossed.push_back(h);
+    const int32_t t = m.halfedges[h];
+    if (t < 0) throw std::logic_error("segment leaves the hull");
+    const uint32_t c = m.apex(static_cast<uint32_t>(t));
+    if (c == v) return crossed;
+    const int o = orient(u, v, c);
+    if (o == 0) throw through_point(c);
+    h = o > 0 ? next_halfedge(static_cast<uint32_t>(t)) : prev_halfedge(static_cast<uint32_t>(t));
+  }
+}
+
+namespace {
+
+uint32_t find(std::vector<uint32_t>& parent, uint32_t x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+// Triangles rotated to start at their smallest vertex, sorted: equal
+// triangulations of a region compare equal.
+std::vector<Tri> canonical(std::vector<Tri> tris) {
+  for (Tri& t : tris) {
+    while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
+  }
+  std::sort(tris.begin(), tris.end());
+  return tris;
+}
+
+struct StopFill {};
+
+}  // namespace
+
+Mesh Regions::triangulation(const Mesh& dt, const std::vector<uint32_t>& state) const {
+  std::vector<Tri> tris;
+  tris.reserve(dt.num_triangles());
+  for (size_t r = 0; r < regions.size(); ++r) {
+    const auto& s = regions[r].states[state.empty() ? 0 : state[r]];
+    tris.insert(tris.end(), s.begin(), s.end());
+  }
+  return mesh_of(dt.coords, tris);
+}
+
+Regions k_order_regions(const Mesh& dt, uint32_t k, const RegionLimits& limits) {
+  Regions out;
+  out.order = k;
+  const auto useful = useful_edges(dt, k);
+  out.useful_edges = useful.size();
+  const std::vector<int32_t> start = vertex_halfedges(dt);
+  // A Delaunay edge is fixed unless a useful non-Delaunay edge crosses it.
+  out.fixed.assign(dt.triangles.size(), 1);
+  for (size_t i = 0; i < useful.size(); ++i) {
+    if (limits.progress && (i & 1023) == 0 && !limits.progress(static_cast<double>(i), static_cast<double>(useful.size())))
+      throw Cancelled();
+    for (uint32_t h : crossed_edges(dt, start, useful[i].first, useful[i].second)) {
+      out.fixed[h] = 0;
+      out.fixed[static_cast<uint32_t>(dt.halfedges[h])] = 0;
+    }
+  }
+  // Regions: Delaunay triangles glued across free edges.
+  const uint32_t nt = dt.num_triangles();
+  std::vector<uint32_t> parent(nt);
+  std::iota(parent.begin(), parent.end(), 0u);
+  for (uint32_t e = 0; e < dt.halfedges.size(); ++e)
+    if (!out.fixed[e]) parent[find(parent, e / 3)] = find(parent, static_cast<uint32_t>(dt.halfedges[e]) / 3);
+  out.region_of_triangle.assign(nt, UINT32_MAX);
+  std::vector<uint32_t> id(nt, UINT32_MAX);
+  for (uint32_t t = 0; t < nt; ++t) {
+    const uint32_t root = find(parent, t);
+    if (id[root] == UINT32_MAX) id[root] = static_cast<uint32_t>(out.regions.size()), out.regions.emplace_back();
+    out.region_of_triangle[t] = id[root];
+    out.regions[id[root]].delaunay_triangles.push_back(t);
+  }
+  // Each region's triangulations.
+  const bool any_free = std::find(out.fixed.begin(), out.fixed.end(), 0) != out.fixed.end();
+  const Candidates cand = any_free ? k_order_candidates(dt, k, useful) : Candidates{};
+  for (size_t r = 0; r < out.regions.size(); ++r) {
+    Region& region = out.regions[r];
+    if (limits.progress && (r & 255) == 0 &&
+        !limits.progress(static_cast<double>(r), static_cast<double>(out.regions.size())))
+      throw Cancelled();
+    std::vector<Tri> delaunay;
+    for (uint32_t t : region.delaunay_triangles) {
+      delaunay.push_back(base_triangle(dt, t));
+      for (uint32_t e = 3 * t; e < 3 * t + 3; ++e)
+        if (dt.halfedges[e] < 0 || out.fixed[e]) region.boundary.push_back({dt.origin(e), dt.target(e)});
+    }
+    region.states.push_back(canonical(std::move(delaunay)));
+    if (region.delaunay_triangles.size() == 1) continue;
+    try {
+      region.complete = enumerate_fills(dt, cand, region.boundary, limits.max_nodes_per_region,
+                                        [&](const std::vector<Tri>& tris) {
+                                          std::vector<Tri> c = canonical(tris);
+                                          if (c == region.states[0]) return;
+                                          if (region.states.size() >= limits.max_states_per_region) throw StopFill{};
+                                          region.states.push_back(std::move(c));
+                                        });
+    } catch (const StopFill&) {
+      region.complete = false;
+    }
+    out.incomplete += !region.complete;
+  }
+  return out;
+}
+
+}  // namespace hodt
