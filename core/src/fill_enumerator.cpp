@@ -115,10 +115,16 @@ struct Enumerator {
 
 bool enumerate_fills(const Mesh& dt, const Candidates& candidates, const std::vector<std::pair<uint32_t, uint32_t>>& boundary,
                      uint64_t max_nodes, const std::function<void(const std::vector<Tri>&)>& visit,
-                     const Progress& progress) {
+                     const Progress& progress, uint64_t* nodes_used) {
   Enumerator en{dt, candidates, max_nodes, visit, progress, {}, {}, {}};
   for (auto [a, b] : boundary) en.open.insert(edge_key(a, b));
-  en.run();
+  try {
+    en.run();
+  } catch (...) {
+    if (nodes_used) *nodes_used += en.nodes;
+    throw;
+  }
+  if (nodes_used) *nodes_used += en.nodes;
   return en.complete;
 }
 

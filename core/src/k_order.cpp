@@ -77,6 +77,30 @@ std::vector<uint32_t> states_of(const Regions& R, const Mesh& m) {
   return state;
 }
 
+// Adds to each incomplete region the triangulation a first order choice puts in
+// it (its Delaunay triangles, with its flipped quads flipped: a quad lies in one
+// region, its diagonal being a free edge). Returns whether any was added.
+bool add_first_order_states(Regions& R, const FirstOrder& fo, const Choice& choice) {
+  if (!R.incomplete) return false;
+  const Mesh flipped = triangulate(fo, choice);  // triangle slots keep their quads
+  bool added = false;
+  for (Region& region : R.regions) {
+    if (region.complete) continue;
+    std::vector<Tri> tris;
+    for (uint32_t t : region.delaunay_triangles) {
+      Tri c = base_triangle(flipped, t);
+      while (c[0] > c[1] || c[0] > c[2]) c = {c[1], c[2], c[0]};
+      tris.push_back(c);
+    }
+    std::sort(tris.begin(), tris.end());
+    if (std::find(region.states.begin(), region.states.end(), tris) == region.states.end()) {
+      region.states.push_back(std::move(tris));
+      added = true;
+    }
+  }
+  return added;
+}
+
 std::string region_summary(const Regions& R) {
   size_t choice = 0, largest = 0;
   for (const Region& g : R.regions)
@@ -94,11 +118,14 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
     r.delaunay_value = evaluate(o, dt);
     return r;
   }
+  Regions R = k_order_skeleton(dt, k, options.progress);
+  const StateReducer reducer = objective_reducer(dt, R, o);
   RegionLimits rl;
   rl.max_nodes_per_region = max_nodes;
   rl.progress = options.progress;
-  const Regions R = k_order_regions(dt, k, rl);
-  const RegionModel model = region_model(dt, R, o);
+  rl.reduce = &reducer;
+  enumerate_regions(dt, R, rl);
+  RegionModel model = region_model(dt, R, o);
   KOrderResult r;
   r.delaunay_value = evaluate(o, dt);
   std::string refused;
@@ -121,26 +148,39 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
     }
   }
   if (options.method == Method::Exact) throw LimitError("exact at order " + std::to_string(k) + ": " + refused);
-  // Heuristic: from the first order optimum (a k-OD triangulation for every k),
-  // each region in turn takes its best triangulation for its neighbours' current ones.
+  // Otherwise: the best triangulation over the triangulations each region has
+  // listed (the first order optimum's among them, so never worse than it), by the
+  // same DP when its tables fit, else by local search; the bound is the
+  // relaxation's optimum.
   SolveOptions first = options;
   first.method = Method::Auto;
   first.order = 1;
-  const Mesh start = triangulate(fo, solve(fo, o, first).choice);
-  const std::vector<uint32_t> x =
-      improve_states(model.graph, model.variable_states(states_of(R, start)), options.progress);
+  const Choice first_choice = solve(fo, o, first).choice;
+  const Mesh start = triangulate(fo, first_choice);
+  if (add_first_order_states(R, fo, first_choice)) model = region_model(dt, R, o);
+  StateDpLimits dl;
+  dl.progress = options.progress;
+  std::string how;
+  std::vector<uint32_t> x;
+  try {
+    x = solve_states(model.graph, dl).state;
+    how = "the best combination of the regions' listed triangulations";
+  } catch (const LimitError&) {
+    x = improve_states(model.graph, model.variable_states(states_of(R, start)), options.progress);
+    how = "local search from the first order optimum";
+  }
   r.triangulation = R.triangulation(dt, model.region_states(x));
   r.value = evaluate(o, r.triangulation);
-  if (better(info(o).sense, evaluate(o, start), r.value)) {  // (relaxed terms can mislead the descent)
+  if (better(info(o).sense, evaluate(o, start), r.value)) {  // (relaxed terms can mislead the search)
     r.triangulation = start;
     r.value = evaluate(o, start);
   }
-  const double bound = relaxation_bound(model.graph);
+  const double bound = relaxation_bound(model.graph, dl);
   r.bound = info(o).sense == Sense::Min ? std::min(bound, r.value) : std::max(bound, r.value);
   r.optimal = *r.bound == r.value;
   if (r.optimal) r.bound.reset();
   r.method = "heuristic";
-  r.details = region_summary(R) + "; local search from the first order optimum (" +
+  r.details = region_summary(R) + "; " + how + " (" +
               (refused.empty() ? std::string("approx asked") : "exact refused: " + refused) + ")";
   return r;
 }

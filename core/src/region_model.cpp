@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 
 #include "hodt/measures.hpp"
 
@@ -32,7 +33,9 @@ struct Fans {
   }
 };
 
-Fans fans_of(const Region& r) {
+// by_neighbors: states with the same neighbours at a vertex share a class (what
+// vertex terms see); else the same triangles (what vertex-pair terms see).
+Fans fans_of(const Region& r, bool by_neighbors) {
   Fans f;
   for (const Tri& t : r.states[0]) f.vertices.insert(f.vertices.end(), t.begin(), t.end());
   std::sort(f.vertices.begin(), f.vertices.end());
@@ -42,12 +45,22 @@ Fans fans_of(const Region& r) {
   f.fan.assign(nv, {});
   std::vector<std::map<std::vector<Tri>, uint32_t>> ids(nv);
   std::vector<std::vector<Tri>> around(nv);
+  std::vector<Tri> key;
   for (size_t s = 0; s < r.states.size(); ++s) {
     for (auto& a : around) a.clear();
     for (const Tri& t : r.states[s])
       for (uint32_t v : t) around[f.local(v)].push_back(t);
     for (size_t i = 0; i < nv; ++i) {
-      auto [it, fresh] = ids[i].try_emplace(around[i], static_cast<uint32_t>(f.fan[i].size()));
+      key = around[i];
+      if (by_neighbors) {  // the neighbours, as sorted one-vertex entries
+        key.clear();
+        for (const Tri& t : around[i])
+          for (uint32_t w : t)
+            if (w != f.vertices[i]) key.push_back({w, 0, 0});
+        std::sort(key.begin(), key.end());
+        key.erase(std::unique(key.begin(), key.end()), key.end());
+      }
+      auto [it, fresh] = ids[i].try_emplace(key, static_cast<uint32_t>(f.fan[i].size()));
       if (fresh) f.fan[i].push_back(around[i]);
       f.class_of[i][s] = it->second;
     }
@@ -148,7 +161,7 @@ struct Builder {
     std::vector<Fans> fans(R.regions.size());
     std::vector<uint8_t> have(R.regions.size(), 0);
     auto fans_at = [&](uint32_t r) -> const Fans& {
-      if (!have[r]) fans[r] = fans_of(R.regions[r]), have[r] = 1;
+      if (!have[r]) fans[r] = fans_of(R.regions[r], d.site != TermSite::VertexPair), have[r] = 1;
       return fans[r];
     };
     std::vector<uint8_t> on_hull(dt.num_vertices(), 0);
@@ -228,6 +241,106 @@ struct Builder {
 };
 
 }  // namespace
+
+StateReducer objective_reducer(const Mesh& dt, const Regions& R, Objective o) {
+  const ObjectiveTerms& d = objective_terms(o);
+  struct Shared {
+    std::vector<uint8_t> shared;  // per vertex: in two regions that may have a choice
+    std::vector<uint8_t> on_hull;
+    Stars stars;
+  };
+  auto data = std::make_shared<Shared>();
+  const uint32_t n = dt.num_vertices();
+  std::vector<uint32_t> count(n, 0);
+  std::vector<uint32_t> seen(n, UINT32_MAX);
+  for (uint32_t r = 0; r < R.regions.size(); ++r) {
+    if (R.regions[r].delaunay_triangles.size() < 2) continue;
+    for (uint32_t t : R.regions[r].delaunay_triangles)
+      for (uint32_t e = 3 * t; e < 3 * t + 3; ++e)
+        if (seen[dt.triangles[e]] != r) seen[dt.triangles[e]] = r, ++count[dt.triangles[e]];
+  }
+  data->shared.resize(n);
+  for (uint32_t v = 0; v < n; ++v) data->shared[v] = count[v] >= 2;
+  data->on_hull.assign(n, 0);
+  for (uint32_t v : dt.hull) data->on_hull[v] = 1;
+  data->stars = build_stars(dt);
+  const Sense sense = info(o).sense;
+  StateReducer reducer;
+  reducer.better = [sense](double a, double b) { return better(sense, a, b); };
+  reducer.key = [&dt, &R, &d, data](uint32_t r, const std::vector<Tri>& tris) {
+    StateKey key{{}, 0};
+    auto add = [&](double v) { key.value = combine(d.combine, key.value, v); };
+    // Fans at every vertex of the triangulation (its vertices, in order).
+    std::vector<std::pair<uint32_t, uint32_t>> at;  // (vertex, triangle index)
+    for (uint32_t i = 0; i < tris.size(); ++i)
+      for (uint32_t v : tris[i]) at.push_back({v, i});
+    std::sort(at.begin(), at.end());
+    std::vector<Tri> fan, star;
+    std::vector<uint32_t> nb;
+    for (size_t i = 0; i < at.size();) {
+      const uint32_t v = at[i].first;
+      fan.clear();
+      for (; i < at.size() && at[i].first == v; ++i) fan.push_back(tris[at[i].second]);
+      if (data->shared[v]) {
+        // What the terms outside see of this fan: the triangles (vertex pairs),
+        // the neighbours (vertex terms); edge terms see apexes (below); triangle
+        // terms nothing.
+        if (d.site == TermSite::VertexPair) {
+          key.signature.push_back({UINT32_MAX, v, 0});
+          key.signature.insert(key.signature.end(), fan.begin(), fan.end());
+        } else if (vertex_site(d.site)) {
+          key.signature.push_back({UINT32_MAX, v, 1});
+          for (const Tri& t : fan)
+            for (uint32_t w : t)
+              if (w != v) key.signature.push_back({w, 0, 0});
+          std::sort(key.signature.end() - 2 * static_cast<std::ptrdiff_t>(fan.size()), key.signature.end());
+          key.signature.erase(std::unique(key.signature.end() - 2 * static_cast<std::ptrdiff_t>(fan.size()), key.signature.end()),
+                              key.signature.end());
+        }
+        continue;
+      }
+      if (!vertex_site(d.site) || (interior_only(d.site) && data->on_hull[v])) continue;
+      // Its other triangles are fixed: the Delaunay ones outside this region.
+      star = fan;
+      const Stars& st = data->stars;
+      for (uint32_t j = st.tri_offset[v]; j < st.tri_offset[v + 1]; ++j)
+        if (R.region_of_triangle[st.triangle[j]] != r) star.push_back(base_triangle(dt, st.triangle[j]));
+      nb.clear();
+      for (const Tri& t : star)
+        for (uint32_t w : t)
+          if (w != v) nb.push_back(w);
+      std::sort(nb.begin(), nb.end());
+      nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+      add(vertex_term(d, dt, Star{v, nb, star}));
+    }
+    if (d.site == TermSite::Triangle) {
+      for (const Tri& t : tris) add(d.triangle(dt, t));
+    } else if (edge_site(d.site)) {
+      for (const Tri& t : tris)
+        for (int i = 0; i < 3; ++i) {
+          const uint32_t u = t[i], v = t[(i + 1) % 3];
+          const uint32_t x = apex_of(tris, v, u);
+          if (x != kNoApex && u < v) add(edge_term(d, dt, u, v, t[(i + 2) % 3], x));
+        }
+      // Boundary edges whose other side is a fixed triangle or the outside.
+      for (uint32_t t : R.regions[r].delaunay_triangles)
+        for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
+          const int32_t f = dt.halfedges[e];
+          if (f >= 0 && R.region_of_triangle[static_cast<uint32_t>(f) / 3] == r) continue;  // inside
+          if (f < 0 && interior_only(d.site)) continue;
+          const uint32_t u = dt.origin(e), v = dt.target(e);
+          if (f >= 0 && R.regions[R.region_of_triangle[static_cast<uint32_t>(f) / 3]].delaunay_triangles.size() > 1) {
+            key.signature.push_back({UINT32_MAX - 1, u, v});  // seen from the other side: the apex
+            key.signature.push_back({apex_of(tris, u, v), 0, 0});
+            continue;
+          }
+          add(edge_term(d, dt, u, v, apex_of(tris, u, v), f < 0 ? kNoApex : dt.apex(static_cast<uint32_t>(f))));
+        }
+    }
+    return key;
+  };
+  return reducer;
+}
 
 RegionModel region_model(const Mesh& dt, const Regions& R, Objective o, const RegionModelLimits& limits) {
   const ObjectiveTerms& d = objective_terms(o);

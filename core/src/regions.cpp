@@ -1,6 +1,7 @@
 #include "hodt/regions.hpp"
 
 #include <algorithm>
+#include <map>
 #include <numeric>
 #include <stdexcept>
 
@@ -88,16 +89,16 @@ Mesh Regions::triangulation(const Mesh& dt, const std::vector<uint32_t>& state) 
   return mesh_of(dt.coords, tris);
 }
 
-Regions k_order_regions(const Mesh& dt, uint32_t k, const RegionLimits& limits) {
+Regions k_order_skeleton(const Mesh& dt, uint32_t k, const Progress& progress) {
   Regions out;
   out.order = k;
   const auto useful = useful_edges(dt, k);
-  out.useful_edges = useful.size();
+  out.useful = useful;
   const std::vector<int32_t> start = vertex_halfedges(dt);
   // A Delaunay edge is fixed unless a useful non-Delaunay edge crosses it.
   out.fixed.assign(dt.triangles.size(), 1);
   for (size_t i = 0; i < useful.size(); ++i) {
-    if (limits.progress && (i & 1023) == 0 && !limits.progress(static_cast<double>(i), static_cast<double>(useful.size())))
+    if (progress && (i & 1023) == 0 && !progress(static_cast<double>(i), static_cast<double>(useful.size())))
       throw Cancelled();
     for (uint32_t h : crossed_edges(dt, start, useful[i].first, useful[i].second)) {
       out.fixed[h] = 0;
@@ -118,14 +119,7 @@ Regions k_order_regions(const Mesh& dt, uint32_t k, const RegionLimits& limits) 
     out.region_of_triangle[t] = id[root];
     out.regions[id[root]].delaunay_triangles.push_back(t);
   }
-  // Each region's triangulations.
-  const bool any_free = std::find(out.fixed.begin(), out.fixed.end(), 0) != out.fixed.end();
-  const Candidates cand = any_free ? k_order_candidates(dt, k, useful) : Candidates{};
-  for (size_t r = 0; r < out.regions.size(); ++r) {
-    Region& region = out.regions[r];
-    if (limits.progress && (r & 255) == 0 &&
-        !limits.progress(static_cast<double>(r), static_cast<double>(out.regions.size())))
-      throw Cancelled();
+  for (Region& region : out.regions) {
     std::vector<Tri> delaunay;
     for (uint32_t t : region.delaunay_triangles) {
       delaunay.push_back(base_triangle(dt, t));
@@ -133,20 +127,74 @@ Regions k_order_regions(const Mesh& dt, uint32_t k, const RegionLimits& limits) 
         if (dt.halfedges[e] < 0 || out.fixed[e]) region.boundary.push_back({dt.origin(e), dt.target(e)});
     }
     region.states.push_back(canonical(std::move(delaunay)));
-    if (region.delaunay_triangles.size() == 1) continue;
+  }
+  return out;
+}
+
+void enumerate_regions(const Mesh& dt, Regions& out, const RegionLimits& limits) {
+  const bool any_free = std::find(out.fixed.begin(), out.fixed.end(), 0) != out.fixed.end();
+  const Candidates cand = any_free ? k_order_candidates(dt, out.order, out.useful) : Candidates{};
+  const StateReducer* reduce = limits.reduce;
+  uint64_t used = 0;
+  auto enumerate = [&](Region& region, uint32_t r, uint64_t budget) {
+    region.states.resize(1);
+    region.complete = true;
+    // With a reducer: the state kept for each signature, and its value.
+    std::map<std::vector<Tri>, std::pair<uint32_t, double>> best;
+    if (reduce) {
+      StateKey key = reduce->key(r, region.states[0]);
+      best.emplace(std::move(key.signature), std::make_pair(0u, key.value));
+    }
     try {
-      region.complete = enumerate_fills(dt, cand, region.boundary, limits.max_nodes_per_region,
-                                        [&](const std::vector<Tri>& tris) {
-                                          std::vector<Tri> c = canonical(tris);
-                                          if (c == region.states[0]) return;
-                                          if (region.states.size() >= limits.max_states_per_region) throw StopFill{};
-                                          region.states.push_back(std::move(c));
-                                        });
+      region.complete = enumerate_fills(dt, cand, region.boundary, budget, [&](const std::vector<Tri>& tris) {
+        std::vector<Tri> c = canonical(tris);
+        if (c == region.states[0]) return;
+        if (reduce) {
+          StateKey key = reduce->key(r, c);
+          auto it = best.find(key.signature);
+          if (it != best.end()) {
+            if (!reduce->better(key.value, it->second.second)) return;
+            if (it->second.first != 0) {  // replace (states[0] stays)
+              region.states[it->second.first] = std::move(c);
+              it->second.second = key.value;
+              return;
+            }
+          }
+          if (region.states.size() >= limits.max_states_per_region) throw StopFill{};
+          best[std::move(key.signature)] = {static_cast<uint32_t>(region.states.size()), key.value};
+        } else if (region.states.size() >= limits.max_states_per_region) {
+          throw StopFill{};
+        }
+        region.states.push_back(std::move(c));
+      }, {}, &used);
     } catch (const StopFill&) {
       region.complete = false;
     }
-    out.incomplete += !region.complete;
+  };
+  const uint64_t first = std::min(limits.first_pass_nodes, limits.max_nodes_per_region);
+  for (uint32_t pass = 0; pass < 2; ++pass) {
+    for (size_t r = 0; r < out.regions.size(); ++r) {
+      Region& region = out.regions[r];
+      if (limits.progress && (r & 63) == 0 &&
+          !limits.progress(static_cast<double>(pass * out.regions.size() + r), 2.0 * out.regions.size()))
+        throw Cancelled();
+      if (region.delaunay_triangles.size() == 1) continue;
+      if (region.delaunay_triangles.size() > limits.max_region_triangles) {
+        region.complete = false;
+        continue;
+      }
+      if (pass == 0) enumerate(region, static_cast<uint32_t>(r), first);
+      else if (!region.complete && first < limits.max_nodes_per_region && used < limits.max_total_nodes)
+        enumerate(region, static_cast<uint32_t>(r), std::min(limits.max_nodes_per_region, limits.max_total_nodes - used));
+    }
   }
+  out.incomplete = 0;
+  for (const Region& region : out.regions) out.incomplete += !region.complete;
+}
+
+Regions k_order_regions(const Mesh& dt, uint32_t k, const RegionLimits& limits) {
+  Regions out = k_order_skeleton(dt, k, limits.progress);
+  enumerate_regions(dt, out, limits);
   return out;
 }
 

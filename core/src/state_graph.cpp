@@ -410,28 +410,64 @@ std::vector<uint32_t> improve_states(const StateGraph& g, std::vector<uint32_t> 
   return x;
 }
 
-double relaxation_bound(const StateGraph& g) {
+namespace {
+
+// What a term we cannot read may contribute at best.
+double unknown(const StateGraph& g, uint64_t terms) {
+  if (g.sense == Sense::Min) return 0.0;  // every term is >= 0
+  return g.combine == TermCombine::Sum ? g.term_max * static_cast<double>(terms) : g.term_max;
+}
+
+// Each factor at its best on its own.
+double independent_bound(const StateGraph& g) {
   const Ops ops{g.combine, g.sense};
-  // What a term we cannot read may contribute at best.
-  auto unknown = [&](uint64_t terms) {
-    if (g.sense == Sense::Min) return 0.0;  // every term is >= 0
-    return g.combine == TermCombine::Sum ? g.term_max * static_cast<double>(terms) : g.term_max;
-  };
   auto best_of = [&](const std::vector<double>& t) {
     double b = t[0];
     for (double v : t)
       if (ops.better(v, b)) b = v;
     return b;
   };
-  double bound = ops.add(g.constant, unknown(g.relaxed_terms));
+  double bound = ops.add(g.constant, unknown(g, g.relaxed_terms));
   for (size_t x = 0; x < g.domain.size(); ++x)
-    bound = ops.add(bound, g.partial[x] ? unknown(g.unary_terms[x]) : best_of(g.unary[x]));
+    bound = ops.add(bound, g.partial[x] ? unknown(g, g.unary_terms[x]) : best_of(g.unary[x]));
   for (const StateFactor& f : g.factors) {
     bool partial = false;
     for (uint32_t v : f.scope) partial = partial || g.partial[v];
-    bound = ops.add(bound, partial ? unknown(f.num_terms) : best_of(f.table));
+    bound = ops.add(bound, partial ? unknown(g, f.num_terms) : best_of(f.table));
   }
   return bound;
+}
+
+}  // namespace
+
+StateGraph relaxation(const StateGraph& g) {
+  const Ops ops{g.combine, g.sense};
+  StateGraph h = g;
+  h.factors.clear();
+  h.constant = ops.add(g.constant, unknown(g, g.relaxed_terms));
+  h.relaxed_terms = 0;
+  for (size_t x = 0; x < g.domain.size(); ++x) {
+    if (!g.partial[x]) continue;
+    h.constant = ops.add(h.constant, unknown(g, g.unary_terms[x]));
+    h.domain[x] = 1;
+    h.unary[x].assign(1, 0.0);
+    h.partial[x] = 0;
+  }
+  for (const StateFactor& f : g.factors) {
+    bool partial = false;
+    for (uint32_t v : f.scope) partial = partial || g.partial[v];
+    if (partial) h.constant = ops.add(h.constant, unknown(g, f.num_terms));
+    else h.factors.push_back(f);
+  }
+  return h;
+}
+
+double relaxation_bound(const StateGraph& g, const StateDpLimits& limits) {
+  try {
+    return solve_states(relaxation(g), limits).value;
+  } catch (const LimitError&) {
+    return independent_bound(g);
+  }
 }
 
 }  // namespace hodt

@@ -29,6 +29,7 @@ Candidates k_order_candidates(const Mesh& delaunay, uint32_t k,
 // given) is called every few thousand nodes; returning false throws Cancelled.
 bool enumerate_fills(const Mesh& delaunay, const Candidates& candidates,
                      const std::vector<std::pair<uint32_t, uint32_t>>& boundary, uint64_t max_nodes,
-                     const std::function<void(const std::vector<Tri>&)>& visit, const Progress& progress = {});
+                     const std::function<void(const std::vector<Tri>&)>& visit, const Progress& progress = {},
+                     uint64_t* nodes_used = nullptr);
 
 }  // namespace hodt

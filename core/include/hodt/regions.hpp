@@ -7,6 +7,7 @@
 // At order 1 the regions with a choice are the flippable quads.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,7 +29,7 @@ struct Region {
 
 struct Regions {
   uint32_t order = 1;
-  uint64_t useful_edges = 0;
+  std::vector<std::pair<uint32_t, uint32_t>> useful;  // useful k-OD edges (u < v)
   std::vector<uint8_t> fixed;                 // per Delaunay halfedge: in every k-OD triangulation
   std::vector<uint32_t> region_of_triangle;   // per Delaunay triangle
   std::vector<Region> regions;
@@ -38,14 +39,42 @@ struct Regions {
   Mesh triangulation(const Mesh& delaunay, const std::vector<uint32_t>& state) const;
 };
 
-struct RegionLimits {
-  uint64_t max_nodes_per_region = 200'000;  // enumeration search nodes
-  uint64_t max_states_per_region = 20'000;  // triangulations kept per region
-  Progress progress;
+// Optional, per objective: what the objective sees of a region's triangulation
+// from outside it (its signature), and the combined value of the terms the region
+// alone decides. Triangulations with equal signatures are interchangeable for
+// every other term, so of those only the best needs keeping (the Delaunay one,
+// states[0], is kept too). This keeps regions with millions of triangulations
+// down to their distinct interfaces.
+struct StateKey {
+  std::vector<Tri> signature;
+  double value;
+};
+struct StateReducer {
+  std::function<StateKey(uint32_t region, const std::vector<Tri>& triangulation)> key;
+  std::function<bool(double, double)> better;  // is a strictly better than b?
 };
 
-// Fixed edges, regions and each region's k-OD triangulations (within the limits:
-// a region over them keeps the ones found and is marked incomplete).
+struct RegionLimits {
+  // Enumeration search nodes: every region first gets a small budget, then the
+  // regions that need more get up to max_nodes_per_region each while the total
+  // stays within max_total_nodes (time is about a microsecond per node).
+  uint64_t first_pass_nodes = 5'000;
+  uint64_t max_nodes_per_region = 300'000;
+  uint64_t max_total_nodes = 4'000'000;
+  uint64_t max_states_per_region = 2'000;  // triangulations kept per region
+  // Regions of more Delaunay triangles are not enumerated at all (each fill
+  // costs its size, and their triangulations are astronomically many).
+  uint32_t max_region_triangles = 64;
+  Progress progress;
+  const StateReducer* reduce = nullptr;
+};
+
+// Fixed edges and regions, each with its Delaunay triangulation only.
+Regions k_order_skeleton(const Mesh& delaunay, uint32_t k, const Progress& progress = {});
+// Each region's k-OD triangulations (within the limits: a region over them keeps
+// the ones found and is marked incomplete).
+void enumerate_regions(const Mesh& delaunay, Regions& regions, const RegionLimits& limits = {});
+// Both.
 Regions k_order_regions(const Mesh& delaunay, uint32_t k, const RegionLimits& limits = {});
 
 // The Delaunay halfedges crossed by the segment u v (u, v vertices, uv not a

@@ -69,8 +69,12 @@ double evaluate_states(const StateGraph& g, const std::vector<uint32_t>& state);
 // the others' current states, until no variable improves.
 std::vector<uint32_t> improve_states(const StateGraph& g, std::vector<uint32_t> start, const Progress& progress = {});
 
-// A proven bound on the optimum over all assignments (including states not
-// listed in partial variables and relaxed terms): each factor at its best.
-double relaxation_bound(const StateGraph& g);
+// The relaxation: every relaxed term, and every term that sees a partial
+// variable, replaced by the best value a term can take. Its optimum is a proven
+// bound on the optimum over all assignments, including the states not listed.
+StateGraph relaxation(const StateGraph& g);
+// That optimum, by the DP (or, when its tables are too large, each factor at its
+// best on its own: a weaker bound).
+double relaxation_bound(const StateGraph& g, const StateDpLimits& limits = {});
 
 }  // namespace hodt
