@@ -10,6 +10,7 @@ import Delaunator from 'delaunator';
 import { loadHodt } from '../dist/index.js';
 import { loadModule } from '../dist/load.js';
 import { measureEditsInChromium } from '../bench/edit_chromium.mjs';
+import { runOrderK } from '../bench/order_k.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const jsonOnly = process.argv.includes('--json');
@@ -49,7 +50,7 @@ const KINDS = {
 async function warmModule(objectives) {
   const module = await loadModule();
   const t = module.fromPoints(KINDS.dem(3000, rng(99)), false);
-  for (let r = 0; r < 3; ++r) for (const o of objectives) { try { t.solve(o, 'exact', 0.25, false, undefined); } catch {} }
+  for (let r = 0; r < 3; ++r) for (const o of objectives) { try { t.solve(o, 'exact', 0.25, false, 1, undefined); } catch {} }
   t.delete();
   return module;
 }
@@ -92,7 +93,7 @@ for (const kind of Object.keys(KINDS)) {
       const order = [PIPELINE_OBJECTIVE, ...objectives.filter((o) => o !== PIPELINE_OBJECTIVE)];
       for (const o of order) {
         try {
-          solveMs[o].push(time(() => t.solve(o, 'exact', 0.25, false, undefined))[0]);
+          solveMs[o].push(time(() => t.solve(o, 'exact', 0.25, false, 1, undefined))[0]);
         } catch { solveMs[o].push(NaN); }
         if (o === PIPELINE_OBJECTIVE && r === 0) pipelineHeap = module.heapSize();
       }
@@ -131,7 +132,7 @@ for (const [kind, make] of [['grid', (w) => KINDS.grid(w * w)], ['saddle', saddl
     const t = module.fromPoints(xyz, false);
     const row = { kind, n: w * w, quads: t.numQuads(), native: nat.objectives, wasm: {}, results: {} };
     for (const o of NP) {
-      const [ms, s] = time(() => t.solve(o, 'approx', 0.25, false, undefined));
+      const [ms, s] = time(() => t.solve(o, 'approx', 0.25, false, 1, undefined));
       row.wasm[o] = ms;
       row.results[o] = { value: s.value, bound: s.bound, delaunay: s.delaunayValue, details: s.details };
     }
@@ -144,6 +145,8 @@ for (const [kind, make] of [['grid', (w) => KINDS.grid(w * w)], ['saddle', saddl
     }
   }
 }
+// Order k: every objective, orders 1..8 (bench/order_k.mjs).
+summary.orderK = runOrderK({ root, tmp, hodt: await loadHodt(), log, quick });
 rmSync(tmp, { recursive: true, force: true });
 
 const at = (kind, n) => summary.runs.find((r) => r.kind === kind && r.n >= n * 0.99 && r.n <= n * 1.01);

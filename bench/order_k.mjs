@@ -1,0 +1,67 @@
+// The order-k table of `npm run bench`: every objective at orders 1..8 on a real
+// DEM (Maunga Whau, 87 x 61 cells of 10 m in projected coordinates: a grid, so
+// cocircular everywhere) and on a 10,000-point random sample of a smooth DEM, the
+// native CLI and the wasm library side by side: time, value, bound, Delaunay value.
+import { spawnSync } from 'node:child_process';
+import { readFileSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+
+const OBJECTIVES = ['max-convex-vertices', 'minmax-edge-area-ratio', 'minmax-edge-normal-angle', 'minmax-edge-enclosing-circle',
+  'minmax-vertex-area-ratio', 'minmax-vertex-normal-angle', 'min-local-minima', 'min-local-extrema',
+  'min-total-edge-length', 'minmax-triangle-area', 'max-convex-edges', 'min-mixed-vertices', 'minmax-degree'];
+
+function volcano() {
+  const v = JSON.parse(readFileSync(new URL('../node_modules/vega-datasets/data/volcano.json', import.meta.url), 'utf8'));
+  const p = new Float64Array(3 * v.width * v.height);
+  for (let j = 0; j < v.height; ++j)
+    for (let i = 0; i < v.width; ++i) p.set([2667400 + 10 * i, 6478700 - 10 * j, v.values[j * v.width + i]], 3 * (j * v.width + i));
+  return p;
+}
+
+function demSample(n) {
+  let s = 7;
+  const r = () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
+  const hill = (x, y) => Math.sin(3 * x) * Math.cos(2.3 * y) + 0.5 * Math.sin(7.1 * x + 5.3 * y) + 0.2 * Math.cos(13 * x * y);
+  const p = new Float64Array(3 * n);
+  for (let i = 0; i < n; ++i) { const x = r() * 1000, y = r() * 1000; p.set([x, y, hill(x / 1000, y / 1000) * 100 + r()], 3 * i); }
+  return p;
+}
+
+const fmt = (v) => (v === null || v === undefined ? '-' : Number.isInteger(v) ? String(v) : v.toPrecision(6));
+
+export function runOrderK({ root, tmp, hodt, log, quick }) {
+  const sets = [['volcano DEM 87x61 (10 m grid, UTM-like)', volcano()], ['DEM sample, 10,000 points', demSample(10000)]];
+  const orders = quick ? [1, 2, 4] : [1, 2, 3, 4, 5, 6, 7, 8];
+  const rows = [];
+  for (const [name, xyz] of sets) {
+    const file = join(tmp, `orderk-${rows.length}.txt`);
+    let text = '';
+    for (let i = 0; i < xyz.length; i += 3) text += `${xyz[i]} ${xyz[i + 1]} ${xyz[i + 2]}\n`;
+    writeFileSync(file, text);
+    const terrain = hodt.terrain(xyz);
+    log(`\norder k on ${name}: time native / wasm (ms), value, bound (null: proven optimal), Delaunay value`);
+    for (const objective of quick ? ['min-local-minima', 'minmax-edge-area-ratio', 'min-mixed-vertices'] : OBJECTIVES) {
+      for (const order of orders) {
+        const t0 = performance.now();
+        const r = spawnSync(`${root}/build/native/hodt`, ['solve', file, '--objective', objective, '--order', String(order)], { encoding: 'utf8', maxBuffer: 1 << 26 });
+        const nativeMs = performance.now() - t0;
+        const row = { set: name, objective, order, nativeMs };
+        if (r.status === 0) Object.assign(row, JSON.parse(r.stdout));
+        else row.error = r.stderr.trim();
+        const t1 = performance.now();
+        try {
+          const s = terrain.solve(objective, { order });
+          row.wasmMs = performance.now() - t1;
+          row.wasmValue = s.value;
+        } catch (e) {
+          row.wasmError = String(e.message);
+        }
+        rows.push(row);
+        const wasmMs = row.wasmMs === undefined ? '-' : row.wasmMs.toFixed(0);
+        log(`  k=${order} ${objective.padEnd(29)} ${nativeMs.toFixed(0).padStart(6)} / ${wasmMs.padStart(6)}  ${(row.method ?? 'error').padEnd(10)} value ${fmt(row.value).padEnd(12)} bound ${fmt(row.bound).padEnd(12)} Delaunay ${fmt(row.delaunayValue)}${row.error ? ` (${row.error})` : ''}`);
+      }
+    }
+    terrain.dispose();
+  }
+  return rows;
+}
