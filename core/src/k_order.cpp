@@ -7,6 +7,7 @@
 
 #include "hodt/error.hpp"
 #include "hodt/fill_enumerator.hpp"
+#include "hodt/flip_search.hpp"
 #include "hodt/higher_order.hpp"
 #include "hodt/pair_measures.hpp"
 #include "hodt/region_model.hpp"
@@ -174,6 +175,13 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
   if (better(info(o).sense, evaluate(o, start), r.value)) {  // (relaxed terms can mislead the search)
     r.triangulation = start;
     r.value = evaluate(o, start);
+  }
+  // Then k-OD flips that improve the terms around them (they reach into the
+  // regions too large to list).
+  Mesh flipped = r.triangulation;
+  if (improve_by_flips(flipped, dt, k, o, options.progress)) {
+    const double v = evaluate(o, flipped);
+    if (better(info(o).sense, v, r.value)) r.triangulation = std::move(flipped), r.value = v, how += ", then k-OD flips";
   }
   const double bound = relaxation_bound(model.graph, dl);
   r.bound = info(o).sense == Sense::Min ? std::min(bound, r.value) : std::max(bound, r.value);

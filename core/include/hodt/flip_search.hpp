@@ -1,0 +1,17 @@
+// Local search by flips (after the flip heuristic of de Kok, van Kreveld and
+// Loeffler): flip a diagonal when both new triangles are k-OD and the objective's
+// terms around the quad (objective_terms.hpp) strictly improve.
+#pragma once
+#include <cstdint>
+
+#include "hodt/factor_graph.hpp"
+#include "hodt/mesh.hpp"
+#include "hodt/objectives.hpp"
+
+namespace hodt {
+
+// Improves the k-OD triangulation m (same points as `delaunay`) in place; returns
+// the number of flips made.
+uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o, const Progress& progress = {});
+
+}  // namespace hodt

@@ -1,0 +1,109 @@
+#include "hodt/flip_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "hodt/circle_count.hpp"
+#include "hodt/error.hpp"
+#include "hodt/objective_terms.hpp"
+#include "hodt/predicates.hpp"
+
+namespace hodt {
+
+namespace {
+
+struct Local {
+  const Mesh& m;
+  const ObjectiveTerms& d;
+  const std::vector<uint8_t>& on_hull;
+  std::vector<uint32_t> nb;
+  std::vector<Tri> tris;
+
+  double add(double a, double b) const { return combine(d.combine, a, b); }
+
+  // The vertex term of v, from an outgoing halfedge h.
+  double vertex(uint32_t v, uint32_t h) {
+    if (interior_only(d.site) && on_hull[v]) return 0;
+    // Clockwise to the boundary (if any), then counterclockwise through the star.
+    const uint32_t start = h;
+    while (m.halfedges[h] >= 0) {
+      const uint32_t g = next_halfedge(static_cast<uint32_t>(m.halfedges[h]));
+      if (g == start) break;
+      h = g;
+    }
+    const uint32_t first = h;
+    nb.clear();
+    tris.clear();
+    for (;;) {
+      nb.push_back(m.target(h));
+      tris.push_back({m.origin(h), m.target(h), m.apex(h)});
+      const int32_t t = m.halfedges[prev_halfedge(h)];
+      if (t < 0) {
+        nb.push_back(m.apex(h));
+        break;
+      }
+      h = static_cast<uint32_t>(t);
+      if (h == first) break;
+    }
+    return vertex_term(d, m, Star{v, nb, tris});
+  }
+
+  double edge(uint32_t h) const {
+    const int32_t t = m.halfedges[h];
+    if (t < 0 && interior_only(d.site)) return 0;
+    return edge_term(d, m, m.origin(h), m.target(h), m.apex(h), t < 0 ? kNoApex : m.apex(static_cast<uint32_t>(t)));
+  }
+
+  // The terms that flipping the diagonal of halfedge e can change.
+  double around(uint32_t e) {
+    const uint32_t f = static_cast<uint32_t>(m.halfedges[e]);
+    double v = 0;
+    if (vertex_site(d.site)) {
+      v = add(v, vertex(m.origin(e), e));
+      v = add(v, vertex(m.target(e), next_halfedge(e)));
+      v = add(v, vertex(m.apex(e), prev_halfedge(e)));
+      v = add(v, vertex(m.apex(f), prev_halfedge(f)));
+    } else if (edge_site(d.site)) {
+      for (uint32_t h : {e, next_halfedge(e), prev_halfedge(e), next_halfedge(f), prev_halfedge(f)}) v = add(v, edge(h));
+    } else {
+      for (uint32_t t : {e / 3, f / 3}) v = add(v, d.triangle(m, {m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]}));
+    }
+    return v;
+  }
+};
+
+}  // namespace
+
+uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o, const Progress& progress) {
+  const ObjectiveTerms& d = objective_terms(o);
+  const Sense sense = info(o).sense;
+  std::vector<uint8_t> on_hull(m.num_vertices(), 0);
+  for (uint32_t v : m.hull) on_hull[v] = 1;
+  CircleCounter circles(delaunay);
+  Local local{m, d, on_hull, {}, {}};
+  uint32_t flips = 0;
+  for (int pass = 0; pass < 30; ++pass) {
+    if (progress && !progress(pass, 30)) throw Cancelled();
+    bool changed = false;
+    for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
+      const int32_t f = m.halfedges[e];
+      if (f < static_cast<int32_t>(e)) continue;
+      const uint32_t a = m.origin(e), b = m.target(e), c = m.apex(e), x = m.apex(static_cast<uint32_t>(f));
+      const int sa = orient2d(m.point(c), m.point(x), m.point(a)), sb = orient2d(m.point(c), m.point(x), m.point(b));
+      if (sa == 0 || sb == 0 || sa == sb) continue;  // not strictly convex
+      if (circles.count(a, x, c, k) > k || circles.count(x, b, c, k) > k) continue;
+      const double before = local.around(e);
+      flip_edge(m, e);
+      const double after = local.around(e);
+      // Strictly better, beyond rounding (sums of lengths are not exact).
+      const double margin = d.combine == TermCombine::Sum ? 1e-12 * std::abs(before) : 0;
+      if (sense == Sense::Min ? after < before - margin : after > before + margin) changed = true, ++flips;
+      else flip_edge(m, e);  // undo
+    }
+    if (!changed) break;
+  }
+  canonicalize(m);
+  return flips;
+}
+
+}  // namespace hodt
