@@ -45,7 +45,7 @@ struct Local {
       h = static_cast<uint32_t>(t);
       if (h == first) break;
     }
-    return vertex_term(d, m, Star{v, nb, tris});
+    return vertex_term(d, m, Star(v, nb, tris));
   }
 
   double edge(uint32_t h) const {

@@ -12,14 +12,19 @@ namespace hodt {
 
 namespace {
 
-// Neighbour points of a star, for the exact vertex tests.
+// Neighbour points of a star, for the exact vertex tests (one buffer per
+// thread: the terms run once per vertex).
 struct NeighborPoints {
-  std::vector<const double*> p;
-  NeighborPoints(const Mesh& m, const Star& s) {
-    p.reserve(s.neighbors.size());
-    for (uint32_t w : s.neighbors) p.push_back(m.point(w));
+  std::vector<const double*>& p;
+  NeighborPoints(const Mesh& m, const Star& s) : p(buffer()) {
+    p.clear();
+    for (uint32_t i = 0; i < s.degree; ++i) p.push_back(m.point(s.neighbors[i]));
   }
   uint32_t size() const { return static_cast<uint32_t>(p.size()); }
+  static std::vector<const double*>& buffer() {
+    static thread_local std::vector<const double*> b;
+    return b;
+  }
 };
 
 double is_class(const Mesh& m, const Star& s, VertexClass c) {
@@ -37,7 +42,7 @@ double local_extremum(const Mesh& m, const Star& s) {
   const NeighborPoints nb(m, s);
   return extremum(m.point(s.center), nb.p.data(), nb.size()) != kNotExtremum;
 }
-double degree(const Mesh&, const Star& s) { return static_cast<double>(s.neighbors.size()); }
+double degree(const Mesh&, const Star& s) { return static_cast<double>(s.degree); }
 
 double convex_edge(const Mesh& m, uint32_t u, uint32_t v, uint32_t w, uint32_t x) {
   return edge_shape(m.point(u), m.point(v), m.point(w), m.point(x)) == kConvexEdge;
@@ -80,8 +85,8 @@ const ObjectiveTerms& objective_terms(Objective o) {
 double vertex_term(const ObjectiveTerms& d, const Mesh& m, const Star& s) {
   if (d.site != TermSite::VertexPair) return d.vertex(m, s);
   double best = 0;
-  for (size_t i = 0; i < s.triangles.size(); ++i)
-    for (size_t j = i + 1; j < s.triangles.size(); ++j) best = std::max(best, d.pair(m, s.triangles[i], s.triangles[j]));
+  for (uint32_t i = 0; i < s.num_triangles; ++i)
+    for (uint32_t j = i + 1; j < s.num_triangles; ++j) best = std::max(best, d.pair(m, s.triangles[i], s.triangles[j]));
   return best;
 }
 
@@ -102,14 +107,13 @@ double evaluate_terms(Objective o, const Mesh& m) {
   };
   if (vertex_site(d.site)) {
     const Stars st = build_stars(m);
-    std::vector<uint32_t> nb;
     std::vector<Tri> tris;
     for (uint32_t v = 0; v < m.num_vertices(); ++v) {
       if (interior_only(d.site) && st.on_hull[v]) continue;
-      nb.assign(st.neighbor.begin() + st.offset[v], st.neighbor.begin() + st.offset[v + 1]);
-      tris.clear();
-      for (uint32_t i = st.tri_offset[v]; i < st.tri_offset[v + 1]; ++i) tris.push_back(base_triangle(m, st.triangle[i]));
-      add(vertex_term(d, m, Star{v, nb, tris}));
+      tris.clear();  // (only pair terms read the triangles)
+      if (d.site == TermSite::VertexPair)
+        for (uint32_t i = st.tri_offset[v]; i < st.tri_offset[v + 1]; ++i) tris.push_back(base_triangle(m, st.triangle[i]));
+      add(vertex_term(d, m, Star(v, st.neighbor.data() + st.offset[v], st.degree(v), tris.data(), static_cast<uint32_t>(tris.size()))));
     }
   } else if (edge_site(d.site)) {
     for (uint32_t e = 0; e < m.halfedges.size(); ++e) {

@@ -202,7 +202,7 @@ struct Builder {
             if (w != v) nb.push_back(w);
         std::sort(nb.begin(), nb.end());
         nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
-        return vertex_term(d, dt, Star{v, nb, tris});
+        return vertex_term(d, dt, Star(v, nb, tris));
       };
       if (choice_regions.empty()) {
         add_constant(term({}));
@@ -311,7 +311,7 @@ StateReducer objective_reducer(const Mesh& dt, const Regions& R, Objective o) {
           if (w != v) nb.push_back(w);
       std::sort(nb.begin(), nb.end());
       nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
-      add(vertex_term(d, dt, Star{v, nb, star}));
+      add(vertex_term(d, dt, Star(v, nb, star)));
     }
     if (d.site == TermSite::Triangle) {
       for (const Tri& t : tris) add(d.triangle(dt, t));

@@ -29,11 +29,18 @@ enum class TermCombine : uint8_t { Sum, Max };
 constexpr uint32_t kNoApex = UINT32_MAX;
 
 // A vertex's star in one triangulation: its neighbours and its triangles, in any
-// order (the terms do not depend on it).
+// order (the terms do not depend on it). Only vertex-pair terms read the
+// triangles; callers may leave them out for the other sites.
 struct Star {
   uint32_t center;
-  const std::vector<uint32_t>& neighbors;
-  const std::vector<Tri>& triangles;  // counterclockwise
+  const uint32_t* neighbors;
+  uint32_t degree;
+  const Tri* triangles;  // counterclockwise
+  uint32_t num_triangles;
+  Star(uint32_t v, const std::vector<uint32_t>& nb, const std::vector<Tri>& tris)
+      : Star(v, nb.data(), static_cast<uint32_t>(nb.size()), tris.data(), static_cast<uint32_t>(tris.size())) {}
+  Star(uint32_t v, const uint32_t* nb, uint32_t d, const Tri* tris, uint32_t nt)
+      : center(v), neighbors(nb), degree(d), triangles(tris), num_triangles(nt) {}
 };
 
 struct ObjectiveTerms {
