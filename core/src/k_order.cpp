@@ -78,24 +78,33 @@ std::vector<uint32_t> states_of(const Regions& R, const Mesh& m) {
   return state;
 }
 
-// Adds to each incomplete region the triangulation a first order choice puts in
-// it (its Delaunay triangles, with its flipped quads flipped: a quad lies in one
-// region, its diagonal being a free edge). Returns whether any was added.
-bool add_first_order_states(Regions& R, const FirstOrder& fo, const Choice& choice) {
+// Adds to each incomplete region the part of a k-OD triangulation that lies in it
+// (each of its triangles lies in one region: the one beside any of its edges).
+// Returns whether any was added.
+bool add_states_of(Regions& R, const Mesh& dt, const Mesh& m) {
   if (!R.incomplete) return false;
-  const Mesh flipped = triangulate(fo, choice);  // triangle slots keep their quads
+  std::unordered_map<uint64_t, uint32_t> delaunay_edge;  // directed edge -> halfedge
+  for (uint32_t e = 0; e < dt.triangles.size(); ++e) delaunay_edge[edge_key(dt.origin(e), dt.target(e))] = e;
+  const std::vector<int32_t> start = vertex_halfedges(dt);
+  std::vector<std::vector<Tri>> part(R.regions.size());
+  for (uint32_t t = 0; t < m.num_triangles(); ++t) {
+    Tri c = base_triangle(m, t);
+    const auto it = delaunay_edge.find(edge_key(c[0], c[1]));
+    // A Delaunay edge: the Delaunay triangle on the same side. Else the segment's
+    // first Delaunay triangle, which it splits (the region has it on both sides).
+    const uint32_t h = it != delaunay_edge.end() ? it->second : crossed_edges(dt, start, c[0], c[1]).front();
+    const uint32_t r = R.region_of_triangle[h / 3];
+    if (R.regions[r].complete) continue;
+    while (c[0] > c[1] || c[0] > c[2]) c = {c[1], c[2], c[0]};
+    part[r].push_back(c);
+  }
   bool added = false;
-  for (Region& region : R.regions) {
+  for (size_t r = 0; r < R.regions.size(); ++r) {
+    Region& region = R.regions[r];
     if (region.complete) continue;
-    std::vector<Tri> tris;
-    for (uint32_t t : region.delaunay_triangles) {
-      Tri c = base_triangle(flipped, t);
-      while (c[0] > c[1] || c[0] > c[2]) c = {c[1], c[2], c[0]};
-      tris.push_back(c);
-    }
-    std::sort(tris.begin(), tris.end());
-    if (std::find(region.states.begin(), region.states.end(), tris) == region.states.end()) {
-      region.states.push_back(std::move(tris));
+    std::sort(part[r].begin(), part[r].end());
+    if (std::find(region.states.begin(), region.states.end(), part[r]) == region.states.end()) {
+      region.states.push_back(std::move(part[r]));
       added = true;
     }
   }
@@ -156,9 +165,18 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
   SolveOptions first = options;
   first.method = Method::Auto;
   first.order = 1;
-  const Choice first_choice = solve(fo, o, first).choice;
-  const Mesh start = triangulate(fo, first_choice);
-  if (add_first_order_states(R, fo, first_choice)) model = region_model(dt, R, o);
+  Mesh start = triangulate(fo, solve(fo, o, first).choice);
+  bool added = add_states_of(R, dt, start);
+  // A ladder: every (k/2)-OD triangulation is k-OD, so the result at order k/2
+  // gives each region one more listed triangulation (and a start no worse).
+  if (k >= 4) {
+    SolveOptions half = options;
+    half.method = Method::Auto;
+    const KOrderResult lower = solve_k_order(fo, o, k / 2, half, max_nodes);
+    added = add_states_of(R, dt, lower.triangulation) || added;
+    if (better(info(o).sense, lower.value, evaluate(o, start))) start = lower.triangulation;
+  }
+  if (added) model = region_model(dt, R, o);
   StateDpLimits dl;
   dl.progress = options.progress;
   std::string how;
