@@ -9,10 +9,13 @@
 
 namespace hodt {
 
-Candidates k_order_candidates(const Mesh& dt, uint32_t k, const std::vector<std::pair<uint32_t, uint32_t>>& edges) {
+Candidates k_order_candidates(const Mesh& dt, uint32_t k, const std::vector<std::pair<uint32_t, uint32_t>>& edges,
+                              const Progress& progress) {
   CircleCounter circles(dt);
   Candidates out;
-  for (auto t : useful_triangles(dt, k, edges)) {
+  uint64_t done = 0;
+  for (auto t : useful_triangles(dt, k, edges, progress)) {
+    if (progress && (++done & 4095) == 0 && !progress(static_cast<double>(done), 0)) throw Cancelled();
     if (orient2d(dt.point(t[0]), dt.point(t[1]), dt.point(t[2])) < 0) std::swap(t[1], t[2]);
     circles.count(t[0], t[1], t[2], k);  // the at most k points in its circle
     bool empty = true;

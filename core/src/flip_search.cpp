@@ -86,6 +86,8 @@ uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o
     if (progress && !progress(pass, 30)) throw Cancelled();
     bool changed = false;
     for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
+      if (progress && (e & 4095) == 0 && !progress(pass * double(m.halfedges.size()) + e, 30.0 * m.halfedges.size()))
+        throw Cancelled();
       const int32_t f = m.halfedges[e];
       if (f < static_cast<int32_t>(e)) continue;
       const uint32_t a = m.origin(e), b = m.target(e), c = m.apex(e), x = m.apex(static_cast<uint32_t>(f));

@@ -4,6 +4,7 @@
 #include <array>
 
 #include "hodt/circle_count.hpp"
+#include "hodt/error.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/predicates.hpp"
 
@@ -81,12 +82,13 @@ bool cap_is_k_order(const Mesh& m, CircleCounter& circles, uint32_t a, uint32_t 
 
 }  // namespace
 
-std::vector<std::pair<uint32_t, uint32_t>> useful_edges(const Mesh& m, uint32_t k) {
+std::vector<std::pair<uint32_t, uint32_t>> useful_edges(const Mesh& m, uint32_t k, const Progress& progress) {
   const uint32_t n = m.num_vertices();
   const std::vector<int32_t> start = vertex_halfedges(m);
   CircleCounter circles(m);
   std::vector<std::pair<uint32_t, uint32_t>> out;
   for (uint32_t u = 0; u < n; ++u) {
+    if (progress && (u & 255) == 0 && !progress(u, n)) throw Cancelled();
     Walker walk{m, u, k == 0 ? 0 : 2 * k - 1, {}, {}, {}};
     uint32_t e = static_cast<uint32_t>(start[u]);
     for (;;) {  // every triangle around u: u, a, b counterclockwise
@@ -120,14 +122,17 @@ std::vector<std::pair<uint32_t, uint32_t>> useful_edges(const Mesh& m, uint32_t 
 }
 
 std::vector<std::array<uint32_t, 3>> useful_triangles(const Mesh& m, uint32_t k,
-                                                      const std::vector<std::pair<uint32_t, uint32_t>>& edges) {
+                                                      const std::vector<std::pair<uint32_t, uint32_t>>& edges,
+                                                      const Progress& progress) {
   const uint32_t n = m.num_vertices();
   std::vector<std::vector<uint32_t>> adj(n);
   for (auto [u, v] : edges) adj[u].push_back(v), adj[v].push_back(u);
   for (auto& a : adj) std::sort(a.begin(), a.end());
   CircleCounter circles(m);
   std::vector<std::array<uint32_t, 3>> out;
-  for (auto [u, v] : edges)
+  for (size_t i = 0; i < edges.size(); ++i) {
+    const auto [u, v] = edges[i];
+    if (progress && (i & 1023) == 0 && !progress(static_cast<double>(i), static_cast<double>(edges.size()))) throw Cancelled();
     for (uint32_t w : adj[v]) {
       if (w <= v || !std::binary_search(adj[u].begin(), adj[u].end(), w)) continue;
       const int o = orient2d(m.point(u), m.point(v), m.point(w));
@@ -135,13 +140,16 @@ std::vector<std::array<uint32_t, 3>> useful_triangles(const Mesh& m, uint32_t k,
       const uint32_t count = o > 0 ? circles.count(u, v, w, k) : circles.count(u, w, v, k);
       if (count <= k) out.push_back({u, v, w});
     }
+  }
   return out;
 }
 
-bool is_k_order(const Mesh& t, const Mesh& delaunay, uint32_t k) {
+bool is_k_order(const Mesh& t, const Mesh& delaunay, uint32_t k, const Progress& progress) {
   CircleCounter circles(delaunay);
-  for (uint32_t i = 0; i < t.num_triangles(); ++i)
+  for (uint32_t i = 0; i < t.num_triangles(); ++i) {
+    if (progress && (i & 2047) == 0 && !progress(i, t.num_triangles())) throw Cancelled();
     if (circles.count(t.triangles[3 * i], t.triangles[3 * i + 1], t.triangles[3 * i + 2], k) > k) return false;
+  }
   return true;
 }
 

@@ -135,7 +135,7 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
   rl.progress = options.progress;
   rl.reduce = &reducer;
   enumerate_regions(dt, R, rl);
-  RegionModel model = region_model(dt, R, o);
+  RegionModel model = region_model(dt, R, o, {}, options.progress);
   KOrderResult r;
   r.delaunay_value = evaluate(o, dt);
   std::string refused;
@@ -176,7 +176,7 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
     added = add_states_of(R, dt, lower.triangulation) || added;
     if (better(info(o).sense, lower.value, evaluate(o, start))) start = lower.triangulation;
   }
-  if (added) model = region_model(dt, R, o);
+  if (added) model = region_model(dt, R, o, {}, options.progress);
   StateDpLimits dl;
   dl.progress = options.progress;
   std::string how;
@@ -214,7 +214,7 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
 Solution k_order_solution(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   KOrderResult r = solve_k_order(fo, o, k, options);
-  if (!is_k_order(r.triangulation, fo.base, k)) throw std::logic_error("order k result is not k-OD");
+  if (!is_k_order(r.triangulation, fo.base, k, options.progress)) throw std::logic_error("order k result is not k-OD");
   Solution s;
   s.objective = o;
   s.method = r.method;

@@ -1,9 +1,11 @@
 #include "hodt/region_model.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <memory>
 
+#include "hodt/error.hpp"
 #include "hodt/measures.hpp"
 
 namespace hodt {
@@ -35,7 +37,7 @@ struct Fans {
 
 // by_neighbors: states with the same neighbours at a vertex share a class (what
 // vertex terms see); else the same triangles (what vertex-pair terms see).
-Fans fans_of(const Region& r, bool by_neighbors) {
+Fans fans_of(const Region& r, bool by_neighbors, const std::function<void()>& tick) {
   Fans f;
   for (const Tri& t : r.states[0]) f.vertices.insert(f.vertices.end(), t.begin(), t.end());
   std::sort(f.vertices.begin(), f.vertices.end());
@@ -47,6 +49,7 @@ Fans fans_of(const Region& r, bool by_neighbors) {
   std::vector<std::vector<Tri>> around(nv);
   std::vector<Tri> key;
   for (size_t s = 0; s < r.states.size(); ++s) {
+    tick();
     for (auto& a : around) a.clear();
     for (const Tri& t : r.states[s])
       for (uint32_t v : t) around[f.local(v)].push_back(t);
@@ -82,6 +85,12 @@ struct Builder {
   const ObjectiveTerms& d;
   RegionModel& M;
   StateGraph& g;
+  const Progress& progress;
+  uint64_t work = 0;
+  // Reports every few thousand terms (a term may cost a vertex class test).
+  void tick(double done, double total) {
+    if (progress && (++work & 2047) == 0 && !progress(done, total)) throw Cancelled();
+  }
 
   int32_t var(uint32_t r) const { return M.variable_of_region[r]; }
   void add_constant(double v) { g.constant = combine(d.combine, g.constant, v); }
@@ -103,6 +112,7 @@ struct Builder {
     // Edges inside a region: both triangles are the region's.
     for (uint32_t r = 0; r < R.regions.size(); ++r)
       for (uint32_t s = 0; s < R.regions[r].states.size(); ++s) {
+        tick(r, static_cast<double>(R.regions.size()));
         const auto& tris = R.regions[r].states[s];
         for (const Tri& t : tris)
           for (int i = 0; i < 3; ++i) {
@@ -114,6 +124,7 @@ struct Builder {
       }
     // Fixed edges between regions, and hull edges.
     for (uint32_t e = 0; e < dt.halfedges.size(); ++e) {
+      tick(e, static_cast<double>(dt.halfedges.size()));
       const int32_t f = dt.halfedges[e];
       const uint32_t u = dt.origin(e), v = dt.target(e), r1 = R.region_of_triangle[e / 3];
       const auto& s1 = R.regions[r1].states;
@@ -161,7 +172,7 @@ struct Builder {
     std::vector<Fans> fans(R.regions.size());
     std::vector<uint8_t> have(R.regions.size(), 0);
     auto fans_at = [&](uint32_t r) -> const Fans& {
-      if (!have[r]) fans[r] = fans_of(R.regions[r], d.site != TermSite::VertexPair), have[r] = 1;
+      if (!have[r]) fans[r] = fans_of(R.regions[r], d.site != TermSite::VertexPair, [&] { tick(r, R.regions.size()); }), have[r] = 1;
       return fans[r];
     };
     std::vector<uint8_t> on_hull(dt.num_vertices(), 0);
@@ -171,6 +182,7 @@ struct Builder {
     std::vector<Tri> tris;
     for (uint32_t v = 0; v < dt.num_vertices(); ++v) {
       if (interior_only(d.site) && on_hull[v]) continue;
+      tick(v, dt.num_vertices());
       around.clear();
       for (uint32_t i = st.tri_offset[v]; i < st.tri_offset[v + 1]; ++i) around.push_back(R.region_of_triangle[st.triangle[i]]);
       std::sort(around.begin(), around.end());
@@ -230,6 +242,7 @@ struct Builder {
       std::vector<uint32_t> cls(fac.dims.size(), 0);
       fac.table.reserve(static_cast<size_t>(size));
       for (;;) {
+        tick(v, dt.num_vertices());
         fac.table.push_back(term(cls));
         size_t j = 0;
         while (j < cls.size() && ++cls[j] == fac.dims[j]) cls[j++] = 0;
@@ -342,7 +355,8 @@ StateReducer objective_reducer(const Mesh& dt, const Regions& R, Objective o) {
   return reducer;
 }
 
-RegionModel region_model(const Mesh& dt, const Regions& R, Objective o, const RegionModelLimits& limits) {
+RegionModel region_model(const Mesh& dt, const Regions& R, Objective o, const RegionModelLimits& limits,
+                         const Progress& progress) {
   const ObjectiveTerms& d = objective_terms(o);
   RegionModel M;
   StateGraph& g = M.graph;
@@ -360,7 +374,7 @@ RegionModel region_model(const Mesh& dt, const Regions& R, Objective o, const Re
     g.unary_terms.push_back(0);
     g.partial.push_back(!region.complete);
   }
-  Builder b{dt, R, d, M, g};
+  Builder b{dt, R, d, M, g, progress};
   if (vertex_site(d.site)) b.vertex_terms(limits.max_factor);
   else if (edge_site(d.site)) b.edge_terms();
   else b.triangle_terms();

@@ -92,7 +92,7 @@ Mesh Regions::triangulation(const Mesh& dt, const std::vector<uint32_t>& state) 
 Regions k_order_skeleton(const Mesh& dt, uint32_t k, const Progress& progress) {
   Regions out;
   out.order = k;
-  const auto useful = useful_edges(dt, k);
+  const auto useful = useful_edges(dt, k, progress);
   out.useful = useful;
   const std::vector<int32_t> start = vertex_halfedges(dt);
   // A Delaunay edge is fixed unless a useful non-Delaunay edge crosses it.
@@ -133,7 +133,7 @@ Regions k_order_skeleton(const Mesh& dt, uint32_t k, const Progress& progress) {
 
 void enumerate_regions(const Mesh& dt, Regions& out, const RegionLimits& limits) {
   const bool any_free = std::find(out.fixed.begin(), out.fixed.end(), 0) != out.fixed.end();
-  const Candidates cand = any_free ? k_order_candidates(dt, out.order, out.useful) : Candidates{};
+  const Candidates cand = any_free ? k_order_candidates(dt, out.order, out.useful, limits.progress) : Candidates{};
   const StateReducer* reduce = limits.reduce;
   uint64_t used = 0;
   auto enumerate = [&](Region& region, uint32_t r, uint64_t budget) {
@@ -166,7 +166,7 @@ void enumerate_regions(const Mesh& dt, Regions& out, const RegionLimits& limits)
           throw StopFill{};
         }
         region.states.push_back(std::move(c));
-      }, {}, &used);
+      }, limits.progress, &used);
     } catch (const StopFill&) {
       region.complete = false;
     }

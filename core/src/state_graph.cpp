@@ -39,11 +39,14 @@ struct Table {
 
 }  // namespace
 
-void simplify(StateGraph& g) {
+void simplify(StateGraph& g, const Progress& progress) {
   const Ops ops{g.combine, g.sense};
   std::vector<StateFactor> kept;
   kept.reserve(g.factors.size());
+  double work = 0;
   for (StateFactor& f : g.factors) {
+    work += static_cast<double>(f.table.size() * f.scope.size());
+    if (progress && !progress(work, 0)) throw Cancelled();
     // Per scope position: classes whose slices of the table are equal are one class.
     for (size_t j = f.scope.size(); j-- > 0;) {
       size_t inner = 1;  // stride of position j
@@ -100,7 +103,7 @@ namespace {
 
 // Variable elimination over a min-degree-like order (fewest joint states first).
 StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
-  simplify(g);
+  simplify(g, limits.progress);
   const Ops ops{g.combine, g.sense};
   const uint32_t n = static_cast<uint32_t>(g.domain.size());
   // Merge the states that every factor sees alike: keep the one of best unary value.
@@ -110,6 +113,7 @@ StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
   std::vector<std::vector<uint32_t>> kept(n);        // reduced state -> state
   std::vector<std::vector<uint32_t>> reduced_of(n);  // state -> reduced state
   for (uint32_t x = 0; x < n; ++x) {
+    if (limits.progress && (x & 255) == 0 && !limits.progress(x, n)) throw Cancelled();
     std::map<std::vector<uint32_t>, uint32_t> by_signature;
     reduced_of[x].resize(g.domain[x]);
     for (uint32_t s = 0; s < g.domain[x]; ++s) {
@@ -235,6 +239,7 @@ StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
       for (size_t p = 0; p < k; ++p)
         if (!contrib[p].empty()) ti += contrib[p][0];
       for (size_t idx = 0; idx < total; ++idx) {
+        if (limits.progress && (idx & 0xFFFF) == 0xFFFF && !limits.progress(work + idx, total_work)) throw Cancelled();
         combined[idx] = ops.add(combined[idx], t.values[ti]);
         // Next joint state: the first digit is the fastest.
         for (size_t p = 0; p < k; ++p) {
@@ -259,6 +264,7 @@ StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
     for (uint32_t w : message.vars) message.map.push_back(nullptr), message.dims.push_back(static_cast<uint32_t>(kept[w].size()));
     best_state[v].resize(rest);
     for (size_t j = 0; j < rest; ++j) {
+      if (limits.progress && (j & 0xFFFF) == 0xFFFF && !limits.progress(work, total_work)) throw Cancelled();
       uint32_t arg = 0;
       for (uint32_t s = 1; s < dv; ++s)
         if (ops.better(combined[j * dv + s], combined[j * dv + arg])) arg = s;

@@ -21,7 +21,8 @@ inline uint64_t edge_key(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | 
 // counterclockwise candidates u, v, w.
 using Candidates = std::unordered_map<uint64_t, std::vector<uint32_t>>;
 Candidates k_order_candidates(const Mesh& delaunay, uint32_t k,
-                              const std::vector<std::pair<uint32_t, uint32_t>>& useful_edges);
+                              const std::vector<std::pair<uint32_t, uint32_t>>& useful_edges,
+                              const Progress& progress = {});
 
 // Calls visit for every triangulation of the polygon bounded by `boundary`
 // (directed edges with the inside on their left) by candidate triangles. Returns

@@ -16,19 +16,22 @@
 #include <utility>
 #include <vector>
 
+#include "hodt/factor_graph.hpp"
 #include "hodt/mesh.hpp"
 
 namespace hodt {
 
 // Useful k-OD edges of the points of a Delaunay mesh, as sorted pairs (u < v).
-std::vector<std::pair<uint32_t, uint32_t>> useful_edges(const Mesh& delaunay, uint32_t k);
+// progress (if given) is called every few hundred vertices or edges; false cancels.
+std::vector<std::pair<uint32_t, uint32_t>> useful_edges(const Mesh& delaunay, uint32_t k, const Progress& progress = {});
 
 // k-OD triangles all of whose edges are useful k-OD edges, as sorted triples.
 std::vector<std::array<uint32_t, 3>> useful_triangles(const Mesh& delaunay, uint32_t k,
-                                                      const std::vector<std::pair<uint32_t, uint32_t>>& edges);
+                                                      const std::vector<std::pair<uint32_t, uint32_t>>& edges,
+                                                      const Progress& progress = {});
 
 // Is every triangle of the mesh k-OD (at most k points in its circumcircle)?
 // (Scans with the Delaunay mesh's circle walk; `delaunay` must hold the same points.)
-bool is_k_order(const Mesh& triangulation, const Mesh& delaunay, uint32_t k);
+bool is_k_order(const Mesh& triangulation, const Mesh& delaunay, uint32_t k, const Progress& progress = {});
 
 }  // namespace hodt

@@ -32,6 +32,6 @@ struct RegionModelLimits {
 StateReducer objective_reducer(const Mesh& delaunay, const Regions& skeleton, Objective o);
 
 RegionModel region_model(const Mesh& delaunay, const Regions& regions, Objective o,
-                         const RegionModelLimits& limits = {});
+                         const RegionModelLimits& limits = {}, const Progress& progress = {});
 
 }  // namespace hodt

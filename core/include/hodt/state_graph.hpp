@@ -54,7 +54,7 @@ struct StateDpResult {
 // Merges the classes of a factor's variable that its table cannot tell apart,
 // drops the variables it does not depend on, and folds factors of one variable
 // into the unary terms (same values for every assignment).
-void simplify(StateGraph& g);
+void simplify(StateGraph& g, const Progress& progress = {});
 
 // The exact optimum (ignoring relaxed terms: exact only if there are none):
 // variable elimination for sums; for min-max, a binary search over the tables'
