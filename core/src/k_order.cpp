@@ -11,6 +11,7 @@
 #include "hodt/measures.hpp"
 #include "hodt/pair_measures.hpp"
 #include "hodt/predicates.hpp"
+#include "hodt/solve_options.hpp"
 
 namespace hodt {
 
@@ -192,9 +193,16 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
   if (complete && have) {
     r.triangulation = mesh_of(dt.coords, best);
     r.optimal = true;
-    r.method = "exact";
+    r.method = options.method == Method::BruteForce ? "brute-force" : "exact";
     return r;
   }
+  if (options.method == Method::BruteForce)  // enumeration or nothing
+    throw LimitError("brute force at order " + std::to_string(k) + " enumerates every " + std::to_string(k) +
+                     "-OD triangulation: " +
+                     (small ? "this instance has more than " + std::to_string(max_nodes) + " search nodes"
+                            : "it refuses " + std::to_string(dt.num_vertices()) + " points (at most " +
+                                  std::to_string(kMaxEnumeratedPoints) + ")") +
+                     "; use --method auto");
   if (o != Objective::MinLocalMinima && o != Objective::MaxConvexEdges && o != Objective::MinLocalExtrema)
     throw LimitError(std::string("order ") + std::to_string(k) + ": " + info(o).id +
                      " is solved only by enumeration, and this instance has too many k-OD triangulations; "
@@ -202,6 +210,7 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
   // Heuristic: from the first order optimum, k-OD-preserving improving flips.
   SolveOptions first = options;
   first.method = Method::Auto;
+  first.order = 1;
   Mesh m = triangulate(fo, solve(fo, o, first).choice);
   std::vector<uint8_t> on_hull(m.num_vertices(), 0);
   for (uint32_t v : m.hull) on_hull[v] = 1;
@@ -247,6 +256,9 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
 }
 
 Solution k_order_solution(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options) {
+  SolveOptions checked = options;
+  checked.order = k;
+  check_options(checked);
   const auto t0 = std::chrono::steady_clock::now();
   KOrderResult r = solve_k_order(fo, o, k, options);
   Solution s;
@@ -257,7 +269,7 @@ Solution k_order_solution(const FirstOrder& fo, Objective o, uint32_t k, const S
   s.delaunay_value = r.delaunay_value;
   s.optimal = r.optimal;
   s.bound = r.bound;  // heuristics: the bound that certifies (or not) the value
-  s.details = r.method == "exact" ? std::to_string(r.enumerated) + " k-OD triangulations enumerated"
+  s.details = r.method != "heuristic" ? std::to_string(r.enumerated) + " k-OD triangulations enumerated"
                                   : "first order optimum improved by k-OD flips";
   // Edges of the result that are not Delaunay edges.
   std::unordered_set<uint64_t> delaunay_edges;

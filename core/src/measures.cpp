@@ -140,7 +140,7 @@ double circumradius(const double* a, const double* b, const double* c) {
   return edge_length(a, b) * edge_length(b, c) * edge_length(c, a) / (2 * area2);
 }
 
-Stars build_stars(const Mesh& m) {
+Stars build_stars(const Mesh& m, const Progress& progress) {
   const uint32_t n = m.num_vertices();
   const std::vector<int32_t> start = vertex_halfedges(m);
   Stars s;
@@ -149,7 +149,9 @@ Stars build_stars(const Mesh& m) {
   s.on_hull.assign(n, 0);
   s.neighbor.reserve(m.triangles.size() + m.hull.size());
   s.triangle.reserve(m.triangles.size());
+  WorkCounter work;
   for (uint32_t v = 0; v < n; ++v) {
+    if (work.tick(64)) report(progress, v, n);
     s.offset[v] = static_cast<uint32_t>(s.neighbor.size());
     s.tri_offset[v] = static_cast<uint32_t>(s.triangle.size());
     if (start[v] < 0) continue;

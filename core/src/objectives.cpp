@@ -67,53 +67,69 @@ double tri_area(const Mesh& m, uint32_t t) {
   return triangle_area(m.point(m.triangles[3 * t]), m.point(m.triangles[3 * t + 1]), m.point(m.triangles[3 * t + 2]));
 }
 
-std::vector<double> areas(const Mesh& m) {
+// Progress through the mesh's elements: units per element, (done, total) as given.
+struct Pace {
+  const Progress& progress;
+  WorkCounter work;
+  void step(double done, double total, double units = 16) {
+    if (work.tick(units)) report(progress, done, total);
+  }
+};
+
+std::vector<double> areas(const Mesh& m, Pace& pace) {
   std::vector<double> a(m.num_triangles());
-  for (uint32_t t = 0; t < m.num_triangles(); ++t) a[t] = tri_area(m, t);
+  for (uint32_t t = 0; t < m.num_triangles(); ++t) a[t] = tri_area(m, t), pace.step(t, m.num_triangles());
   return a;
 }
 
-double max_triangle_area(const Mesh& m) {
+double max_triangle_area(const Mesh& m, Pace& pace) {
   double best = 0;
-  for (uint32_t t = 0; t < m.num_triangles(); ++t) best = std::max(best, tri_area(m, t));
+  for (uint32_t t = 0; t < m.num_triangles(); ++t) best = std::max(best, tri_area(m, t)), pace.step(t, m.num_triangles());
   return best;
 }
 
-double total_edge_length(const Mesh& m) {
+double total_edge_length(const Mesh& m, Pace& pace) {
   std::vector<double> lengths;
   lengths.reserve(m.triangles.size() / 2 + m.hull.size());
-  for (uint32_t e = 0; e < m.triangles.size(); ++e)
+  for (uint32_t e = 0; e < m.triangles.size(); ++e) {
     if (m.halfedges[e] < static_cast<int32_t>(e))
       lengths.push_back(edge_length(m.point(m.origin(e)), m.point(m.target(e))));
+    pace.step(e, m.triangles.size());
+  }
   return order_free_sum(std::move(lengths));
 }
 
 // Max over interior edges of a measure of the edge's two triangles.
 template <class F>
-double edge_pair_max(const Mesh& m, F f) {
+double edge_pair_max(const Mesh& m, Pace& pace, F f) {
   double best = 0;
-  for (uint32_t e = 0; e < m.halfedges.size(); ++e)
+  for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
     if (m.halfedges[e] > static_cast<int32_t>(e)) best = std::max(best, f(e, static_cast<uint32_t>(m.halfedges[e])));
+    pace.step(e, m.halfedges.size(), 32);
+  }
   return best;
 }
 
-double convex_edges(const Mesh& m) {
+double convex_edges(const Mesh& m, Pace& pace) {
   double n = 0;
   for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
     const int32_t f = m.halfedges[e];
     if (f > static_cast<int32_t>(e))
       n += edge_shape(m.point(m.origin(e)), m.point(m.target(e)), m.point(m.apex(e)),
                       m.point(m.apex(static_cast<uint32_t>(f)))) == kConvexEdge;
+    pace.step(e, m.halfedges.size());
   }
   return n;
 }
 
-// Counts interior vertices by a predicate of the vertex and its neighbours.
-template <class F>
-double count_vertices(const Mesh& m, const Stars& s, F f) {
+// Counts interior vertices by a predicate of the vertex and its neighbours
+// (cost: the steps a predicate takes for d neighbours).
+template <class Cost, class F>
+double count_vertices(const Mesh& m, const Stars& s, Pace& pace, Cost cost, F f) {
   double n = 0;
   std::vector<const double*> nb;
   for (uint32_t v = 0; v < m.num_vertices(); ++v) {
+    pace.step(v, m.num_vertices(), 16 + cost(s.degree(v)));
     if (s.on_hull[v]) continue;
     nb.resize(s.degree(v));
     for (uint32_t k = 0; k < nb.size(); ++k) nb[k] = m.point(s.neighbor[s.offset[v] + k]);
@@ -122,9 +138,10 @@ double count_vertices(const Mesh& m, const Stars& s, F f) {
   return n;
 }
 
-double vertex_area_ratio(const Mesh& m, const Stars& s, const std::vector<double>& area) {
+double vertex_area_ratio(const Mesh& m, const Stars& s, const std::vector<double>& area, Pace& pace) {
   double best = 0;
   for (uint32_t v = 0; v < m.num_vertices(); ++v) {
+    pace.step(v, m.num_vertices());
     const uint32_t b = s.tri_offset[v], e = s.tri_offset[v + 1];
     if (e - b < 2) continue;
     double lo = INFINITY, hi = 0;
@@ -134,10 +151,10 @@ double vertex_area_ratio(const Mesh& m, const Stars& s, const std::vector<double
   return best;
 }
 
-double vertex_normal_angle(const Mesh& m, const Stars& s) {
+double vertex_normal_angle(const Mesh& m, const Stars& s, Pace& pace) {
   double best = 0;
   for (uint32_t v = 0; v < m.num_vertices(); ++v)
-    for (uint32_t i = s.tri_offset[v]; i < s.tri_offset[v + 1]; ++i)
+    for (uint32_t i = s.tri_offset[v]; i < s.tri_offset[v + 1]; ++i, pace.step(v, m.num_vertices(), 128))
       for (uint32_t j = i + 1; j < s.tri_offset[v + 1]; ++j) {
         const double *ci[3], *cj[3];
         best = std::max(best, normal_angle(corners(m, s.triangle[i], ci), corners(m, s.triangle[j], cj)));
@@ -153,39 +170,43 @@ double max_degree(const Stars& s) {
 
 }  // namespace
 
-double evaluate(Objective o, const Mesh& m) {
+double evaluate(Objective o, const Mesh& m, const Progress& progress) {
+  Pace pace{progress, {}};
   switch (o) {
-    case Objective::MinmaxTriangleArea: return max_triangle_area(m);
-    case Objective::MinTotalEdgeLength: return total_edge_length(m);
-    case Objective::MaxConvexEdges: return convex_edges(m);
+    case Objective::MinmaxTriangleArea: return max_triangle_area(m, pace);
+    case Objective::MinTotalEdgeLength: return total_edge_length(m, pace);
+    case Objective::MaxConvexEdges: return convex_edges(m, pace);
     case Objective::MinmaxEdgeAreaRatio: {
-      const std::vector<double> a = areas(m);
-      return edge_pair_max(m, [&](uint32_t e, uint32_t f) { return area_ratio(a[e / 3], a[f / 3]); });
+      const std::vector<double> a = areas(m, pace);
+      return edge_pair_max(m, pace, [&](uint32_t e, uint32_t f) { return area_ratio(a[e / 3], a[f / 3]); });
     }
     case Objective::MinmaxEdgeNormalAngle:
-      return edge_pair_max(m, [&](uint32_t e, uint32_t f) {
+      return edge_pair_max(m, pace, [&](uint32_t e, uint32_t f) {
         const double *c1[3], *c2[3];
         return normal_angle(corners(m, e / 3, c1), corners(m, f / 3, c2));
       });
     case Objective::MinmaxEdgeEnclosingCircle:
-      return edge_pair_max(m, [&](uint32_t e, uint32_t f) {
+      return edge_pair_max(m, pace, [&](uint32_t e, uint32_t f) {
         return enclosing_circle(m.point(m.origin(e)), m.point(m.target(e)), m.point(m.apex(e)), m.point(m.apex(f)));
       });
     default: break;
   }
-  const Stars s = build_stars(m);
+  const Stars s = build_stars(m, progress);
+  // A vertex class tests triples of neighbours (at worst), an extremum scans them.
+  auto triples = [](uint32_t d) { return d * (d - 1.0) * (d - 2.0) / 6; };
+  auto scan = [](uint32_t d) { return static_cast<double>(d); };
   switch (o) {
     case Objective::MaxConvexVertices:
-      return count_vertices(m, s, [](const double* p, const double* const* nb, uint32_t d) { return vertex_class(p, nb, d) == kConvex; });
+      return count_vertices(m, s, pace, triples, [](const double* p, const double* const* nb, uint32_t d) { return vertex_class(p, nb, d) == kConvex; });
     case Objective::MinMixedVertices:
-      return count_vertices(m, s, [](const double* p, const double* const* nb, uint32_t d) { return vertex_class(p, nb, d) == kMixed; });
+      return count_vertices(m, s, pace, triples, [](const double* p, const double* const* nb, uint32_t d) { return vertex_class(p, nb, d) == kMixed; });
     case Objective::MinLocalMinima:
-      return count_vertices(m, s, [](const double* p, const double* const* nb, uint32_t d) { return extremum(p, nb, d) == kLocalMinimum; });
+      return count_vertices(m, s, pace, scan, [](const double* p, const double* const* nb, uint32_t d) { return extremum(p, nb, d) == kLocalMinimum; });
     case Objective::MinLocalExtrema:
-      return count_vertices(m, s, [](const double* p, const double* const* nb, uint32_t d) { return extremum(p, nb, d) != kNotExtremum; });
+      return count_vertices(m, s, pace, scan, [](const double* p, const double* const* nb, uint32_t d) { return extremum(p, nb, d) != kNotExtremum; });
     case Objective::MinmaxDegree: return max_degree(s);
-    case Objective::MinmaxVertexAreaRatio: return vertex_area_ratio(m, s, areas(m));
-    case Objective::MinmaxVertexNormalAngle: return vertex_normal_angle(m, s);
+    case Objective::MinmaxVertexAreaRatio: return vertex_area_ratio(m, s, areas(m, pace), pace);
+    case Objective::MinmaxVertexNormalAngle: return vertex_normal_angle(m, s, pace);
     default: break;
   }
   throw std::logic_error("unknown objective");

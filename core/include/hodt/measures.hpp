@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "hodt/mesh.hpp"
+#include "hodt/progress.hpp"
 
 namespace hodt {
 
@@ -66,7 +67,7 @@ struct Stars {
   std::vector<uint8_t> on_hull;
   uint32_t degree(uint32_t v) const { return offset[v + 1] - offset[v]; }
 };
-Stars build_stars(const Mesh& mesh);
+Stars build_stars(const Mesh& mesh, const Progress& progress = {});
 
 // Per-element measures of a triangulation, as arrays (what the API exposes).
 struct Measures {

@@ -12,18 +12,23 @@ enum class Method : uint8_t { BruteForce, Exact, Approx, Auto };
 struct SolveOptions {
   Method method = Method::Auto;
   double epsilon = 0.25;  // approximation schemes: value within (1 - epsilon) of optimal
+  uint32_t order = 1;     // search the k-th order Delaunay triangulations (solve_options.hpp)
   bool trace = false;     // record the bottleneck search (min-max pair objectives)
   uint32_t max_width = 20;  // exact engine: widest tree decomposition allowed (memory cap)
   Progress progress;      // long runs: called with (done, total); false cancels
+  // progress is called at least at every phase and at most every this often
+  // (paced(); 0: at every progress point of the solvers, for tests).
+  double progress_interval_ms = kProgressIntervalMs;
 };
 
 const char* method_id(Method m);
 std::optional<Method> parse_method(std::string_view id);
 std::string method_ids();  // "brute-force, exact, approx, auto"
 
-// Solves objective over the first order triangulations of fo. Throws LimitError
-// when the method cannot handle the instance (with the reason) and InputError for
-// bad options. The delaunay_value of the result is filled in.
+// Solves objective over the first order triangulations of fo (order k: the k-th
+// order ones, k_order.hpp). Throws LimitError when the method cannot handle the
+// instance (with the reason), InputError for bad options (check_options) and
+// Cancelled when progress says stop. The delaunay_value of the result is filled in.
 Solution solve(const FirstOrder& fo, Objective objective, const SolveOptions& options);
 
 }  // namespace hodt

@@ -31,6 +31,8 @@ class Terrain {
   // index), remove_point shifts later indices down by one, like splicing an array.
   // Bad values, an index out of range, a position taken by another point, or too
   // few / collinear points left throw InputError and leave the terrain unchanged.
+  // Removing a point dropped as a duplicate (Dedupe::KeepFirst) only shifts the
+  // indices; moving one is refused.
   uint32_t add_point(double x, double y, double z);
   void move_point(uint32_t i, double x, double y, double z);
   void remove_point(uint32_t i);

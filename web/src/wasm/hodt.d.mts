@@ -46,21 +46,18 @@ export interface RawTerrain {
   delaunayValues(): Float64Array;
   evaluateTriangles(triangles: Uint32Array): Float64Array;
   measuresOfTriangles(triangles: Uint32Array): RawMeasures;
+  /** order >= 2: with the triangles (not a choice of diagonals). */
   solve(
     objective: string,
     method: string,
     epsilon: number,
+    order: number,
     trace: boolean,
     progress: ((done: number, total: number) => boolean | void) | undefined,
-  ): RawSolution;
+  ): RawSolution & { order: number; triangles?: Uint32Array };
   enumerateAll(): Float64Array;
   statsJson(order: number): string;
   usefulEdges(order: number): Uint32Array;
-  solveHigherOrder(
-    objective: string,
-    order: number,
-    progress: ((done: number, total: number) => boolean | void) | undefined,
-  ): RawSolution & { order: number; triangles: Uint32Array };
   usefulTriangles(order: number): Uint32Array;
   delete(): void;
   isDeleted(): boolean;
