@@ -178,7 +178,7 @@ class TerrainHandle {
   // also carries its triangles, input indices, since it is not a choice of
   // diagonals). The core checks every option (check_options). progress:
   // undefined, or a JS function (done, total) returning false to cancel.
-  val solve(const std::string& objective, const std::string& method, double epsilon, double order, bool trace,
+  val solve(const std::string& objective, const std::string& method, double epsilon, bool trace, double order,
             val progress) const {
     return guarded([&] {
       SolveOptions options;
@@ -189,13 +189,16 @@ class TerrainHandle {
       options.order = order_from_number(order);
       options.trace = trace;
       if (progress.typeOf().as<std::string>() == "function")
-        options.progress = [progress](double done, double total) {
+        options.progress = paced([progress](double done, double total) {
           const val r = progress(done, total);
           return !(r.isFalse());
-        };
+        });
       const Objective o = objective_of(objective);
+      check_options(options);
+      // Measured first, where progress can still stop it.
+      const double delaunay_value = t_.delaunay_value(o, options.progress);
       Solution s = hodt::solve(t_.structure(), o, options);
-      s.delaunay_value = t_.delaunay_value(o);
+      s.delaunay_value = delaunay_value;
       val out = solution_value(s);
       out.set("order", s.order);
       if (s.mesh) out.set("triangles", copy_out("Uint32Array", t_.to_input(s.mesh->triangles)));

@@ -185,7 +185,8 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
   bool have = false;
   std::vector<Tri> best;
   const bool small = dt.num_vertices() <= kMaxEnumeratedPoints;
-  const bool complete = small && enumerate_k_order(dt, k, max_nodes, [&](const std::vector<Tri>& tris) {
+  const bool enumerate = small && options.method != Method::Approx;  // approx: the heuristic alone
+  const bool complete = enumerate && enumerate_k_order(dt, k, max_nodes, [&](const std::vector<Tri>& tris) {
     ++r.enumerated;
     const double v = evaluate(o, mesh_of(dt.coords, tris));
     if (!have || better(sense, v, r.value)) r.value = v, best = tris, have = true;
@@ -196,13 +197,13 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
     r.method = options.method == Method::BruteForce ? "brute-force" : "exact";
     return r;
   }
-  if (options.method == Method::BruteForce)  // enumeration or nothing
-    throw LimitError("brute force at order " + std::to_string(k) + " enumerates every " + std::to_string(k) +
-                     "-OD triangulation: " +
-                     (small ? "this instance has more than " + std::to_string(max_nodes) + " search nodes"
-                            : "it refuses " + std::to_string(dt.num_vertices()) + " points (at most " +
+  if (options.method == Method::BruteForce || options.method == Method::Exact)  // enumeration or nothing
+    throw LimitError(std::string(options.method == Method::Exact ? "exact" : "brute force") + " at order " +
+                     std::to_string(k) + " enumerates every k-OD triangulation and " +
+                     (small ? "stopped at its budget of " + std::to_string(max_nodes) + " search nodes"
+                            : "refuses " + std::to_string(dt.num_vertices()) + " points (at most " +
                                   std::to_string(kMaxEnumeratedPoints) + ")") +
-                     "; use --method auto");
+                     "; use --method auto or approx");
   if (o != Objective::MinLocalMinima && o != Objective::MaxConvexEdges && o != Objective::MinLocalExtrema)
     throw LimitError(std::string("order ") + std::to_string(k) + ": " + info(o).id +
                      " is solved only by enumeration, and this instance has too many k-OD triangulations; "

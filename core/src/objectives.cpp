@@ -96,7 +96,7 @@ double total_edge_length(const Mesh& m, Pace& pace) {
       lengths.push_back(edge_length(m.point(m.origin(e)), m.point(m.target(e))));
     pace.step(e, m.triangles.size());
   }
-  return order_free_sum(std::move(lengths));
+  return order_free_sum(std::move(lengths), pace.progress);
 }
 
 // Max over interior edges of a measure of the edge's two triangles.

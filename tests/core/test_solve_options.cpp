@@ -1,5 +1,5 @@
 // Solve options are checked in one place (check_options) for every order and every
-// front end: epsilon, order, and the methods each order has.
+// front end: epsilon, order, method; and every method means something at order k.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -47,22 +47,20 @@ TEST_CASE("epsilon must be a number in (0, 1), at every order") {
   CHECK(error_of(fine) == "");
 }
 
-TEST_CASE("orders from kMinOrder to kMaxOrder; above 1 only auto and brute-force") {
+TEST_CASE("orders from kMinOrder to kMaxOrder, every method at every order") {
   SolveOptions options;
   options.order = 0;
   CHECK(error_of(options) == "order is 0, expected an integer from 1 to 16");
   options.order = kMaxOrder + 1;
   CHECK(error_of(options) == "order is 17, expected an integer from 1 to 16");
-  for (Method m : {Method::BruteForce, Method::Exact, Method::Approx, Method::Auto}) {
-    options.method = m;
-    options.order = 1;
-    CHECK(error_of(options) == "");
-    options.order = 2;
-    CHECK(method_allowed(m, 2) == (m == Method::Auto || m == Method::BruteForce));
-    if (!method_allowed(m, 2))
-      CHECK(error_of(options) == std::string("method '") + method_id(m) +
-                                     "' is not available at order 2: orders above 1 take auto or brute-force");
-  }
+  for (Method m : {Method::BruteForce, Method::Exact, Method::Approx, Method::Auto})
+    for (uint32_t order : {kMinOrder, 2u, kMaxOrder}) {
+      options.method = m;
+      options.order = order;
+      CHECK(error_of(options) == "");
+    }
+  options.method = static_cast<Method>(7);
+  CHECK(error_of(options) == "method is 7, expected brute-force, exact, approx, auto");
   CHECK(order_from_number(3) == 3);
   for (double k : {0.0, 17.0, 1.5, std::nan(""), -1.0})
     CHECK_THROWS_WITH_AS(order_from_number(k), doctest::Contains("expected an integer from 1 to 16"), InputError);
@@ -78,10 +76,6 @@ TEST_CASE("every solver checks the options: solve() and k_order_solution()") {
                        "epsilon is NaN, expected a number in (0, 1)", InputError);
   options.order = 2;
   CHECK_THROWS_AS(solve(fo, Objective::MinLocalMinima, options), InputError);
-  options.epsilon = 0.25;
-  options.method = Method::Exact;
-  CHECK_THROWS_WITH_AS(k_order_solution(fo, Objective::MinLocalMinima, 2, options),
-                       doctest::Contains("method 'exact' is not available at order 2"), InputError);
   CHECK_THROWS_WITH_AS(k_order_solution(fo, Objective::MinLocalMinima, 0, SolveOptions{}),
                        "order is 0, expected an integer from 1 to 16", InputError);
 }
@@ -99,28 +93,40 @@ TEST_CASE("solve() at order k is the k-th order solver") {
   CHECK(s.mesh->triangles == k.mesh->triangles);
 }
 
-TEST_CASE("brute force at order k enumerates every k-OD triangulation, or refuses") {
+TEST_CASE("every method at order k: brute force and exact enumerate or refuse, approx is the heuristic") {
   const FirstOrder small = first_order(delaunay(uniform_points(12, 3)));
-  SolveOptions brute;
-  brute.method = Method::BruteForce;
+  SolveOptions options;
   for (uint32_t k : {2u, 3u}) {
-    brute.order = k;
-    const Solution s = solve(small, Objective::MaxConvexEdges, brute);
-    const Solution a = k_order_solution(small, Objective::MaxConvexEdges, k, SolveOptions{});
-    CHECK(s.method == "brute-force");
-    CHECK(s.optimal);
-    CHECK(s.details.find("triangulations enumerated") != std::string::npos);
-    REQUIRE(a.method == "exact");  // the same enumeration
-    CHECK(s.value == a.value);
+    options.order = k;
+    options.method = Method::Auto;
+    const Solution a = solve(small, Objective::MaxConvexEdges, options);
+    REQUIRE(a.method == "exact");  // small: the enumeration
+    for (Method m : {Method::BruteForce, Method::Exact}) {
+      options.method = m;
+      const Solution s = solve(small, Objective::MaxConvexEdges, options);
+      CHECK(s.method == (m == Method::BruteForce ? "brute-force" : "exact"));
+      CHECK(s.optimal);
+      CHECK(s.details.find("triangulations enumerated") != std::string::npos);
+      CHECK(s.value == a.value);
+    }
+    options.method = Method::Approx;
+    const Solution h = solve(small, Objective::MaxConvexEdges, options);
+    CHECK(h.method == "heuristic");
+    CHECK(h.value <= a.value);
   }
   const FirstOrder large = first_order(delaunay(uniform_points(200, 3)));
-  brute.order = 2;
-  CHECK_THROWS_WITH_AS(solve(large, Objective::MinLocalMinima, brute),
-                       "brute force at order 2 enumerates every 2-OD triangulation: it refuses 200 points (at most "
-                       "30); use --method auto",
+  options.order = 2;
+  options.method = Method::BruteForce;
+  CHECK_THROWS_WITH_AS(solve(large, Objective::MinLocalMinima, options),
+                       doctest::Contains("brute force at order 2 enumerates every k-OD triangulation and refuses 200 "
+                                         "points (at most 30)"),
                        LimitError);
-  // Auto on the same instance answers (by the heuristic).
-  SolveOptions automatic;
-  automatic.order = 2;
-  CHECK(solve(large, Objective::MinLocalMinima, automatic).method == "heuristic");
+  options.method = Method::Exact;
+  CHECK_THROWS_WITH_AS(solve(large, Objective::MinLocalMinima, options), doctest::Contains("exact at order 2 enumerates"),
+                       LimitError);
+  // Auto and approx on the same instance answer (by the heuristic).
+  for (Method m : {Method::Auto, Method::Approx}) {
+    options.method = m;
+    CHECK(solve(large, Objective::MinLocalMinima, options).method == "heuristic");
+  }
 }

@@ -39,21 +39,15 @@ describe('solve options, at every order', () => {
       );
     }
   });
-  it('a method the order does not have is an InputError naming both', () => {
-    for (const method of ['exact', 'approx'] as const) {
-      expect(() => small.solve('max-convex-edges', { order: 2, method })).toThrow(
-        new InputError(`method '${method}' is not available at order 2: orders above 1 take auto or brute-force`),
-      );
-    }
-  });
-  it('brute force at order k enumerates every k-OD triangulation, or refuses', () => {
-    const s = small.solve('max-convex-edges', { order: 2, method: 'brute-force' });
-    expect(s).toMatchObject({ order: 2, method: 'brute-force', optimal: true });
-    expect(s.value).toBe(small.solve('max-convex-edges', { order: 2 }).value);
+  it('every method at order k: brute force and exact enumerate or refuse, approx is the heuristic', () => {
+    const best = small.solve('max-convex-edges', { order: 2 }).value;
+    expect(small.solve('max-convex-edges', { order: 2, method: 'brute-force' })).toMatchObject({ order: 2, method: 'brute-force', optimal: true, value: best });
+    expect(small.solve('max-convex-edges', { order: 2, method: 'exact' })).toMatchObject({ order: 2, method: 'exact', optimal: true, value: best });
+    expect(small.solve('max-convex-edges', { order: 2, method: 'approx' }).method).toBe('heuristic');
     using large = hodt.terrain(randomPoints(200, 3));
     expect(() => large.solve('min-local-minima', { order: 2, method: 'brute-force' })).toThrow(LimitError);
     expect(() => large.solve('min-local-minima', { order: 2, method: 'brute-force' })).toThrow(
-      'brute force at order 2 enumerates every 2-OD triangulation: it refuses 200 points (at most 30); use --method auto',
+      'brute force at order 2 enumerates every k-OD triangulation and refuses 200 points (at most 30)',
     );
   });
   it('non-numbers are named, whatever the order', () => {
@@ -117,7 +111,6 @@ describe('CLI: the same one-line message from the native and the wasm binary', (
     [['--epsilon', '1e309'], 'hodt: epsilon is Infinity, expected a number in (0, 1)\n'],
     [['--epsilon', 'NaN'], 'hodt: epsilon is NaN, expected a number in (0, 1)\n'],
     [['--epsilon', 'abc'], "hodt: --epsilon expects a number, got 'abc'\n"],
-    [['--method', 'exact', '--order', '2'], "hodt: method 'exact' is not available at order 2: orders above 1 take auto or brute-force\n"],
     [['--order', '17'], "hodt: --order expects an integer from 1 to 16, got '17'\n"],
   ];
   it.each(cases)('%j', (extra, message) => {
@@ -128,12 +121,18 @@ describe('CLI: the same one-line message from the native and the wasm binary', (
       expect(n).toEqual(w);
     }
   });
-  it('brute force at order 2 enumerates', () => {
+  it('brute force at order 2 enumerates, and refuses beyond its limit', () => {
     const args = [...solve, '--method', 'brute-force', '--order', '2'];
     const w = wasm(args), n = native(args);
     expect(w.code).toBe(0);
     expect(JSON.parse(w.out)).toMatchObject({ method: 'brute-force', optimal: true });
     const drop = (text: string) => ({ ...JSON.parse(text), timeMs: 0 });
     expect(drop(n.out)).toEqual(drop(w.out));
+    const large = ['solve', fixture('uniform-300.csv'), '--objective', 'min-local-minima', '--method', 'brute-force', '--order', '2'];
+    const w300 = wasm(large);
+    expect(w300).toMatchObject({ code: 3, out: '' });
+    expect(w300.err).toMatch(/^hodt: brute force at order 2 enumerates every k-OD triangulation and refuses 300 points \(at most 30\)/);
+    expect(w300.err.split('\n')).toHaveLength(2);  // one line
+    expect(native(large)).toEqual(w300);
   });
 });

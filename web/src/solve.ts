@@ -15,8 +15,9 @@ export type ProgressCallback = (done: number, total: number) => boolean | void;
 export interface SolveOptions {
   /** 'auto' (default): exact when the instance fits the memory cap, else the
    * approximation; 'exact'; 'approx'; 'brute-force' (all 2^m choices, m <= 24).
-   * Orders above 1 take 'auto' or 'brute-force' (every k-OD triangulation
-   * enumerated, refused when there are too many). */
+   * Order k >= 2: 'brute-force' and 'exact' enumerate every k-OD triangulation
+   * (refused, naming the limit, when there are too many), 'approx' is the
+   * heuristic, 'auto' the enumeration when it fits, else the heuristic. */
   method?: Method;
   /** Approximation schemes: a value within a factor (1 - epsilon) of the optimum,
    * in (0, 1), checked at every order. Default 0.25. */
@@ -83,7 +84,7 @@ export function solveRaw(raw: RawTerrain, objective: ObjectiveId, options: Solve
         }
       : undefined;
   try {
-    return raw.solve(objective, method, epsilon, order, trace, tick);
+    return raw.solve(objective, method, epsilon, trace, order, tick);
   } catch (e) {
     if (thrown) throw (thrown as { error: unknown }).error;
     const error = toHodtError(e);

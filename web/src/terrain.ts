@@ -57,7 +57,7 @@ export interface Solution {
   /** Order k of the triangulations searched (SolveOptions.order). */
   order: number;
   /** The method that ran: 'auto' reports what it chose; order >= 2 reports
-   * 'exact' (enumeration) or 'heuristic'. */
+   * 'brute-force' or 'exact' (enumeration) or 'heuristic'. */
   method: string;
   /** Objective value of the returned triangulation. */
   value: number;

@@ -9,6 +9,8 @@
 //    improved by flips that keep every triangle k-OD and strictly improve the
 //    objective (after the flip heuristic of de Kok, van Kreveld and Loeffler),
 //    reported with optimal = false and a bound where one is known.
+// options.method: brute-force and exact run the enumeration alone (a LimitError
+// when it does not fit), approx the heuristic alone, auto both in turn.
 // Every returned triangulation is verified k-OD.
 #pragma once
 #include <functional>

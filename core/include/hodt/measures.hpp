@@ -56,7 +56,7 @@ double circumradius(const double* a, const double* b, const double* c);
 double edge_length(const double* a, const double* b);
 // A sum that does not depend on the order of its terms (sorted, then added), so
 // that equal triangulations listed differently have bit-identical totals.
-double order_free_sum(std::vector<double> values);
+double order_free_sum(std::vector<double> values, const Progress& progress = {});
 
 // Neighbours of every vertex, counterclockwise, in compressed rows.
 struct Stars {

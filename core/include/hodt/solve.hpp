@@ -10,9 +10,9 @@ namespace hodt {
 enum class Method : uint8_t { BruteForce, Exact, Approx, Auto };
 
 struct SolveOptions {
+  uint32_t order = 1;     // k: optimise over the k-th order Delaunay triangulations
   Method method = Method::Auto;
   double epsilon = 0.25;  // approximation schemes: value within (1 - epsilon) of optimal
-  uint32_t order = 1;     // search the k-th order Delaunay triangulations (solve_options.hpp)
   bool trace = false;     // record the bottleneck search (min-max pair objectives)
   uint32_t max_width = 20;  // exact engine: widest tree decomposition allowed (memory cap)
   Progress progress;      // long runs: called with (done, total); false cancels

@@ -10,12 +10,10 @@ namespace hodt {
 // The orders k a solve accepts (k-th order Delaunay triangulations).
 constexpr uint32_t kMinOrder = 1, kMaxOrder = 16;
 
-// Every method at order 1; above it auto (enumeration when the instance is small
-// enough, else a heuristic) and brute-force (enumeration or a refusal).
-bool method_allowed(Method method, uint32_t order);
-
-// Throws InputError naming the value: an order outside kMinOrder..kMaxOrder, a
-// method the order does not have, an epsilon that is not a number in (0, 1).
+// Throws InputError naming the value: an order outside kMinOrder..kMaxOrder, an
+// epsilon that is not a number in (0, 1) (at every order, used or not), a method
+// that is none of the four. Every method runs at every order (k_order.hpp: at
+// order k, brute-force and exact enumerate or refuse, approx is the heuristic).
 void check_options(const SolveOptions& options);
 
 // An order given as a number (the CLI's text, a JS number): an integer in range,

@@ -50,8 +50,9 @@ class Terrain {
   // Checks a choice from outside (length m, bytes 0/1); throws InputError.
   void check_choice(const Choice& choice) const;
   const std::array<double, kNumObjectives>& delaunay_values() const;
-  // One objective's value on the Delaunay (base) triangulation, computed once.
-  double delaunay_value(Objective o) const;
+  // One objective's value on the Delaunay (base) triangulation, computed once
+  // (progress as for a solve, which measures it too).
+  double delaunay_value(Objective o, const Progress& progress = {}) const;
   // The Delaunay triangulation of the points (the base, unless the user gave one).
   const Mesh& delaunay_mesh() const;
 

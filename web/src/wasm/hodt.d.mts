@@ -51,8 +51,8 @@ export interface RawTerrain {
     objective: string,
     method: string,
     epsilon: number,
-    order: number,
     trace: boolean,
+    order: number,
     progress: ((done: number, total: number) => boolean | void) | undefined,
   ): RawSolution & { order: number; triangles?: Uint32Array };
   enumerateAll(): Float64Array;
