@@ -29,7 +29,7 @@ void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, cons
   for (uint32_t v : m.hull) on_hull[v] = 1;
   // Fixed neighbours: the ends of non-diagonal edges (each seen from both ends, or
   // once on the hull: then the apex side gives the other).
-  const Stars st = build_stars(m);
+  const Stars st = build_stars(m, limits.progress);
   std::vector<uint32_t> fixed;
   auto fixed_neighbours = [&](uint32_t v) {
     fixed.clear();
