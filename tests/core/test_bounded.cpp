@@ -25,10 +25,10 @@ namespace {
 // CPU time of this process: the work done, whatever else the machine runs.
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
-// Longest stretch of work without a progress point. The wasm build runs 2 to 3
-// times slower than this native one: 20 ms here lets a caller cancel a solve in
-// the browser within 100 ms.
-constexpr double kMaxGap = 0.020;
+// Longest stretch of work without a progress point (about 12 ms is the worst seen
+// here). The wasm build runs 2 to 3 times slower than this native one: 25 ms here
+// lets a caller cancel a solve in the browser within 100 ms.
+constexpr double kMaxGap = 0.025;
 
 struct Run {
   std::optional<Solution> solution;
@@ -208,7 +208,7 @@ TEST_CASE("the exact DP refuses a wide decomposition without building it, and a 
   CHECK_THROWS_WITH_AS(solve_exact(g, limits), doctest::Contains("; the memory cap is 1 MiB"), LimitError);
 }
 
-TEST_CASE("progress comes at least every 20 ms of work, in every solve") {
+TEST_CASE("progress comes at least every 25 ms of work, in every solve") {
   struct Case {
     const char* name;
     FirstOrder fo;
