@@ -8,11 +8,11 @@
 #include "hodt/cli.hpp"
 #include "hodt/error.hpp"
 #include "hodt/higher_order.hpp"
-#include "hodt/k_order.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/read_points.hpp"
 #include "hodt/report.hpp"
 #include "hodt/solve.hpp"
+#include "hodt/solve_options.hpp"
 #include "hodt/terrain.hpp"
 
 using emscripten::val;
@@ -47,10 +47,6 @@ auto guarded(F f) -> decltype(f()) {
   val error = val::global("Error").new_(message);
   error.set("name", kind);
   error.throw_();
-}
-
-void check_order(uint32_t k) {
-  if (k < 1 || k > 16) throw InputError("order is " + std::to_string(k) + ", expected an integer from 1 to 16");
 }
 
 Objective objective_of(const std::string& id) {
@@ -178,10 +174,11 @@ class TerrainHandle {
     return out;
   }
 
-  // progress: undefined, or a JS function (done, total) returning false to cancel.
-  // order k >= 2: over the k-th order Delaunay triangulations; the result then also
-  // carries the triangles (input indices), since it is not a choice of diagonals.
-  val solve(const std::string& objective, const std::string& method, double epsilon, bool trace, uint32_t order,
+  // Any order (order k > 1: k-th order Delaunay triangulations; the result then
+  // also carries its triangles, input indices, since it is not a choice of
+  // diagonals). The core checks every option (check_options). progress:
+  // undefined, or a JS function (done, total) returning false to cancel.
+  val solve(const std::string& objective, const std::string& method, double epsilon, bool trace, double order,
             val progress) const {
     return guarded([&] {
       check_order(order);
@@ -191,17 +188,21 @@ class TerrainHandle {
       if (!m) throw InputError("unknown method '" + method + "'; valid methods: " + method_ids());
       options.method = *m;
       options.epsilon = epsilon;
+      options.order = order_from_number(order);
       options.trace = trace;
       if (progress.typeOf().as<std::string>() == "function")
-        options.progress = [progress](double done, double total) {
+        options.progress = paced([progress](double done, double total) {
           const val r = progress(done, total);
           return !(r.isFalse());
-        };
+        });
       const Objective o = objective_of(objective);
+      check_options(options);
+      // Measured first, where progress can still stop it.
+      const double delaunay_value = t_.delaunay_value(o, options.progress);
       Solution s = hodt::solve(t_.structure(), o, options);
-      s.delaunay_value = t_.delaunay_value(o);
+      s.delaunay_value = delaunay_value;
       val out = solution_value(s);
-      out.set("order", order);
+      out.set("order", s.order);
       if (s.mesh) out.set("triangles", copy_out("Uint32Array", t_.to_input(s.mesh->triangles)));
       return out;
     });
@@ -216,19 +217,22 @@ class TerrainHandle {
       return copy_out("Float64Array", flat);
     });
   }
-  std::string statsJson(uint32_t order) const { return stats_json(t_, order); }
+  // order: 0 for none.
+  std::string statsJson(double order) const {
+    return guarded([&] { return stats_json(t_, order == 0 ? 0 : order_from_number(order)); });
+  }
   // Useful k-OD edges (pairs) and triangles (triples), input indices.
-  val usefulEdges(uint32_t k) const {
+  val usefulEdges(double order) const {
     return guarded([&] {
-      check_order(k);
+      const uint32_t k = order_from_number(order);
       std::vector<uint32_t> flat;
       for (auto [u, v] : useful_edges(t_.delaunay_mesh(), k)) flat.insert(flat.end(), {u, v});
       return copy_out("Uint32Array", t_.to_input(flat));
     });
   }
-  val usefulTriangles(uint32_t k) const {
+  val usefulTriangles(double order) const {
     return guarded([&] {
-      check_order(k);
+      const uint32_t k = order_from_number(order);
       const auto edges = useful_edges(t_.delaunay_mesh(), k);
       std::vector<uint32_t> flat;
       for (const auto& tri : useful_triangles(t_.delaunay_mesh(), k, edges)) flat.insert(flat.end(), tri.begin(), tri.end());

@@ -13,37 +13,59 @@ namespace hodt {
 namespace {
 
 // The count of non-mixed interior vertices, as a maximised sum: 1 - mixed per factor.
-FactorGraph non_mixed_model(const FirstOrder& fo, const FactorGraph& mixed) {
+// A vertex whose term was relaxed (left out) counts as non-mixed: its best.
+FactorGraph non_mixed_model(const FirstOrder& fo, FactorGraph g) {
   const uint32_t interior = fo.base.num_vertices() - static_cast<uint32_t>(fo.base.hull.size());
-  FactorGraph g = mixed;
   g.sense = Sense::Max;
-  g.constant = interior - mixed.constant - static_cast<double>(mixed.factors.size());
+  g.constant = interior - g.constant - static_cast<double>(g.factors.size());
   for (Factor& f : g.factors)
     for (double& v : f.table) v = 1 - v;
   return g;
+}
+
+// Every factor at its best: a bound on the optimum of a maximised sum.
+double best_possible(const FactorGraph& g) {
+  double top = g.constant;
+  for (const Factor& f : g.factors) top += *std::max_element(f.table.begin(), f.table.end());
+  return top;
 }
 
 Solution baker_solution(const FirstOrder& fo, Objective o, const SolveOptions& options) {
   DpLimits limits;
   limits.max_width = options.max_width;
   limits.progress = options.progress;
-  const FactorGraph model = factor_model(fo, o);
+  // Vertex terms too large to tabulate are relaxed: counted at their best value
+  // in the bound (which stays certified), and measured for real in the value.
   const bool mixed = o == Objective::MinMixedVertices;
-  const FactorGraph g = mixed ? non_mixed_model(fo, model) : model;
-  BakerResult r = baker(g, quad_layers(fo), options.epsilon, limits);
+  FactorGraph g = factor_model(fo, o, limits, OverBudget::Relax);
+  if (mixed) g = non_mixed_model(fo, std::move(g));
   Solution s;
   s.objective = o;
   s.method = "approx";
-  s.choice = std::move(r.choice);
+  double bound;
+  try {
+    BakerResult r = baker(g, quad_layers(fo, limits.progress), options.epsilon, limits);
+    s.choice = std::move(r.choice);
+    bound = r.bound;
+    s.details = "lambda " + std::to_string(r.lambda) + ", " + std::to_string(r.shifts.size()) +
+                " shifts, widest thick layer " + std::to_string(r.width);
+  } catch (const LimitError& e) {
+    // A thick layer too wide for the DP: the local search alone, from Delaunay,
+    // with every term at its best as the bound.
+    s.choice.assign(fo.num_quads(), 0);
+    bound = best_possible(g);
+    s.details = std::string("Baker's scheme refused (") + e.what() + "); local search from Delaunay, bound: every term at its best";
+  }
+  if (g.relaxed)
+    s.details += "; " + std::to_string(g.relaxed) +
+                 " vertex terms too large to tabulate were relaxed (counted at their best in the bound)";
   const bool improved = improve_locally(g, s.choice, options.progress);
-  prefer_delaunay(g, s.choice);
+  prefer_delaunay(g, s.choice, options.progress);
   s.local_search_improved = improved;
-  s.value = evaluate(o, triangulate(fo, s.choice));
+  s.value = evaluate(o, triangulate(fo, s.choice), options.progress);
   const uint32_t interior = fo.base.num_vertices() - static_cast<uint32_t>(fo.base.hull.size());
-  s.bound = mixed ? interior - r.bound : r.bound;  // mixed: a lower bound on the fewest mixed
+  s.bound = mixed ? interior - bound : bound;  // mixed: a lower bound on the fewest mixed
   s.optimal = s.value == *s.bound;
-  s.details = "lambda " + std::to_string(r.lambda) + ", " + std::to_string(r.shifts.size()) +
-              " shifts, widest thick layer " + std::to_string(r.width);
   return s;
 }
 
@@ -68,11 +90,13 @@ Solution degree_solution(const FirstOrder& fo, const SolveOptions& options) {
     auto [p, r] = ends(q, x[q]);
     ++degree[p], ++degree[r];
   };
+  WorkCounter work;
   for (int round = 0; round < 1000; ++round) {
-    if (options.progress && !options.progress(round, 1000)) throw Cancelled();
+    report(options.progress, round, 1000);
     const uint32_t top = *std::max_element(degree.begin(), degree.end());
     bool moved = false;
     for (uint32_t v = 0; v < n; ++v) {
+      if (work.tick()) report(options.progress, round + double(v) / n, 1000);
       if (degree[v] != top) continue;
       for (const uint32_t* q = vi.quads_begin(v); q != vi.quads_end(v); ++q) {
         auto [u, w] = ends(*q, x[*q]);
@@ -90,7 +114,7 @@ Solution degree_solution(const FirstOrder& fo, const SolveOptions& options) {
   s.objective = Objective::MinmaxDegree;
   s.method = "approx";
   s.choice = std::move(x);
-  s.value = evaluate(Objective::MinmaxDegree, triangulate(fo, s.choice));
+  s.value = evaluate(Objective::MinmaxDegree, triangulate(fo, s.choice), options.progress);
   // Raise the lower bound (or lower the value) with every feasibility test that
   // fits the memory cap: "no" proves the bound, "yes" gives a better choice.
   uint32_t bound = degree_bounds(fo).lower;
@@ -100,7 +124,7 @@ Solution degree_solution(const FirstOrder& fo, const SolveOptions& options) {
   std::string how = "local search";
   try {
     while (bound < s.value) {
-      const DpResult r = solve_exact(degree_feasibility_model(fo, bound), limits);
+      const DpResult r = solve_exact(degree_feasibility_model(fo, bound, limits), limits);
       if (r.value == 0) {
         s.choice = r.choice;
         s.value = bound;
@@ -109,8 +133,8 @@ Solution degree_solution(const FirstOrder& fo, const SolveOptions& options) {
       }
       ++bound;
     }
-  } catch (const LimitError&) {
-    how += "; feasibility DP too wide at degree " + std::to_string(bound);
+  } catch (const LimitError& e) {
+    how += "; feasibility DP refused at degree " + std::to_string(bound) + " (" + e.what() + ")";
   }
   s.bound = bound;
   s.optimal = s.value == bound;

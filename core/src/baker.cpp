@@ -6,15 +6,18 @@
 
 #include "hodt/error.hpp"
 #include "hodt/measures.hpp"
+#include "hodt/progress.hpp"
 
 namespace hodt {
 
-std::vector<uint32_t> quad_layers(const FirstOrder& fo) {
+std::vector<uint32_t> quad_layers(const FirstOrder& fo, const Progress& progress) {
   const Mesh& m = fo.base;
-  const Stars st = build_stars(m);
+  const Stars st = build_stars(m, progress);
+  WorkCounter work;
   std::vector<uint32_t> depth(m.num_vertices(), UINT32_MAX), queue;
   for (uint32_t v : m.hull) depth[v] = 0, queue.push_back(v);
   for (size_t i = 0; i < queue.size(); ++i) {
+    if (work.tick(16)) report(progress, i, m.num_vertices());
     const uint32_t v = queue[i];
     for (uint32_t k = st.offset[v]; k < st.offset[v + 1]; ++k) {
       const uint32_t w = st.neighbor[k];
@@ -39,8 +42,10 @@ BakerResult baker(const FactorGraph& g, const std::vector<uint32_t>& layer, doub
   std::vector<uint8_t> always(nf, 0);
   uint32_t span = 1;
   double all_top = g.constant;
+  WorkCounter work;
   for (size_t k = 0; k < nf; ++k) {
     const Factor& f = g.factors[k];
+    if (work.tick(static_cast<double>(16 + f.table.size()))) report(limits.progress, 0, 1);
     if (*std::min_element(f.table.begin(), f.table.end()) < 0)
       throw std::logic_error("baker: factors must be non-negative");
     top[k] = *std::max_element(f.table.begin(), f.table.end());
@@ -56,7 +61,7 @@ BakerResult baker(const FactorGraph& g, const std::vector<uint32_t>& layer, doub
   r.value = -INFINITY;
   r.width = 0;
   for (uint32_t shift = 0; shift < r.lambda; ++shift) {
-    if (limits.progress && !limits.progress(shift, r.lambda)) throw Cancelled();
+    report(limits.progress, shift, r.lambda);
     // Cuts after the layers l with l mod lambda == shift: a factor is dropped if
     // its layers [lo, hi] contain such an l below hi.
     FactorGraph sub;
@@ -67,6 +72,7 @@ BakerResult baker(const FactorGraph& g, const std::vector<uint32_t>& layer, doub
     double dropped_top = 0;
     uint32_t dropped = 0;
     for (size_t k = 0; k < nf; ++k) {
+      if (work.tick(static_cast<double>(32 + g.factors[k].table.size()))) report(limits.progress, shift, r.lambda);
       const uint32_t first_cut = lo[k] + (shift + r.lambda - lo[k] % r.lambda) % r.lambda;
       if (always[k] || first_cut < hi[k]) {
         dropped_top += top[k];
@@ -75,9 +81,7 @@ BakerResult baker(const FactorGraph& g, const std::vector<uint32_t>& layer, doub
         sub.factors.push_back(g.factors[k]);
       }
     }
-    DpLimits inner = limits;
-    inner.progress = nullptr;
-    const DpResult dp = solve_exact(sub, inner);
+    const DpResult dp = solve_exact(sub, limits);
     r.width = std::max(r.width, dp.decomposition.width);
     BakerShift s{shift, dp.value, g.evaluate(dp.choice), dp.value + dropped_top, dropped};
     r.shifts.push_back(s);
@@ -87,12 +91,25 @@ BakerResult baker(const FactorGraph& g, const std::vector<uint32_t>& layer, doub
   return r;
 }
 
-void prefer_delaunay(const FactorGraph& g, Choice& x) {
+namespace {
+
+// The factors of each variable.
+std::vector<std::vector<uint32_t>> factors_touching(const FactorGraph& g, const Progress& progress) {
+  std::vector<std::vector<uint32_t>> touching(g.num_vars);
+  WorkCounter work;
+  for (uint32_t k = 0; k < g.factors.size(); ++k) {
+    for (uint32_t v : g.factors[k].scope) touching[v].push_back(k);
+    if (work.tick(16.0 * g.factors[k].scope.size())) report(progress, 0, g.num_vars);
+  }
+  return touching;
+}
+
+}  // namespace
+
+void prefer_delaunay(const FactorGraph& g, Choice& x, const Progress& progress) {
   if (g.combine != Combine::Sum) return;
   const double sign = g.sense == Sense::Max ? 1 : -1;
-  std::vector<std::vector<uint32_t>> touching(g.num_vars);
-  for (uint32_t k = 0; k < g.factors.size(); ++k)
-    for (uint32_t v : g.factors[k].scope) touching[v].push_back(k);
+  const std::vector<std::vector<uint32_t>> touching = factors_touching(g, progress);
   auto local = [&](uint32_t v) {
     double s = 0;
     for (uint32_t k : touching[v]) {
@@ -103,7 +120,9 @@ void prefer_delaunay(const FactorGraph& g, Choice& x) {
     }
     return s;
   };
+  WorkCounter work;
   for (uint32_t v = 0; v < g.num_vars; ++v) {
+    if (work.tick(static_cast<double>(touching[v].size()) + 1)) report(progress, v, g.num_vars);
     if (!x[v]) continue;
     const double before = local(v);
     x[v] = 0;
@@ -114,9 +133,7 @@ void prefer_delaunay(const FactorGraph& g, Choice& x) {
 bool improve_locally(const FactorGraph& g, Choice& x, const Progress& progress) {
   if (g.combine != Combine::Sum) return false;
   const double sign = g.sense == Sense::Max ? 1 : -1;
-  std::vector<std::vector<uint32_t>> touching(g.num_vars);
-  for (uint32_t k = 0; k < g.factors.size(); ++k)
-    for (uint32_t v : g.factors[k].scope) touching[v].push_back(k);
+  const std::vector<std::vector<uint32_t>> touching = factors_touching(g, progress);
   auto value_of = [&](uint32_t k) {
     const Factor& f = g.factors[k];
     size_t idx = 0;
@@ -138,15 +155,23 @@ bool improve_locally(const FactorGraph& g, Choice& x, const Progress& progress) 
     return sign * (after - before);
   };
   bool improved = false;
+  WorkCounter work;
   for (int pass = 0; pass < 50; ++pass) {
-    if (progress && !progress(pass, 50)) throw Cancelled();
+    report(progress, pass, 50);
     bool changed = false;
-    for (uint32_t v = 0; v < g.num_vars; ++v)
+    for (uint32_t v = 0; v < g.num_vars; ++v) {
+      if (work.tick(static_cast<double>(touching[v].size()) + 1)) report(progress, pass + 0.5 * v / g.num_vars, 50);
       if (!touching[v].empty() && gain({v}) > 1e-12) x[v] ^= 1, changed = true;
-    for (const Factor& f : g.factors)
+    }
+    for (size_t k = 0; k < g.factors.size(); ++k) {
+      const Factor& f = g.factors[k];
       for (size_t i = 0; i < f.scope.size(); ++i)
-        for (size_t j = i + 1; j < f.scope.size(); ++j)
+        for (size_t j = i + 1; j < f.scope.size(); ++j) {
           if (gain({f.scope[i], f.scope[j]}) > 1e-12) x[f.scope[i]] ^= 1, x[f.scope[j]] ^= 1, changed = true;
+          if (work.tick(static_cast<double>(touching[f.scope[i]].size() + touching[f.scope[j]].size())))
+            report(progress, pass + 0.5 + 0.5 * k / g.factors.size(), 50);
+        }
+    }
     if (!changed) break;
     improved = true;
   }

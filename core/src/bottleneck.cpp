@@ -1,6 +1,7 @@
 #include "hodt/bottleneck.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "hodt/two_sat.hpp"
 
@@ -9,6 +10,7 @@ namespace hodt {
 BottleneckBuilder::BottleneckBuilder(uint32_t num_quads, bool prune)
     : prune_(prune), unary_seq_(num_quads, kUnary) {
   model_.num_quads = num_quads;
+  index_.reserve(2 * size_t(num_quads));  // no rehash of a large map in one step
 }
 
 void BottleneckBuilder::constant(double v) { model_.floor = std::max(model_.floor, v); }
@@ -65,12 +67,16 @@ void BottleneckBuilder::binary(uint32_t q, uint32_t r, const double v[4]) {
   for (int k = 0; k < 4; ++k) kept->v[k] = std::max(kept->v[k], t.v[k]);
 }
 
-BottleneckModel BottleneckBuilder::finish() {
+BottleneckModel BottleneckBuilder::finish(const Progress& progress) {
   // Terms kept before the floor rose may have fallen under it.
+  report(progress, 0, 3);
+  index_ = {};  // freed now, between progress points
+  report(progress, 1, 3);
   std::vector<uint32_t> order;
   for (uint32_t k = 0; k < model_.terms.size(); ++k)
     if (!below_floor(model_.terms[k].v, 4)) order.push_back(k);
   std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return seq_[a] < seq_[b]; });
+  report(progress, 2, 3);
   std::vector<PairTerm> terms(order.size());
   for (size_t k = 0; k < order.size(); ++k) terms[k] = model_.terms[order[k]];
   model_.terms = std::move(terms);
@@ -82,14 +88,17 @@ namespace {
 // Is there a choice with every term at most t? The paper's eliminations (a pair
 // over the threshold between fixed triangles, or in both states of a quad: "no";
 // in one state: the quad is forced) become unit clauses; the rest 2-SAT.
-std::optional<Choice> feasible(const BottleneckModel& m, double t, ThresholdStep& step) {
+std::optional<Choice> feasible(const BottleneckModel& m, double t, ThresholdStep& step, const Progress& progress,
+                               double done, double total) {
   step = ThresholdStep{t, false, 0, 0, false};
   if (m.floor > t) {
     step.immediate_no = true;
     return std::nullopt;
   }
   TwoSat sat(m.num_quads);
+  WorkCounter work;
   for (const PairTerm& term : m.terms) {
+    if (work.tick()) report(progress, done, total);
     const uint32_t q = static_cast<uint32_t>(term.q);
     if (term.r < 0) {
       const bool over0 = term.v[0] > t, over1 = term.v[1] > t;
@@ -108,16 +117,17 @@ std::optional<Choice> feasible(const BottleneckModel& m, double t, ThresholdStep
         if (term.v[x + 2 * y] > t) sat.forbid(q, x, term.r, y);
   }
   step.clauses = static_cast<uint32_t>(sat.num_clauses());
-  auto a = sat.solve();
+  auto a = sat.solve(progress, done, total);
   step.satisfiable = a.has_value();
   return a;
 }
 
 }  // namespace
 
-BottleneckResult solve_bottleneck(const BottleneckModel& m) {
+BottleneckResult solve_bottleneck(const BottleneckModel& m, const Progress& progress) {
   // Bounds: every term takes one of its values (lower), Delaunay achieves upper.
   double lower = m.floor, upper = m.floor;
+  report(progress, 0, 1);
   for (const PairTerm& term : m.terms) {
     const int n = term.r < 0 ? 2 : 4;
     lower = std::max(lower, *std::min_element(term.v, term.v + n));
@@ -127,16 +137,21 @@ BottleneckResult solve_bottleneck(const BottleneckModel& m) {
   for (const PairTerm& term : m.terms)
     for (int k = 0; k < (term.r < 0 ? 2 : 4); ++k)
       if (term.v[k] > lower && term.v[k] < upper) cand.push_back(term.v[k]);
+  report(progress, 0, 1);
   std::sort(cand.begin(), cand.end());
   cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
 
   BottleneckResult r;
   r.choice.assign(m.num_quads, 0);  // Delaunay: feasible at `upper`
   size_t lo = 0, hi = cand.size() - 1;
+  // Progress: the binary search's steps (about log2 of the candidates).
+  const double steps = std::ceil(std::log2(static_cast<double>(cand.size()))) + 1;
   while (lo < hi) {
     const size_t mid = lo + (hi - lo) / 2;
     ThresholdStep step;
-    auto a = feasible(m, cand[mid], step);
+    const double done = static_cast<double>(r.trace.size());
+    report(progress, done, steps);
+    auto a = feasible(m, cand[mid], step, progress, done, steps);
     r.trace.push_back(step);
     if (a) {
       hi = mid;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "hodt/error.hpp"
+#include "hodt/progress.hpp"
 
 namespace hodt {
 namespace {
@@ -45,7 +46,7 @@ Solution brute_force(const FirstOrder& fo, Objective objective, const Progress& 
   const double total = std::ldexp(1.0, static_cast<int>(fo.num_quads()));
   double done = 0;
   gray_walk(fo, [&](const Mesh& mesh, const Choice& choice) {
-    if (progress && (static_cast<uint64_t>(done) & 1023) == 0 && !progress(done, total)) throw Cancelled();
+    report(progress, done, total);  // each step measures a whole triangulation: never cheap
     ++done;
     const double v = evaluate(objective, mesh);
     const uint32_t flips = count_flipped(choice);

@@ -3,10 +3,10 @@
 #include <cstdlib>
 
 #include "hodt/error.hpp"
-#include "hodt/k_order.hpp"
 #include "hodt/read_points.hpp"
 #include "hodt/report.hpp"
 #include "hodt/solve.hpp"
+#include "hodt/solve_options.hpp"
 #include "hodt/terrain.hpp"
 
 namespace hodt {
@@ -24,6 +24,8 @@ struct Usage : InputError {
   using InputError::InputError;
 };
 
+// Any number strtod reads (NaN and infinities too: the option's own check then
+// names them, as it does for every front end).
 double parse_number(const std::string& flag, const std::string& text) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
@@ -49,7 +51,7 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
     bool have_file = false, triangles = false;
     SolveOptions options;
     Dedupe dedupe = Dedupe::Error;
-    int order = 0;  // 0: not given
+    bool have_order = false;
     for (size_t i = 1; i < args.size(); ++i) {
       const std::string& a = args[i];
       auto value = [&]() -> const std::string& {
@@ -64,9 +66,14 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
         options.method = *parsed;
       } else if (a == "--epsilon") options.epsilon = parse_number(a, value());
       else if (a == "--order") {
-        const double k = parse_number(a, value());
-        if (k != static_cast<int>(k) || k < 1 || k > 16) throw Usage("--order expects an integer from 1 to 16");
-        order = static_cast<int>(k);
+        const std::string& k = value();
+        try {
+          options.order = order_from_number(parse_number(a, k));
+        } catch (const InputError&) {
+          throw Usage("--order expects an integer from " + std::to_string(kMinOrder) + " to " +
+                      std::to_string(kMaxOrder) + ", got '" + k + "'");
+        }
+        have_order = true;
       } else if (a == "--triangles") triangles = true;
       else if (a == "--trace") options.trace = true;
       else if (a == "--dedupe") {
@@ -78,6 +85,7 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
       else throw Usage("unexpected argument '" + a + "'");
     }
     if (!have_file) throw Usage(command + ": missing FILE (hodt --help)");
+    check_options(options);  // before reading the file: the same check at every order
     std::optional<Objective> objective;
     if (command == "solve") {
       if (objective_id.empty()) throw Usage("solve needs --objective ID; valid objectives: " + objective_ids());
@@ -98,9 +106,8 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
       throw InputError(name + ": " + e.what());
     }
     if (command == "stats") {
-      r.out = stats_json(terrain, static_cast<uint32_t>(order)) + "\n";
+      r.out = stats_json(terrain, have_order ? options.order : 0) + "\n";
     } else {
-      options.order = static_cast<uint32_t>(order);
       Solution s = solve(terrain.structure(), *objective, options);
       s.delaunay_value = terrain.delaunay_value(*objective);
       r.out = solution_json(terrain, s, triangles, options.trace) + "\n";

@@ -17,10 +17,12 @@ namespace {
 // Theorem 1: in every quad take the reflex diagonal. A convex vertex stays convex
 // when a convex diagonal at it is replaced by the reflex one, and non-convex
 // vertices can only become convex, so this maximises convex vertices.
-Choice reflex_diagonals(const FirstOrder& fo) {
+Choice reflex_diagonals(const FirstOrder& fo, const Progress& progress) {
   const Mesh& m = fo.base;
   Choice c(fo.num_quads(), 0);
+  WorkCounter work;
   for (uint32_t q = 0; q < fo.num_quads(); ++q) {
+    if (work.tick(16)) report(progress, q, fo.num_quads());
     const Quad& k = fo.quads[q];
     c[q] = edge_shape(m.point(k.a), m.point(k.b), m.point(k.c), m.point(k.d)) == kConvexEdge;
   }
@@ -29,10 +31,12 @@ Choice reflex_diagonals(const FirstOrder& fo) {
 
 // Total edge length is a sum over edges, and a quad's choice changes only its
 // diagonal: the shorter diagonal in every quad is optimal (ties keep Delaunay).
-Choice shorter_diagonals(const FirstOrder& fo) {
+Choice shorter_diagonals(const FirstOrder& fo, const Progress& progress) {
   const Mesh& m = fo.base;
   Choice c(fo.num_quads(), 0);
+  WorkCounter work;
   for (uint32_t q = 0; q < fo.num_quads(); ++q) {
+    if (work.tick(16)) report(progress, q, fo.num_quads());
     const Quad& k = fo.quads[q];
     c[q] = edge_length(m.point(k.c), m.point(k.d)) < edge_length(m.point(k.a), m.point(k.b));
   }
@@ -42,34 +46,42 @@ Choice shorter_diagonals(const FirstOrder& fo) {
 // The largest triangle is the max over fixed triangles and, per quad, the larger
 // of its two triangles: independent per quad, so each quad takes the diagonal
 // whose larger triangle is smaller (ties keep Delaunay).
-Choice smaller_largest_triangles(const FirstOrder& fo) {
+Choice smaller_largest_triangles(const FirstOrder& fo, const Progress& progress) {
+  WorkCounter work;
   // The optimum is the larger of the largest fixed triangle and, over the quads,
   // the smaller of their two options; a quad flips only if Delaunay exceeds it.
   const Mesh& m = fo.base;
   double optimum = 0;
-  for (uint32_t t = 0; t < m.num_triangles(); ++t)
+  for (uint32_t t = 0; t < m.num_triangles(); ++t) {
     if (fo.quad_of_triangle[t] < 0)
       optimum = std::max(optimum, triangle_area(m.point(m.triangles[3 * t]), m.point(m.triangles[3 * t + 1]),
                                                 m.point(m.triangles[3 * t + 2])));
-  for (uint32_t q = 0; q < fo.num_quads(); ++q)
+    if (work.tick(8)) report(progress, t, m.num_triangles());
+  }
+  for (uint32_t q = 0; q < fo.num_quads(); ++q) {
     optimum = std::max(optimum, std::min(largest_triangle(fo, q, false), largest_triangle(fo, q, true)));
+    if (work.tick(16)) report(progress, q, fo.num_quads());
+  }
   Choice c(fo.num_quads(), 0);
-  for (uint32_t q = 0; q < fo.num_quads(); ++q) c[q] = largest_triangle(fo, q, false) > optimum;
+  for (uint32_t q = 0; q < fo.num_quads(); ++q) {
+    c[q] = largest_triangle(fo, q, false) > optimum;
+    if (work.tick(8)) report(progress, q, fo.num_quads());
+  }
   return c;
 }
 
-BottleneckModel pair_model(const FirstOrder& fo, Objective o) {
+BottleneckModel pair_model(const FirstOrder& fo, Objective o, const Progress& progress) {
   const Mesh& m = fo.base;
   // With a cut: the search needs only values above the floor (a pruned model).
   auto ratio = [&](const Tri& s, const Tri& t, double) { return pair_area_ratio(m, s, t); };
   auto angle = [&](const Tri& s, const Tri& t, double cut) { return pair_normal_angle(m, s, t, cut); };
   auto circle = [&](const Tri& s, const Tri& t, double) { return pair_enclosing_circle(m, s, t); };
   switch (o) {
-    case Objective::MinmaxEdgeAreaRatio: return edge_pair_model(fo, ratio);
-    case Objective::MinmaxEdgeNormalAngle: return edge_pair_model(fo, angle);
-    case Objective::MinmaxEdgeEnclosingCircle: return edge_pair_model(fo, circle);
-    case Objective::MinmaxVertexAreaRatio: return vertex_pair_model(fo, ratio);
-    case Objective::MinmaxVertexNormalAngle: return vertex_pair_model(fo, angle);
+    case Objective::MinmaxEdgeAreaRatio: return edge_pair_model(fo, ratio, progress);
+    case Objective::MinmaxEdgeNormalAngle: return edge_pair_model(fo, angle, progress);
+    case Objective::MinmaxEdgeEnclosingCircle: return edge_pair_model(fo, circle, progress);
+    case Objective::MinmaxVertexAreaRatio: return vertex_pair_model(fo, ratio, progress);
+    case Objective::MinmaxVertexNormalAngle: return vertex_pair_model(fo, angle, progress);
     default: throw std::logic_error("not a pair objective");
   }
 }
@@ -85,18 +97,19 @@ Solution solve_polynomial(const FirstOrder& fo, Objective o, const ExactOptions&
   s.objective = o;
   s.method = "exact";
   s.optimal = true;
+  const Progress& progress = options.limits.progress;
   switch (o) {
-    case Objective::MaxConvexVertices: s.choice = reflex_diagonals(fo); break;
-    case Objective::MinTotalEdgeLength: s.choice = shorter_diagonals(fo); break;
-    case Objective::MinmaxTriangleArea: s.choice = smaller_largest_triangles(fo); break;
-    case Objective::MinLocalMinima: s.choice = fewest_local_minima(fo); break;
-    case Objective::MinLocalExtrema: s.choice = fewest_local_extrema(fo); break;
+    case Objective::MaxConvexVertices: s.choice = reflex_diagonals(fo, progress); break;
+    case Objective::MinTotalEdgeLength: s.choice = shorter_diagonals(fo, progress); break;
+    case Objective::MinmaxTriangleArea: s.choice = smaller_largest_triangles(fo, progress); break;
+    case Objective::MinLocalMinima: s.choice = fewest_local_minima(fo, progress); break;
+    case Objective::MinLocalExtrema: s.choice = fewest_local_extrema(fo, options.limits); break;
     case Objective::MinmaxEdgeAreaRatio:
     case Objective::MinmaxEdgeNormalAngle:
     case Objective::MinmaxEdgeEnclosingCircle:
     case Objective::MinmaxVertexAreaRatio:
     case Objective::MinmaxVertexNormalAngle: {
-      BottleneckResult r = solve_bottleneck(pair_model(fo, o));
+      BottleneckResult r = solve_bottleneck(pair_model(fo, o, progress), progress);
       s.choice = std::move(r.choice);
       if (options.trace) s.trace = std::move(r.trace);
       break;
@@ -105,8 +118,8 @@ Solution solve_polynomial(const FirstOrder& fo, Objective o, const ExactOptions&
       throw LimitError(std::string(info(o).id) + " is NP-hard: it has no polynomial exact algorithm");
   }
   const Mesh mesh = triangulate(fo, s.choice);
-  s.critical = critical_pair(o, mesh);
-  s.value = s.critical ? s.critical->value : evaluate(o, mesh);  // the same number, computed once
+  s.critical = critical_pair(o, mesh, progress);
+  s.value = s.critical ? s.critical->value : evaluate(o, mesh, progress);  // the same number, computed once
   return s;
 }
 

@@ -6,6 +6,7 @@
 #include <queue>
 
 #include "hodt/error.hpp"
+#include "hodt/progress.hpp"
 
 namespace hodt {
 
@@ -19,11 +20,15 @@ double FactorGraph::evaluate(const Choice& x) const {
   return v;
 }
 
-void FactorGraph::simplify() {
+void FactorGraph::simplify(const Progress& progress) {
   std::vector<Factor> kept;
   kept.reserve(factors.size());
-  for (Factor& f : factors) {
+  WorkCounter work;
+  const double total = static_cast<double>(factors.size());
+  for (size_t i = 0; i < factors.size(); ++i) {
+    Factor& f = factors[i];
     for (size_t k = f.scope.size(); k-- > 0;) {
+      if (work.tick(static_cast<double>(f.table.size()))) report(progress, static_cast<double>(i), total);
       const size_t bit = size_t(1) << k;
       bool depends = false;
       for (size_t idx = 0; idx < f.table.size() && !depends; ++idx)
@@ -46,18 +51,22 @@ void FactorGraph::simplify() {
   factors.swap(kept);
 }
 
-Decomposition decompose(const FactorGraph& g) {
+Decomposition decompose(const FactorGraph& g, uint32_t max_width, const Progress& progress) {
   const uint32_t n = g.num_vars;
   Decomposition d;
+  WorkCounter work;
   // Interaction graph: variables sharing a factor are neighbours.
   std::vector<std::vector<uint32_t>> adj(n);
-  for (const Factor& f : g.factors)
+  for (const Factor& f : g.factors) {
     for (uint32_t a : f.scope)
       for (uint32_t b : f.scope)
         if (a != b) adj[a].push_back(b);
+    if (work.tick(static_cast<double>(f.scope.size() * f.scope.size()))) report(progress, 0, n);
+  }
   for (auto& a : adj) {
     std::sort(a.begin(), a.end());
     a.erase(std::unique(a.begin(), a.end()), a.end());
+    if (work.tick(static_cast<double>(a.size()) + 1)) report(progress, 0, n);
   }
   // Connected components (for reporting widths per component).
   d.component.assign(n, UINT32_MAX);
@@ -90,7 +99,12 @@ Decomposition decompose(const FactorGraph& g) {
     bag.insert(bag.end(), adj[v].begin(), adj[v].end());
     d.width = std::max(d.width, static_cast<uint32_t>(bag.size() - 1));
     d.component_width[d.component[v]] = std::max(d.component_width[d.component[v]], static_cast<uint32_t>(bag.size() - 1));
+    if (d.width > max_width) {  // the answer is "too wide" already
+      d.complete = false;
+      break;
+    }
     // Make the neighbours a clique, remove v.
+    double merged_size = 0;
     for (uint32_t a : adj[v]) {
       auto& na = adj[a];
       na.erase(std::lower_bound(na.begin(), na.end(), v));
@@ -99,8 +113,10 @@ Decomposition decompose(const FactorGraph& g) {
       std::set_union(na.begin(), na.end(), adj[v].begin(), adj[v].end(), std::back_inserter(merged));
       merged.erase(std::remove(merged.begin(), merged.end(), a), merged.end());
       na.swap(merged);
+      merged_size += static_cast<double>(na.size());
       heap.push({static_cast<uint32_t>(na.size()), a});
     }
+    if (work.tick(merged_size + 32 * bag.size())) report(progress, static_cast<double>(d.order.size()), n);
     adj[v].clear();
     d.order.push_back(v);
     d.bags.push_back(std::move(bag));
@@ -118,9 +134,29 @@ struct Table {
 
 }  // namespace
 
+namespace {
+
+// Bytes the DP would hold at its peak, at most: every message and back-pointer
+// table (one entry per assignment of a bag without its variable), the copies of
+// the factors, and the largest combined table.
+double table_bytes(const FactorGraph& g, const Decomposition& d) {
+  double bytes = 0, widest = 0;
+  for (const auto& bag : d.bags) {
+    const double entries = std::ldexp(1.0, static_cast<int>(bag.size()));
+    bytes += entries / 2 * (sizeof(double) + 1);
+    widest = std::max(widest, entries);
+  }
+  for (const Factor& f : g.factors) bytes += static_cast<double>(f.table.size()) * sizeof(double);
+  return bytes + widest * sizeof(double);
+}
+
+std::string mebibytes(double bytes) { return std::to_string(static_cast<uint64_t>(std::ceil(bytes / 1048576))) + " MiB"; }
+
+}  // namespace
+
 DpResult solve_exact(const FactorGraph& g, const DpLimits& limits) {
   DpResult r;
-  r.decomposition = decompose(g);
+  r.decomposition = decompose(g, limits.max_width, limits.progress);
   const Decomposition& d = r.decomposition;
   if (d.width > limits.max_width) {
     uint32_t worst = 0;
@@ -129,10 +165,14 @@ DpResult solve_exact(const FactorGraph& g, const DpLimits& limits) {
     uint32_t size = 0;
     for (uint32_t v = 0; v < g.num_vars; ++v) size += d.component[v] == worst;
     throw LimitError("exact: a component of " + std::to_string(size) + " quads has a tree decomposition of width " +
-                     std::to_string(d.width) + " (tables of 2^" + std::to_string(d.width + 1) +
-                     " entries); the memory cap allows width " + std::to_string(limits.max_width) +
-                     "; use --method approx");
+                     (d.complete ? "" : "at least ") + std::to_string(d.width) + " (tables of 2^" +
+                     std::to_string(d.width + 1) + " entries); the memory cap allows width " +
+                     std::to_string(limits.max_width) + "; use --method approx");
   }
+  if (const double bytes = table_bytes(g, d); bytes > limits.max_table_bytes)
+    throw LimitError("exact: the tables of the tree decomposition (width " + std::to_string(d.width) + ", " +
+                     std::to_string(g.num_vars) + " quads) would need " + mebibytes(bytes) +
+                     "; the memory cap is " + mebibytes(limits.max_table_bytes) + "; use --method approx");
   const uint32_t n = g.num_vars;
   std::vector<uint32_t> position(n);
   for (uint32_t i = 0; i < n; ++i) position[d.order[i]] = i;
@@ -143,7 +183,9 @@ DpResult solve_exact(const FactorGraph& g, const DpLimits& limits) {
   // Buckets: each factor goes to its earliest-eliminated variable.
   std::vector<std::vector<Table>> bucket(n);
   double constant = g.constant;
+  WorkCounter work;
   for (const Factor& f : g.factors) {
+    if (work.tick(static_cast<double>(64 + f.table.size()))) report(limits.progress, 0, n);
     if (f.scope.empty()) {
       constant = sum ? constant + f.table[0] : std::max(constant, f.table[0]);
       continue;
@@ -160,7 +202,7 @@ DpResult solve_exact(const FactorGraph& g, const DpLimits& limits) {
   std::vector<std::vector<uint8_t>> best_value(n);
   for (uint32_t i = 0; i < n; ++i) {
     const uint32_t v = d.order[i];
-    if (limits.progress && (i & 255) == 0 && !limits.progress(i, n)) throw Cancelled();
+    if ((i & 255) == 0 || work.tick(64)) report(limits.progress, i, n);  // a bag's own cost: its vectors
     std::vector<uint32_t> bag = d.bags[i];  // v first, then its later neighbours
     std::sort(bag.begin() + 1, bag.end(), [&](uint32_t a, uint32_t b) { return position[a] < position[b]; });
     const uint32_t k = static_cast<uint32_t>(bag.size());
@@ -173,6 +215,7 @@ DpResult solve_exact(const FactorGraph& g, const DpLimits& limits) {
         size_t ti = 0;
         for (size_t j = 0; j < t.vars.size(); ++j) ti |= ((idx >> bit[j]) & 1) << j;
         combined[idx] = sum ? combined[idx] + t.values[ti] : std::max(combined[idx], t.values[ti]);
+        if (work.tick(static_cast<double>(t.vars.size()))) report(limits.progress, i, n);
       }
     }
     bucket[v].clear();
@@ -185,6 +228,7 @@ DpResult solve_exact(const FactorGraph& g, const DpLimits& limits) {
       const bool one = better(v1, v0);
       best_value[v][rest] = one;
       message.values[rest] = one ? v1 : v0;
+      if (work.tick()) report(limits.progress, i, n);
     }
     later[v] = message.vars;
     if (message.vars.empty()) {
@@ -200,6 +244,10 @@ DpResult solve_exact(const FactorGraph& g, const DpLimits& limits) {
     size_t idx = 0;
     for (size_t j = 0; j < later[v].size(); ++j) idx |= size_t(r.choice[later[v][j]]) << j;
     r.choice[v] = best_value[v][idx];
+    if (work.tick(static_cast<double>(later[v].size() + 64))) report(limits.progress, n, n);
+    // Freed here, between progress points, rather than all at once on return.
+    std::vector<uint8_t>().swap(best_value[v]);
+    std::vector<uint32_t>().swap(later[v]);
   }
   r.value = constant;
   return r;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "hodt/bottleneck.hpp"
+#include "hodt/format.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/pair_measures.hpp"
 #include "hodt/skeleton.hpp"
@@ -11,20 +12,26 @@ namespace hodt {
 
 namespace {
 
+// The vertex's position, to name it in a message (the core knows no input index).
+std::string vertex_at(const Mesh& m, uint32_t v) {
+  return "the vertex at (" + format_number(m.point(v)[0]) + ", " + format_number(m.point(v)[1]) + ")";
+}
+
 // A term per vertex: value(v, its neighbours) over all choices of the quads at v.
-template <class Value>
-void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, Value value) {
+// work(d): steps to compute one entry for d neighbours. Terms over the budget are
+// refused or left out (g.relaxed counts them) before any table is allocated.
+template <class Work, class Value>
+void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, const DpLimits& limits, OverBudget over,
+                  Work work, Value value) {
   const Mesh& m = fo.base;
   const VertexIncidence vi = vertex_incidence(fo);
   std::vector<uint8_t> on_hull(m.num_vertices(), 0);
   for (uint32_t v : m.hull) on_hull[v] = 1;
   // Fixed neighbours: the ends of non-diagonal edges (each seen from both ends, or
   // once on the hull: then the apex side gives the other).
-  const Stars st = build_stars(m);
+  const Stars st = build_stars(m, limits.progress);
   std::vector<uint32_t> fixed;
-  std::vector<const double*> nb;
-  for (uint32_t v = 0; v < m.num_vertices(); ++v) {
-    if (interior_only && on_hull[v]) continue;
+  auto fixed_neighbours = [&](uint32_t v) {
     fixed.clear();
     const uint32_t* qs = vi.quads_begin(v);
     const uint32_t nq = static_cast<uint32_t>(vi.quads_end(v) - qs);
@@ -37,6 +44,34 @@ void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, Valu
       }
       if (!is_diagonal) fixed.push_back(w);
     }
+  };
+  const uint32_t n = m.num_vertices();
+  std::vector<TermSize> sizes(n, TermSize{0, 0});
+  WorkCounter progress;
+  for (uint32_t v = 0; v < n; ++v) {
+    if (progress.tick(32)) report(limits.progress, 0, n);
+    if (interior_only && on_hull[v]) continue;
+    const uint32_t nq = static_cast<uint32_t>(vi.quads_end(v) - vi.quads_begin(v));
+    if (nq == 0) continue;
+    fixed_neighbours(v);
+    sizes[v] = TermSize{nq, work(static_cast<uint32_t>(fixed.size()) + nq)};
+  }
+  const std::vector<uint8_t> keep = plan_terms(sizes, limits, over, [&](size_t v) {
+    fixed_neighbours(static_cast<uint32_t>(v));
+    return vertex_at(m, static_cast<uint32_t>(v)) + " has " + std::to_string(sizes[v].scope) +
+           " flippable quads and " + std::to_string(fixed.size() + sizes[v].scope) + " possible neighbours around it";
+  });
+  std::vector<const double*> nb;
+  for (uint32_t v = 0; v < n; ++v) {
+    if (progress.tick(32)) report(limits.progress, v, n);
+    if (interior_only && on_hull[v]) continue;
+    if (!keep[v]) {
+      ++g.relaxed;
+      continue;
+    }
+    fixed_neighbours(v);
+    const uint32_t* qs = vi.quads_begin(v);
+    const uint32_t nq = static_cast<uint32_t>(vi.quads_end(v) - qs);
     Factor f;
     f.scope.assign(qs, qs + nq);
     f.table.resize(size_t(1) << nq);
@@ -51,6 +86,7 @@ void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, Valu
         if (flipped && (v == q.c || v == q.d)) nb.push_back(m.point(v == q.c ? q.d : q.c));
       }
       f.table[idx] = value(m.point(v), nb);
+      if (progress.tick(sizes[v].work_per_entry + 1)) report(limits.progress, v, n);
     }
     if (nq == 0) {
       g.constant = g.combine == Combine::Sum ? g.constant + f.table[0] : std::max(g.constant, f.table[0]);
@@ -65,7 +101,9 @@ void add_factor(FactorGraph& g, std::vector<uint32_t> scope, std::vector<double>
 }
 
 // Convex edges: a term per edge of the skeleton and per quad diagonal.
-void convex_edge_terms(const FirstOrder& fo, FactorGraph& g) {
+void convex_edge_terms(const FirstOrder& fo, FactorGraph& g, const Progress& progress) {
+  WorkCounter work;  // a unit: about one predicate
+  const double total = static_cast<double>(fo.num_quads() + fo.base.halfedges.size());
   const Mesh& m = fo.base;
   auto convex = [&](const Tri& left, uint32_t x) {  // edge left[0] -> left[1], x across it
     return edge_shape(m.point(left[0]), m.point(left[1]), m.point(left[2]), m.point(x)) == kConvexEdge ? 1.0 : 0.0;
@@ -76,11 +114,14 @@ void convex_edge_terms(const FirstOrder& fo, FactorGraph& g) {
     return t[0];
   };
   const std::vector<uint8_t> diagonal = fo.diagonal_mask();
+  g.factors.reserve(fo.num_quads() + m.halfedges.size() / 2);
   for (uint32_t q = 0; q < fo.num_quads(); ++q) {
     const Quad& k = fo.quads[q];
     add_factor(g, {q}, {convex({k.a, k.b, k.c}, k.d), convex({k.d, k.c, k.a}, k.b)});
+    if (work.tick(16)) report(progress, q, total);
   }
   for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
+    if (work.tick(16)) report(progress, fo.num_quads() + e, total);
     const int32_t f = m.halfedges[e];
     if (f < static_cast<int32_t>(e) || diagonal[e]) continue;
     const uint32_t u = m.origin(e), v = m.target(e);
@@ -110,42 +151,45 @@ void pair_terms(const BottleneckModel& bm, FactorGraph& g) {
 
 }  // namespace
 
-FactorGraph factor_model(const FirstOrder& fo, Objective o) {
+FactorGraph factor_model(const FirstOrder& fo, Objective o, const DpLimits& limits, OverBudget over) {
   const Mesh& m = fo.base;
   FactorGraph g;
   g.num_vars = fo.num_quads();
   g.sense = info(o).sense;
   auto count = [](bool b) { return b ? 1.0 : 0.0; };
+  // Steps per entry: a vertex class tests triples of neighbours, the others scan them.
+  auto triples = [](uint32_t d) { return d * (d - 1.0) * (d - 2.0) / 6 + d * (d - 1.0) / 2; };
+  auto scan = [](uint32_t d) { return static_cast<double>(d); };
   auto ratio = [&](const Tri& s, const Tri& t) { return pair_area_ratio(m, s, t); };
   auto angle = [&](const Tri& s, const Tri& t) { return pair_normal_angle(m, s, t); };
   auto circle = [&](const Tri& s, const Tri& t) { return pair_enclosing_circle(m, s, t); };
   switch (o) {
     case Objective::MaxConvexVertices:
-      vertex_terms(fo, true, g, [&](const double* p, const auto& nb) {
+      vertex_terms(fo, true, g, limits, over, triples, [&](const double* p, const auto& nb) {
         return count(vertex_class(p, nb.data(), static_cast<uint32_t>(nb.size())) == kConvex);
       });
       break;
     case Objective::MinMixedVertices:
-      vertex_terms(fo, true, g, [&](const double* p, const auto& nb) {
+      vertex_terms(fo, true, g, limits, over, triples, [&](const double* p, const auto& nb) {
         return count(vertex_class(p, nb.data(), static_cast<uint32_t>(nb.size())) == kMixed);
       });
       break;
     case Objective::MinLocalMinima:
-      vertex_terms(fo, true, g, [&](const double* p, const auto& nb) {
+      vertex_terms(fo, true, g, limits, over, scan, [&](const double* p, const auto& nb) {
         return count(extremum(p, nb.data(), static_cast<uint32_t>(nb.size())) == kLocalMinimum);
       });
       break;
     case Objective::MinLocalExtrema:
-      vertex_terms(fo, true, g, [&](const double* p, const auto& nb) {
+      vertex_terms(fo, true, g, limits, over, scan, [&](const double* p, const auto& nb) {
         return count(extremum(p, nb.data(), static_cast<uint32_t>(nb.size())) != kNotExtremum);
       });
       break;
     case Objective::MinmaxDegree:
       g.combine = Combine::Max;
-      vertex_terms(fo, false, g, [](const double*, const auto& nb) { return static_cast<double>(nb.size()); });
+      vertex_terms(fo, false, g, limits, over, scan, [](const double*, const auto& nb) { return static_cast<double>(nb.size()); });
       break;
     case Objective::MaxConvexEdges:
-      convex_edge_terms(fo, g);
+      convex_edge_terms(fo, g, limits.progress);
       break;
     case Objective::MinTotalEdgeLength: {
       // Fixed edges as one constant, each quad its diagonal's length.
@@ -177,7 +221,7 @@ FactorGraph factor_model(const FirstOrder& fo, Objective o) {
     case Objective::MinmaxVertexAreaRatio: g.combine = Combine::Max; pair_terms(vertex_pair_model(fo, ratio), g); break;
     case Objective::MinmaxVertexNormalAngle: g.combine = Combine::Max; pair_terms(vertex_pair_model(fo, angle), g); break;
   }
-  g.simplify();
+  g.simplify(limits.progress);
   return g;
 }
 

@@ -12,6 +12,7 @@
 #include "hodt/pair_measures.hpp"
 #include "hodt/region_model.hpp"
 #include "hodt/regions.hpp"
+#include "hodt/solve_options.hpp"
 
 namespace hodt {
 
@@ -212,6 +213,9 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
 }
 
 Solution k_order_solution(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options) {
+  SolveOptions checked = options;
+  checked.order = k;
+  check_options(checked);
   const auto t0 = std::chrono::steady_clock::now();
   KOrderResult r = solve_k_order(fo, o, k, options);
   if (!is_k_order(r.triangulation, fo.base, k, options.progress)) throw std::logic_error("order k result is not k-OD");

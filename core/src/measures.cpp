@@ -101,8 +101,20 @@ double edge_length(const double* a, const double* b) {
   return std::sqrt(dx * dx + dy * dy);              // sqrt is correctly rounded everywhere
 }
 
-double order_free_sum(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
+double order_free_sum(std::vector<double> values, const Progress& progress) {
+  // Sorted in runs, then merged, with progress in between: the same order as one
+  // sort (so the same sum), in steps short enough to cancel between.
+  constexpr size_t kRun = 1 << 15;
+  const size_t n = values.size();
+  for (size_t b = 0; b < n; b += kRun) {
+    std::sort(values.begin() + b, values.begin() + std::min(n, b + kRun));
+    report(progress, b, n);
+  }
+  for (size_t width = kRun; width < n; width *= 2)
+    for (size_t b = 0; b + width < n; b += 2 * width) {
+      std::inplace_merge(values.begin() + b, values.begin() + b + width, values.begin() + std::min(n, b + 2 * width));
+      report(progress, b, n);
+    }
   double s = 0;
   for (double v : values) s += v;
   return s;
@@ -140,7 +152,7 @@ double circumradius(const double* a, const double* b, const double* c) {
   return edge_length(a, b) * edge_length(b, c) * edge_length(c, a) / (2 * area2);
 }
 
-Stars build_stars(const Mesh& m) {
+Stars build_stars(const Mesh& m, const Progress& progress) {
   const uint32_t n = m.num_vertices();
   const std::vector<int32_t> start = vertex_halfedges(m);
   Stars s;
@@ -149,7 +161,9 @@ Stars build_stars(const Mesh& m) {
   s.on_hull.assign(n, 0);
   s.neighbor.reserve(m.triangles.size() + m.hull.size());
   s.triangle.reserve(m.triangles.size());
+  WorkCounter work;
   for (uint32_t v = 0; v < n; ++v) {
+    if (work.tick(64)) report(progress, v, n);
     s.offset[v] = static_cast<uint32_t>(s.neighbor.size());
     s.tri_offset[v] = static_cast<uint32_t>(s.triangle.size());
     if (start[v] < 0) continue;

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include "hodt/format.hpp"
 #include "hodt/skeleton.hpp"
+#include "hodt/term_budget.hpp"
 
 namespace hodt {
 
@@ -53,12 +55,26 @@ DegreeBounds degree_bounds(const FirstOrder& fo) {
   return b;
 }
 
-FactorGraph degree_feasibility_model(const FirstOrder& fo, uint32_t bound) {
+FactorGraph degree_feasibility_model(const FirstOrder& fo, uint32_t bound, const DpLimits& limits) {
   const DegreeStructure d = degree_structure(fo);
+  const uint32_t n = static_cast<uint32_t>(d.fixed.size());
+  // Terms of the vertices that could exceed the bound; refused if too large,
+  // before any table is allocated.
+  std::vector<TermSize> sizes(n, TermSize{0, 0});
+  for (uint32_t v = 0; v < n; ++v) {
+    const uint32_t nq = static_cast<uint32_t>(d.incidence.quads_end(v) - d.incidence.quads_begin(v));
+    if (d.fixed[v] + nq > bound) sizes[v] = TermSize{nq, static_cast<double>(nq)};
+  }
+  plan_terms(sizes, limits, OverBudget::Refuse, [&](size_t v) {
+    const double* p = fo.base.point(static_cast<uint32_t>(v));
+    return "the vertex at (" + format_number(p[0]) + ", " + format_number(p[1]) + ") has " +
+           std::to_string(sizes[v].scope) + " flippable quads around it";
+  });
   FactorGraph g;
   g.num_vars = fo.num_quads();
   g.sense = Sense::Min;
-  for (uint32_t v = 0; v < d.fixed.size(); ++v) {
+  WorkCounter work;
+  for (uint32_t v = 0; v < n; ++v) {
     const uint32_t* qs = d.incidence.quads_begin(v);
     const uint32_t nq = static_cast<uint32_t>(d.incidence.quads_end(v) - qs);
     if (d.fixed[v] + nq <= bound) continue;  // cannot exceed the bound
@@ -69,10 +85,11 @@ FactorGraph degree_feasibility_model(const FirstOrder& fo, uint32_t bound) {
       uint32_t degree = d.fixed[v];
       for (uint32_t i = 0; i < nq; ++i) degree += on_side(fo.quads[qs[i]], v, (idx >> i) & 1);
       f.table[idx] = degree > bound ? 1 : 0;
+      if (work.tick(nq + 1)) report(limits.progress, v, n);
     }
     g.factors.push_back(std::move(f));
   }
-  g.simplify();
+  g.simplify(limits.progress);
   return g;
 }
 
@@ -82,7 +99,7 @@ Choice min_max_degree_exact(const FirstOrder& fo, const DpLimits& limits) {
   uint32_t lo = b.lower, hi = b.upper;
   while (lo < hi) {
     const uint32_t mid = lo + (hi - lo) / 2;
-    const DpResult r = solve_exact(degree_feasibility_model(fo, mid), limits);
+    const DpResult r = solve_exact(degree_feasibility_model(fo, mid, limits), limits);
     if (r.value == 0) {
       hi = mid;
       best = r.choice;

@@ -95,20 +95,28 @@ double edge_term(const ObjectiveTerms& d, const Mesh& m, uint32_t u, uint32_t v,
   return d.pair(m, Tri{u, v, w}, Tri{v, u, x});
 }
 
-double evaluate_terms(Objective o, const Mesh& m) {
+double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
   const ObjectiveTerms& d = objective_terms(o);
   // Sums are added in sorted order, so that equal triangulations listed
   // differently have bit-identical totals.
   std::vector<double> terms;
   double max = 0;
+  WorkCounter work;
+  // A term's cost in elementary steps: a vertex's grows with its degree (cubic
+  // for the vertex class), pairs with their count.
+  auto step = [&](double done, double total, double units) {
+    if (work.tick(units)) report(progress, done, total);
+  };
   auto add = [&](double t) {
     if (d.combine == TermCombine::Sum) terms.push_back(t);
     else max = std::max(max, t);
   };
   if (vertex_site(d.site)) {
-    const Stars st = build_stars(m);
+    const Stars st = build_stars(m, progress);
     std::vector<Tri> tris;
     for (uint32_t v = 0; v < m.num_vertices(); ++v) {
+      const double deg = st.degree(v);
+      step(v, m.num_vertices(), 16 + deg * deg * (d.site == TermSite::VertexPair ? 4 : deg));
       if (interior_only(d.site) && st.on_hull[v]) continue;
       tris.clear();  // (only pair terms read the triangles)
       if (d.site == TermSite::VertexPair)
@@ -117,14 +125,15 @@ double evaluate_terms(Objective o, const Mesh& m) {
     }
   } else if (edge_site(d.site)) {
     for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
+      step(e, static_cast<double>(m.halfedges.size()), 32);
       const int32_t f = m.halfedges[e];
       if (f < 0 ? interior_only(d.site) : f < static_cast<int32_t>(e)) continue;
       add(edge_term(d, m, m.origin(e), m.target(e), m.apex(e), f < 0 ? kNoApex : m.apex(static_cast<uint32_t>(f))));
     }
   } else {
-    for (uint32_t t = 0; t < m.num_triangles(); ++t) add(d.triangle(m, base_triangle(m, t)));
+    for (uint32_t t = 0; t < m.num_triangles(); ++t) step(t, m.num_triangles(), 16), add(d.triangle(m, base_triangle(m, t)));
   }
-  return d.combine == TermCombine::Sum ? order_free_sum(std::move(terms)) : max;
+  return d.combine == TermCombine::Sum ? order_free_sum(std::move(terms), progress) : max;
 }
 
 }  // namespace hodt

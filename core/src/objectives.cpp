@@ -56,7 +56,7 @@ std::string objective_ids() {
 
 // Every objective's value comes from its terms (objective_terms.hpp): one
 // description read by evaluate, the region engine and the local searches.
-double evaluate(Objective o, const Mesh& m) { return evaluate_terms(o, m); }
+double evaluate(Objective o, const Mesh& m, const Progress& progress) { return evaluate_terms(o, m, progress); }
 
 std::array<double, kNumObjectives> evaluate_all(const Mesh& m) {
   std::array<double, kNumObjectives> v{};

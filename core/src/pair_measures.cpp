@@ -81,8 +81,10 @@ namespace {
 // feature of each triangle (its area, normal...) is computed once per edge or
 // star; value(fa, fb, cut) may answer anything <= cut for a pair that cannot win.
 template <class Feature, class Value>
-std::optional<CriticalPair> first_largest_pair(const Mesh& m, bool edge, Feature feature, Value value) {
+std::optional<CriticalPair> first_largest_pair(const Mesh& m, bool edge, Feature feature, Value value,
+                                               const Progress& progress) {
   std::optional<CriticalPair> best;
+  WorkCounter work;
   auto consider = [&](uint32_t s, uint32_t t, const auto& fs, const auto& ft) {
     const double v = value(fs, ft, best ? best->value : -INFINITY);
     if (!best || v > best->value) best = CriticalPair{base_triangle(m, s), base_triangle(m, t), v};
@@ -91,10 +93,11 @@ std::optional<CriticalPair> first_largest_pair(const Mesh& m, bool edge, Feature
     for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
       const int32_t f = m.halfedges[e];
       if (f > static_cast<int32_t>(e)) consider(e / 3, f / 3, feature(e / 3), feature(static_cast<uint32_t>(f) / 3));
+      if (work.tick(32)) report(progress, e, m.halfedges.size());
     }
     return best;
   }
-  const Stars st = build_stars(m);
+  const Stars st = build_stars(m, progress);
   std::vector<decltype(feature(0u))> star;
   for (uint32_t v = 0; v < m.num_vertices(); ++v) {
     const uint32_t b = st.tri_offset[v], e = st.tri_offset[v + 1];
@@ -102,24 +105,25 @@ std::optional<CriticalPair> first_largest_pair(const Mesh& m, bool edge, Feature
     for (uint32_t i = b; i < e; ++i) star.push_back(feature(st.triangle[i]));
     for (uint32_t i = b; i < e; ++i)
       for (uint32_t j = i + 1; j < e; ++j) consider(st.triangle[i], st.triangle[j], star[i - b], star[j - b]);
+    if (work.tick(16.0 * (e - b) * (e - b))) report(progress, v, m.num_vertices());
   }
   return best;
 }
 
 }  // namespace
 
-std::optional<CriticalPair> critical_pair(Objective o, const Mesh& m) {
+std::optional<CriticalPair> critical_pair(Objective o, const Mesh& m, const Progress& progress) {
   auto tri_area = [&](uint32_t t) { return area(m, base_triangle(m, t)); };
   auto ratio = [](double a, double b, double) { return area_ratio(a, b); };
   auto tri_normal = [&](uint32_t t) { return normal(m, base_triangle(m, t)); };
   auto tri = [&](uint32_t t) { return base_triangle(m, t); };
   auto circle = [&](const Tri& a, const Tri& b, double) { return pair_enclosing_circle(m, a, b); };
   switch (o) {
-    case Objective::MinmaxEdgeAreaRatio: return first_largest_pair(m, true, tri_area, ratio);
-    case Objective::MinmaxEdgeNormalAngle: return first_largest_pair(m, true, tri_normal, angle_above);
-    case Objective::MinmaxEdgeEnclosingCircle: return first_largest_pair(m, true, tri, circle);
-    case Objective::MinmaxVertexAreaRatio: return first_largest_pair(m, false, tri_area, ratio);
-    case Objective::MinmaxVertexNormalAngle: return first_largest_pair(m, false, tri_normal, angle_above);
+    case Objective::MinmaxEdgeAreaRatio: return first_largest_pair(m, true, tri_area, ratio, progress);
+    case Objective::MinmaxEdgeNormalAngle: return first_largest_pair(m, true, tri_normal, angle_above, progress);
+    case Objective::MinmaxEdgeEnclosingCircle: return first_largest_pair(m, true, tri, circle, progress);
+    case Objective::MinmaxVertexAreaRatio: return first_largest_pair(m, false, tri_area, ratio, progress);
+    case Objective::MinmaxVertexNormalAngle: return first_largest_pair(m, false, tri_normal, angle_above, progress);
     default: return std::nullopt;
   }
 }

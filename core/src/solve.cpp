@@ -1,7 +1,6 @@
 #include "hodt/solve.hpp"
 
 #include <chrono>
-#include <cmath>
 
 #include "hodt/approx.hpp"
 #include "hodt/baker.hpp"
@@ -9,10 +8,10 @@
 #include "hodt/error.hpp"
 #include "hodt/exact.hpp"
 #include "hodt/factor_models.hpp"
-#include "hodt/format.hpp"
 #include "hodt/k_order.hpp"
 #include "hodt/min_max_degree.hpp"
 #include "hodt/pair_measures.hpp"
+#include "hodt/solve_options.hpp"
 
 namespace hodt {
 
@@ -32,30 +31,36 @@ std::string method_ids() { return "brute-force, exact, approx, auto"; }
 
 namespace {
 
-// The NP-hard objectives exactly: the factor graph DP over a tree decomposition.
-Solution solve_factor_graph(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
+DpLimits dp_limits(const SolveOptions& options) {
   DpLimits limits;
   limits.max_width = options.max_width;
   limits.progress = options.progress;
+  return limits;
+}
+
+// The NP-hard objectives exactly: the factor graph DP over a tree decomposition.
+Solution solve_factor_graph(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
+  const DpLimits limits = dp_limits(options);
   Solution s;
   s.objective = objective;
   s.method = "exact";
   if (objective == Objective::MinmaxDegree) {
     s.choice = min_max_degree_exact(fo, limits);
   } else {
-    const FactorGraph g = factor_model(fo, objective);
+    const FactorGraph g = factor_model(fo, objective, limits);
     s.choice = solve_exact(g, limits).choice;
-    prefer_delaunay(g, s.choice);
+    prefer_delaunay(g, s.choice, limits.progress);
   }
   s.optimal = true;
-  s.value = evaluate(objective, triangulate(fo, s.choice));
+  s.value = evaluate(objective, triangulate(fo, s.choice), limits.progress);
   return s;
 }
 
 Solution dispatch(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
   if (options.method == Method::BruteForce) return brute_force(fo, objective, options.progress);
   // Polynomial objectives are always solved exactly (approx would only be worse).
-  if (has_polynomial_exact(objective)) return solve_polynomial(fo, objective, ExactOptions{options.trace});
+  if (has_polynomial_exact(objective))
+    return solve_polynomial(fo, objective, ExactOptions{options.trace, dp_limits(options)});
   switch (options.method) {
     case Method::Exact:
       return solve_factor_graph(fo, objective, options);
@@ -78,12 +83,14 @@ Solution dispatch(const FirstOrder& fo, Objective objective, const SolveOptions&
 }  // namespace
 
 Solution solve(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
-  if (!(options.epsilon > 0 && options.epsilon < 1))
-    throw InputError("epsilon is " + format_number(options.epsilon) + ", expected a number in (0, 1)");
-  if (options.order > 1) return k_order_solution(fo, objective, options.order, options);
+  check_options(options);
+  SolveOptions run = options;
+  run.progress = paced(options.progress, options.progress_interval_ms);
+  if (run.order > 1) return k_order_solution(fo, objective, run.order, run);
   const auto t0 = std::chrono::steady_clock::now();
-  Solution s = dispatch(fo, objective, options);
-  if (!s.critical && is_pair_objective(objective)) s.critical = critical_pair(objective, triangulate(fo, s.choice));
+  Solution s = dispatch(fo, objective, run);
+  if (!s.critical && is_pair_objective(objective))
+    s.critical = critical_pair(objective, triangulate(fo, s.choice), run.progress);
   s.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return s;
 }

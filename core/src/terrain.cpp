@@ -69,10 +69,10 @@ const Mesh& Terrain::delaunay_mesh() const {
   return *delaunay_;
 }
 
-double Terrain::delaunay_value(Objective o) const {
+double Terrain::delaunay_value(Objective o, const Progress& progress) const {
   const size_t k = static_cast<size_t>(o);
   if (!have_delaunay_value_[k]) {
-    delaunay_values_[k] = evaluate(o, fo_.base);
+    delaunay_values_[k] = evaluate(o, fo_.base, progress);
     have_delaunay_value_[k] = true;
   }
   return delaunay_values_[k];

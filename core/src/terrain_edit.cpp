@@ -131,8 +131,15 @@ void Terrain::move_point(uint32_t i, double x, double y, double z) {
 
 void Terrain::remove_point(uint32_t i) {
   check_editable(0, 0, 0, "point " + std::to_string(i));
-  const uint32_t v = vertex_of_input(i);
   auto shift = [i](uint32_t k) { return k > i ? k - 1 : k; };
+  if (i < num_input_ && std::find(input_index_.begin(), input_index_.end(), i) == input_index_.end()) {
+    // A duplicate dropped when the terrain was built: it has no vertex, so only
+    // the later points' indices change.
+    for (uint32_t& k : input_index_) k = shift(k);
+    --num_input_;
+    return;
+  }
+  const uint32_t v = vertex_of_input(i);
   std::vector<uint8_t> marked = marks_of(fo_);
   MeshEdit edit;
   if (!remove_vertex(fo_.base, v, edit)) {

@@ -4,22 +4,29 @@
 
 namespace hodt {
 
-std::optional<std::vector<uint8_t>> TwoSat::solve() const {
+std::optional<std::vector<uint8_t>> TwoSat::solve(const Progress& progress, double done, double total) const {
+  WorkCounter work;
+  work.every = 65536;  // a unit: one literal or edge visited (a few nanoseconds)
   // Only variables in some clause, renumbered in order: a free variable's literals
   // are isolated, Tarjan gives them their own components in between the others',
   // which keeps the others' order, and false (its first literal) stays false.
   std::vector<uint32_t> used;
   used.reserve(2 * clauses_.size());
   for (const Clause& c : clauses_) used.push_back(c.a >> 1), used.push_back(c.b >> 1);
+  report(progress, done, total);
   std::sort(used.begin(), used.end());
   used.erase(std::unique(used.begin(), used.end()), used.end());
+  report(progress, done, total);
   auto local = [&](uint32_t l) {
     return 2 * static_cast<uint32_t>(std::lower_bound(used.begin(), used.end(), l >> 1) - used.begin()) + (l & 1);
   };
   const uint32_t nl = 2 * static_cast<uint32_t>(used.size());
   // Implication graph in compressed rows: (a or b) gives !a -> b and !b -> a.
   std::vector<Clause> cl(clauses_.size());
-  for (size_t k = 0; k < clauses_.size(); ++k) cl[k] = {local(clauses_[k].a), local(clauses_[k].b)};
+  for (size_t k = 0; k < clauses_.size(); ++k) {
+    cl[k] = {local(clauses_[k].a), local(clauses_[k].b)};
+    if (work.tick(32)) report(progress, done, total);
+  }
   std::vector<uint32_t> start(nl + 1, 0), adj(2 * cl.size());
   for (const Clause& c : cl) ++start[(c.a ^ 1) + 1], ++start[(c.b ^ 1) + 1];
   for (uint32_t i = 0; i < nl; ++i) start[i + 1] += start[i];
@@ -31,12 +38,14 @@ std::optional<std::vector<uint8_t>> TwoSat::solve() const {
   std::vector<uint32_t> index(nl, kNone), low(nl), comp(nl, kNone), stack, call, edge;
   uint32_t next_index = 0, next_comp = 0;
   for (uint32_t root = 0; root < nl; ++root) {
+    if (work.tick()) report(progress, done, total);
     if (index[root] != kNone) continue;
     call.push_back(root);
     edge.push_back(start[root]);
     index[root] = low[root] = next_index++;
     stack.push_back(root);
     while (!call.empty()) {
+      if (work.tick()) report(progress, done, total);
       const uint32_t v = call.back();
       uint32_t& e = edge.back();
       if (e < start[v + 1]) {

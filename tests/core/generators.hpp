@@ -90,4 +90,18 @@ inline std::vector<double> cocircular_points(int n, uint64_t seed) {
   return p;
 }
 
+// A wheel: a centre and n - 1 points on a circle around it. The centre sees every
+// spoke, so about a third of the points' quads meet at one vertex (its terms grow as
+// 2^quads). Heights alternate up and down around the circle (the centre is mixed
+// whatever the choice) or, with cone, fall away from the centre (it is convex, and
+// classifying it takes every triple of neighbours).
+inline std::vector<double> wheel_points(int n, bool cone = false) {
+  std::vector<double> p = {0, 0, cone ? 1.0 : 0.0};
+  for (int i = 0; i < n - 1; ++i) {
+    const double a = 6.283185307179586 * i / (n - 1);
+    p.insert(p.end(), {std::cos(a), std::sin(a), cone ? 0.0 : i % 2 ? 1.0 : -1.0});
+  }
+  return p;
+}
+
 }  // namespace hodt::test

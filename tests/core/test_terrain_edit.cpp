@@ -117,3 +117,27 @@ TEST_CASE("live edits: errors name what is wrong and change nothing") {
   CHECK(validate(three.structure().base) == "");
   CHECK(three.structure().base.point(three.structure().base.num_vertices() - 1)[0] != 2);
 }
+
+TEST_CASE("live edits: a point dropped as a duplicate can be removed, and later indices shift") {
+  // Points 1 and 3 are at the same (x, y): dedupe keeps point 1.
+  Terrain t = Terrain::from_points({0, 0, 0, 1, 0, 1, 0, 1, 2, 1, 0, 3, 1, 1, 4}, Dedupe::KeepFirst);
+  REQUIRE(t.num_input_points() == 5);
+  REQUIRE(t.structure().base.num_vertices() == 4);
+  const auto before = triangles_in_input(t);
+  t.remove_point(3);
+  CHECK(t.num_input_points() == 4);
+  CHECK(t.structure().base.num_vertices() == 4);
+  // The same triangles, with point 4 now point 3.
+  std::set<std::array<uint32_t, 3>> shifted;
+  for (auto tri : before) {
+    for (uint32_t& v : tri) v = v > 3 ? v - 1 : v;
+    std::rotate(tri.begin(), std::min_element(tri.begin(), tri.end()), tri.end());
+    shifted.insert(tri);
+  }
+  CHECK(triangles_in_input(t) == shifted);
+  // The terrain is the one built from the remaining points.
+  Terrain fresh = Terrain::from_points({0, 0, 0, 1, 0, 1, 0, 1, 2, 1, 1, 4});
+  CHECK(triangles_in_input(t) == triangles_in_input(fresh));
+  t.remove_point(0);  // and a real vertex after it
+  CHECK(t.num_input_points() == 3);
+}

@@ -12,6 +12,12 @@ export class HodtError extends Error {
 export class InputError extends HodtError {
   override name = 'InputError';
 }
+/** A call on a terrain made from inside the progress callback of its own solve():
+ * the core is still using the terrain, so changing or freeing it then (dispose,
+ * addPoint, movePoint, removePoint) or starting another solve is refused. */
+export class BusyError extends InputError {
+  override name = 'BusyError';
+}
 /** A valid request the library refuses: too many quads for brute force, a tree
  * decomposition wider than the memory cap, out of memory. */
 export class LimitError extends HodtError {
@@ -31,6 +37,18 @@ export class CancelledError extends HodtError {
 /** A bug in hodt: please report it with the input. */
 export class InternalError extends HodtError {
   override name = 'InternalError';
+}
+
+/** A value as a message shows it: strings quoted, BigInts with their n. */
+export function describeValue(value: unknown): string {
+  if (typeof value === 'string') return `'${value}'`;
+  if (typeof value === 'bigint') return `${value}n`;
+  if (typeof value === 'symbol') return value.toString();
+  try {
+    return String(value);
+  } catch {
+    return Object.prototype.toString.call(value);  // an object without a usable toString
+  }
 }
 
 /** Turns an error thrown by the wasm module into the matching typed error. */

@@ -8,14 +8,14 @@
  *
  * Reference: docs/api.md.
  */
-import { guard } from './errors.js';
+import { describeValue, guard, InputError } from './errors.js';
 import { loadModule, type LoadOptions } from './load.js';
 import type { ObjectiveInfo } from './objectives.js';
 import { type PointInput, toXyz } from './points.js';
 import { Terrain } from './terrain.js';
 import type { HodtModule } from './wasm/hodt.mjs';
 
-export { CancelledError, HodtError, InputError, InternalError, LimitError } from './errors.js';
+export { BusyError, CancelledError, HodtError, InputError, InternalError, LimitError } from './errors.js';
 export { OBJECTIVE_IDS, type Method, type ObjectiveId, type ObjectiveInfo, type ObjectiveValues } from './objectives.js';
 export * from './terrain.js';
 export type { LoadOptions } from './load.js';
@@ -56,8 +56,12 @@ export class Hodt {
   /** Builds the Delaunay triangulation of the points and its first order
    * structure. The points are copied; dispose() the terrain when done. */
   terrain(points: PointInput, options: TerrainOptions = {}): Terrain {
+    const { dedupe = 'error' } = options ?? {};
+    if (dedupe !== 'error' && dedupe !== 'first') {
+      throw new InputError(`dedupe is ${describeValue(dedupe)}, expected 'error' or 'first'`);
+    }
     const xyz = toXyz(points);
-    return guard(() => new Terrain(this.#module.fromPoints(xyz, options.dedupe === 'first'), xyz.slice()));
+    return guard(() => new Terrain(this.#module.fromPoints(xyz, dedupe === 'first'), xyz.slice()));
   }
 
   /** A singly-flippable triangulation: your triangles (point indices, three per

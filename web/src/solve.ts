@@ -1,4 +1,4 @@
-import { CancelledError, InputError, toHodtError } from './errors.js';
+import { CancelledError, describeValue, InputError, toHodtError } from './errors.js';
 import type { Method, ObjectiveId } from './objectives.js';
 import type { RawSolution, RawTerrain } from './wasm/hodt.mjs';
 
@@ -20,7 +20,7 @@ export interface SolveOptions {
    * triangulation of at most 30 points at order k). */
   method?: Method;
   /** Approximation schemes: a value within a factor (1 - epsilon) of the optimum,
-   * in (0, 1). Default 0.25. */
+   * in (0, 1), checked at every order. Default 0.25. */
   epsilon?: number;
   /** Order k of the Delaunay triangulations to search (every triangle's
    * circumcircle holds at most k points), 1 to 16. Default 1: the 2^m first order
@@ -48,19 +48,19 @@ function aborted(signal: AbortSignal): CancelledError {
   return new CancelledError('aborted', { cause: signal.reason });
 }
 
-/** Throws InputError unless order is an integer from 1 to 16. */
-export function checkOrder(order: unknown): asserts order is number {
-  if (typeof order !== 'number' || !Number.isInteger(order) || order < 1 || order > 16) {
-    throw new InputError(`order is ${String(order)}, expected an integer from 1 to 16`);
-  }
+/** Throws InputError unless value is a number. Only the type: the core checks
+ * the value of every option (its range, the method an order has), the same way
+ * for the CLI and this API. */
+export function checkNumber(name: string, value: unknown): asserts value is number {
+  if (typeof value !== 'number') throw new InputError(`${name} is ${describeValue(value)}, expected a number`);
 }
 
 function checkOptions(objective: unknown, options: SolveOptions): void {
-  if (typeof objective !== 'string') throw new InputError(`objective is ${String(objective)}, expected an objective id`);
+  if (typeof objective !== 'string') throw new InputError(`objective is ${describeValue(objective)}, expected an objective id`);
   const { method = 'auto', epsilon = 0.25, order = 1 } = options;
-  if (typeof method !== 'string') throw new InputError(`method is ${String(method)}, expected brute-force, exact, approx or auto`);
-  if (typeof epsilon !== 'number') throw new InputError(`epsilon is ${String(epsilon)}, expected a number in (0, 1)`);
-  checkOrder(order);
+  if (typeof method !== 'string') throw new InputError(`method is ${describeValue(method)}, expected brute-force, exact, approx or auto`);
+  checkNumber('epsilon', epsilon);
+  checkNumber('order', order);
 }
 
 /** Runs the raw solver with checked options, progress and cancellation. */

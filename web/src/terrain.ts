@@ -1,9 +1,9 @@
 // Terrain implements Disposable: make its declarations compile in projects whose
 // lib lacks it (TypeScript >= 5.2 knows this lib; it only adds types).
 /// <reference lib="esnext.disposable" preserve="true" />
-import { guard, InputError } from './errors.js';
+import { BusyError, describeValue, guard, InputError } from './errors.js';
 import { type ObjectiveId, type ObjectiveValues, toValues } from './objectives.js';
-import { checkOrder, type SolveOptions, solveRaw } from './solve.js';
+import { checkNumber, type RawResult, type SolveOptions, solveRaw } from './solve.js';
 import type { RawMeasures, RawTerrain } from './wasm/hodt.mjs';
 
 /** One byte per flippable quad: 0 keeps the Delaunay diagonal, 1 flips it. */
@@ -117,10 +117,15 @@ export interface TerrainStats {
  * dispose() when done, or declare it with `using`. Every array it returns is a new
  * copy that you own (never a view of wasm memory), and every point index refers to
  * the points as you gave them.
+ *
+ * While solve() runs, its progress callback may read the terrain (the solver only
+ * reads it too), but changing it (addPoint, movePoint, removePoint), freeing it
+ * (dispose) or starting another solve throws BusyError.
  */
 export class Terrain implements Disposable {
   #raw: RawTerrain | null;
   #input: Float64Array;
+  #solving = false;  // a solve() runs: the core holds references into the terrain
 
   /** @internal use Hodt.terrain() or Hodt.fromTriangulation() */
   constructor(raw: RawTerrain, input: Float64Array) {
@@ -131,6 +136,13 @@ export class Terrain implements Disposable {
   get #handle(): RawTerrain {
     if (!this.#raw) throw new InputError('this terrain was disposed');
     return this.#raw;
+  }
+  // The handle for a call that changes or frees the terrain or starts a solve:
+  // from a progress callback, it would pull the terrain from under the running
+  // solve (memory freed or changed while the core uses it).
+  #idle(method: string): RawTerrain {
+    if (this.#solving) throw new BusyError(`terrain is busy: ${method} called from inside a progress callback of solve()`);
+    return this.#handle;
   }
 
   /** Number of points you gave. */
@@ -187,7 +199,8 @@ export class Terrain implements Disposable {
    * fewer than 3 or only collinear points left) and then changes nothing.
    */
   addPoint(x: number, y: number, z: number): number {
-    const raw = this.#handle;
+    const raw = this.#idle('addPoint');
+    checkCoordinates(this.#input.length / 3, x, y, z);
     const i = guard(() => raw.addPoint(x, y, z));
     const grown = new Float64Array(this.#input.length + 3);
     grown.set(this.#input);
@@ -197,14 +210,19 @@ export class Terrain implements Disposable {
   }
   /** Moves point `index` to (x, y, z); see addPoint. */
   movePoint(index: number, x: number, y: number, z: number): void {
-    const raw = this.#handle;
-    guard(() => raw.movePoint(checkIndex(index, this.#input.length / 3), x, y, z));
+    const raw = this.#idle('movePoint');
+    checkIndex(index, this.#input.length / 3);
+    checkCoordinates(index, x, y, z);
+    guard(() => raw.movePoint(index, x, y, z));
     this.#input[3 * index] = x, this.#input[3 * index + 1] = y, this.#input[3 * index + 2] = z;
   }
-  /** Removes point `index`; later points' indices go down by one. See addPoint. */
+  /** Removes point `index`; later points' indices go down by one. See addPoint.
+   * A point dropped as a duplicate (`dedupe: 'first'`) can be removed too: only
+   * the indices change. */
   removePoint(index: number): void {
-    const raw = this.#handle;
-    guard(() => raw.removePoint(checkIndex(index, this.#input.length / 3)));
+    const raw = this.#idle('removePoint');
+    checkIndex(index, this.#input.length / 3);
+    guard(() => raw.removePoint(index));
     const shrunk = new Float64Array(this.#input.length - 3);
     shrunk.set(this.#input.subarray(0, 3 * index));
     shrunk.set(this.#input.subarray(3 * index + 3), 3 * index);
@@ -261,8 +279,14 @@ export class Terrain implements Disposable {
    * CancelledError (see SolveOptions.signal and .progress).
    */
   solve(objective: ObjectiveId, options: SolveOptions = {}): Solution {
-    const raw = this.#handle;
-    const s = solveRaw(raw, objective, options);
+    const raw = this.#idle('solve');
+    let s: RawResult;
+    this.#solving = true;
+    try {
+      s = solveRaw(raw, objective, options);
+    } finally {
+      this.#solving = false;
+    }
     const triangles = s.triangles ?? guard(() => raw.triangulation(s.choice).triangles);
     return {
       objective: s.objective as ObjectiveId,
@@ -292,7 +316,7 @@ export class Terrain implements Disposable {
   /** The CLI's `stats` document; with an order k, also the numbers of useful k-OD
    * edges and triangles (like `hodt stats --order K`). */
   stats(order?: number): TerrainStats {
-    if (order !== undefined) checkOrder(order);
+    if (order !== undefined) checkNumber('order', order);
     const raw = this.#handle;
     return guard(() => JSON.parse(raw.statsJson(order ?? 0)) as TerrainStats);
   }
@@ -300,7 +324,7 @@ export class Terrain implements Disposable {
    * in some triangulation whose triangles' circumcircles hold at most k points
    * each (order 1: the Delaunay edges plus the quads' other diagonals). */
   usefulEdges(order: number): Uint32Array {
-    checkOrder(order);
+    checkNumber('order', order);
     const raw = this.#handle;
     return guard(() => raw.usefulEdges(order));
   }
@@ -308,14 +332,14 @@ export class Terrain implements Disposable {
    * whose circumcircle holds at most k points and whose three edges are useful
    * order-k edges. */
   usefulTriangles(order: number): Uint32Array {
-    checkOrder(order);
+    checkNumber('order', order);
     const raw = this.#handle;
     return guard(() => raw.usefulTriangles(order));
   }
 
   /** Frees the wasm memory. Idempotent; any other use afterwards throws InputError. */
   dispose(): void {
-    this.#raw?.delete();
+    if (this.#raw) this.#idle('dispose').delete();
     this.#raw = null;
   }
   /** Same as dispose(), for `using terrain = hodt.terrain(points)`. */
@@ -329,10 +353,20 @@ export class Terrain implements Disposable {
 }
 
 // embind would truncate or wrap a bad index; name it instead.
-function checkIndex(index: number, count: number): number {
+function checkIndex(index: unknown, count: number): asserts index is number {
+  if (typeof index !== 'number') throw new InputError(`point index is ${describeValue(index)}, expected an integer`);
   if (!Number.isInteger(index) || index < 0 || index >= count)
     throw new InputError(`point ${index} is out of range (${count} points)`);
-  return index;
+}
+
+// embind throws an untyped TypeError for a non-number (a BigInt, a string):
+// name the coordinate as the core names a NaN one.
+function checkCoordinates(point: number, x: unknown, y: unknown, z: unknown): void {
+  const xyz = { x, y, z };
+  for (const axis of ['x', 'y', 'z'] as const) {
+    const v = xyz[axis];
+    if (typeof v !== 'number') throw new InputError(`point ${point}: ${axis} is ${describeValue(v)}, expected a finite number`);
+  }
 }
 
 /** out[index[v]] = values[v]: per-vertex values into point order. */

@@ -7,6 +7,11 @@
 //    k fixed edges, so its degree is at most twice its fixed degree, and the largest
 //    fixed degree is a lower bound), and the result reports that lower bound.
 // Each is followed by a local search that can only improve the value.
+// Within budget (DpLimits), always: vertex terms too large to tabulate are relaxed
+// (counted at their best in the bound), a thick layer too wide for the DP falls
+// back to the local search from Delaunay with every term at its best as the bound,
+// and a degree test too large keeps the last proven lower bound. The value is
+// always measured on the returned triangulation, the bound always certified.
 #pragma once
 #include "hodt/solution.hpp"
 #include "hodt/solve.hpp"

@@ -20,7 +20,7 @@ namespace hodt {
 
 // Layer of each quad: the smallest depth of its corners, where depth is the
 // number of Delaunay edges from the hull (vertex BFS): an outerplanarity peeling.
-std::vector<uint32_t> quad_layers(const FirstOrder& fo);
+std::vector<uint32_t> quad_layers(const FirstOrder& fo, const Progress& progress = {});
 
 struct BakerShift {
   uint32_t shift;
@@ -53,6 +53,6 @@ bool improve_locally(const FactorGraph& g, Choice& choice, const Progress& progr
 
 // Reverts flipped quads to their Delaunay diagonal, one by one, whenever that does
 // not make the value worse (sum graphs): the same value with fewer flips.
-void prefer_delaunay(const FactorGraph& g, Choice& choice);
+void prefer_delaunay(const FactorGraph& g, Choice& choice, const Progress& progress = {});
 
 }  // namespace hodt

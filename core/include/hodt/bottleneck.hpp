@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hodt/first_order.hpp"
+#include "hodt/progress.hpp"
 #include "hodt/skeleton.hpp"
 
 namespace hodt {
@@ -44,11 +45,11 @@ struct BottleneckResult {
 
 // Builds a model: a pair measure evaluated on triangles (vertex triples).
 template <class Measure>
-BottleneckModel edge_pair_model(const FirstOrder& fo, Measure measure);
+BottleneckModel edge_pair_model(const FirstOrder& fo, Measure measure, const Progress& progress = {});
 template <class Measure>
-BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure);
+BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure, const Progress& progress = {});
 
-BottleneckResult solve_bottleneck(const BottleneckModel& model);
+BottleneckResult solve_bottleneck(const BottleneckModel& model, const Progress& progress = {});
 
 // Models are assembled term by term; terms over the same quads are merged (max).
 // Pruned, a model keeps only values above its floor: every candidate threshold is
@@ -63,7 +64,7 @@ class BottleneckBuilder {
   void unary(uint32_t q, double v0, double v1);
   // v[x_q + 2 * x_r], q != r
   void binary(uint32_t q, uint32_t r, const double v[4]);
-  BottleneckModel finish();
+  BottleneckModel finish(const Progress& progress = {});
 
  private:
   bool below_floor(const double* v, int n) const;

@@ -11,6 +11,9 @@ namespace hodt {
 template <class Measure>
 constexpr bool kTakesCut = std::is_invocable_v<Measure&, const Tri&, const Tri&, double>;
 
+// Progress: a pair measured costs about this many work units (WorkCounter).
+constexpr double kMeasureWork = 32;
+
 template <class Measure>
 double measure_above(Measure& measure, const Tri& s, const Tri& t, double cut) {
   if constexpr (kTakesCut<Measure>) return measure(s, t, cut);
@@ -22,14 +25,17 @@ double measure_above(Measure& measure, const Tri& s, const Tri& t, double cut) {
 // gives a term over that quad and the quad (if any) on the other side; a quad's
 // own diagonal gives a unary term. The floor comes first, to prune the rest.
 template <class Measure>
-BottleneckModel edge_pair_model(const FirstOrder& fo, Measure measure) {
+BottleneckModel edge_pair_model(const FirstOrder& fo, Measure measure, const Progress& progress) {
   const Mesh& m = fo.base;
   BottleneckBuilder b(fo.num_quads(), kTakesCut<Measure>);
+  WorkCounter work;
+  const double total = 2.0 * m.halfedges.size() + fo.num_quads();
   auto fixed = [&](uint32_t e) { return fo.quad_of_triangle[e / 3] < 0; };
   for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
     const int32_t f = m.halfedges[e];
     if (f > static_cast<int32_t>(e) && fixed(e) && fixed(static_cast<uint32_t>(f)))
       b.constant(measure_above(measure, base_triangle(m, e / 3), base_triangle(m, static_cast<uint32_t>(f) / 3), b.floor()));
+    if (work.tick(kMeasureWork)) report(progress, e, total);
   }
   const std::vector<uint8_t> diagonal = fo.diagonal_mask();
   for (uint32_t q = 0; q < fo.num_quads(); ++q) {
@@ -40,8 +46,10 @@ BottleneckModel edge_pair_model(const FirstOrder& fo, Measure measure) {
     for (int x = 0; x < 2; ++x)
       v[x] = measure_above(measure, Tri{t[x][0], t[x][1], t[x][2]}, Tri{t[x][3], t[x][4], t[x][5]}, b.floor());
     b.unary(q, v[0], v[1]);
+    if (work.tick(2 * kMeasureWork)) report(progress, m.halfedges.size() + q, total);
   }
   for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
+    if (work.tick(4 * kMeasureWork)) report(progress, m.halfedges.size() + fo.num_quads() + e, total);
     const int32_t f = m.halfedges[e];
     if (f < static_cast<int32_t>(e) || diagonal[e] || (fixed(e) && fixed(static_cast<uint32_t>(f)))) continue;
     const Side L = side_of(fo, e), R = side_of(fo, static_cast<uint32_t>(f));
@@ -58,16 +66,18 @@ BottleneckModel edge_pair_model(const FirstOrder& fo, Measure measure) {
       b.binary(static_cast<uint32_t>(L.quad), static_cast<uint32_t>(R.quad), v);
     }
   }
-  return b.finish();
+  return b.finish(progress);
 }
 
 // Vertex-adjacent pairs: all pairs of distinct triangles around each vertex. The
 // floor (pairs of fixed triangles) comes first, to prune the rest.
 template <class Measure>
-BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure) {
+BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure, const Progress& progress) {
   const Mesh& m = fo.base;
   const VertexIncidence vi = vertex_incidence(fo);
   BottleneckBuilder b(fo.num_quads(), kTakesCut<Measure>);
+  WorkCounter work;
+  const double total = 2.0 * m.num_vertices();
   std::vector<Tri> fixed;
   auto fixed_at = [&](uint32_t v) {
     fixed.clear();
@@ -77,6 +87,7 @@ BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure) {
     fixed_at(v);
     for (size_t i = 0; i < fixed.size(); ++i)
       for (size_t j = i + 1; j < fixed.size(); ++j) b.constant(measure_above(measure, fixed[i], fixed[j], b.floor()));
+    if (work.tick(kMeasureWork * (1 + fixed.size() * fixed.size() / 2.0))) report(progress, v, total);
   }
   const double cut = b.floor();
   auto pair = [&](const Tri& s, const Tri& t) { return measure_above(measure, s, t, cut); };
@@ -113,9 +124,10 @@ BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure) {
           }
         b.binary(qs[i], qs[j], w);
       }
+      if (work.tick(kMeasureWork * 4 * (fixed.size() + nq))) report(progress, m.num_vertices() + v, total);
     }
   }
-  return b.finish();
+  return b.finish(progress);
 }
 
 }  // namespace hodt

@@ -14,7 +14,8 @@ constexpr uint32_t kBruteForceMaxQuads = 24;
 // Optimum over all 2^m choices (Gray code order: one flip per step). Among optimal
 // choices it returns one with the fewest flips, the first in Gray code order.
 // Throws LimitError if m > kBruteForceMaxQuads.
-// progress (if given) is called every 1024 triangulations; returning false cancels.
+// progress (if given) is called for every triangulation (pace it: paced());
+// returning false cancels.
 Solution brute_force(const FirstOrder& fo, Objective objective, const Progress& progress = {});
 
 // The value of every objective for every choice (index = choice bits, quad 0 the

@@ -1,11 +1,13 @@
 // Exact polynomial algorithms (paper, Section 2, and reference [10]).
 #pragma once
+#include "hodt/factor_graph.hpp"
 #include "hodt/solution.hpp"
 
 namespace hodt {
 
 struct ExactOptions {
   bool trace = false;  // record the bottleneck search's thresholds
+  DpLimits limits;     // progress, and the budget of the exact engine where one runs
 };
 
 // True for the objectives with a polynomial exact algorithm here.

@@ -30,7 +30,7 @@
 
 namespace hodt {
 
-Choice fewest_local_minima(const FirstOrder& fo);
+Choice fewest_local_minima(const FirstOrder& fo, const Progress& progress = {});
 Choice fewest_local_extrema(const FirstOrder& fo, const DpLimits& limits = {});
 
 }  // namespace hodt

@@ -11,6 +11,7 @@
 
 #include "hodt/first_order.hpp"
 #include "hodt/objectives.hpp"
+#include "hodt/progress.hpp"
 
 namespace hodt {
 
@@ -28,18 +29,26 @@ struct FactorGraph {
   Combine combine = Combine::Sum;
   double constant = 0;
   std::vector<Factor> factors;
+  // Terms left out because they were too large to tabulate (DpLimits): the graph
+  // is then a relaxation, and a bound must count each of them at its best value.
+  uint32_t relaxed = 0;
 
   double evaluate(const Choice& x) const;
   // Drops from each factor the variables its table does not depend on, and folds
   // constant factors into `constant`: fewer interactions, narrower decompositions.
-  void simplify();
+  void simplify(const Progress& progress = {});
 };
 
-// Progress: called now and then with (done, total) work units; return false to cancel.
-using Progress = std::function<bool(double done, double total)>;
-
+// The exact engine's budgets, all checked before the memory or time is spent.
 struct DpLimits {
   uint32_t max_width = 20;  // largest bag minus one; a bag's table has 2^(width+1) entries
+  // All tables of one run together (messages and back-pointers): 512 MiB.
+  double max_table_bytes = 512.0 * 1024 * 1024;
+  // A local term (factor) is tabulated over at most this many quads: 2^20 entries.
+  uint32_t max_term_scope = 20;
+  // Tabulating one term: at most about this many elementary steps (predicate
+  // tests), 2^28: a second or two.
+  double max_term_work = 268435456.0;
   Progress progress;
 };
 
@@ -51,8 +60,11 @@ struct Decomposition {
   uint32_t num_components = 0;
   uint32_t width = 0;                        // max bag size - 1 (0 if no variables)
   std::vector<uint32_t> component_width;
+  bool complete = true;                      // false: stopped at a bag wider than asked
 };
-Decomposition decompose(const FactorGraph& g);
+// Stops early (complete = false) once a bag is wider than max_width: the fill-in
+// of a wide component would cost far more memory and time than the answer needs.
+Decomposition decompose(const FactorGraph& g, uint32_t max_width = UINT32_MAX, const Progress& progress = {});
 
 struct DpResult {
   Choice choice;
@@ -61,8 +73,9 @@ struct DpResult {
 };
 
 // The exact optimum. Throws LimitError naming the width if a component's
-// decomposition is wider than limits.max_width (before using the memory), and
-// Cancelled if progress returns false.
+// decomposition is wider than limits.max_width, or the tables would need more
+// than limits.max_table_bytes (before using the memory), and Cancelled if
+// progress returns false.
 DpResult solve_exact(const FactorGraph& g, const DpLimits& limits = {});
 
 }  // namespace hodt

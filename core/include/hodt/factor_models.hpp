@@ -6,9 +6,15 @@
 #include "hodt/factor_graph.hpp"
 #include "hodt/first_order.hpp"
 #include "hodt/objectives.hpp"
+#include "hodt/term_budget.hpp"
 
 namespace hodt {
 
-FactorGraph factor_model(const FirstOrder& fo, Objective o);
+// A vertex term has 2^(quads at the vertex) entries: terms over the budget of
+// limits (max_term_scope, max_term_work) are refused with a LimitError naming the
+// vertex, or with OverBudget::Relax left out (counted in FactorGraph::relaxed).
+// limits.progress is called while the tables are filled.
+FactorGraph factor_model(const FirstOrder& fo, Objective o, const DpLimits& limits = {},
+                         OverBudget over = OverBudget::Refuse);
 
 }  // namespace hodt

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "hodt/mesh.hpp"
+#include "hodt/progress.hpp"
 
 namespace hodt {
 
@@ -55,7 +56,7 @@ double circumradius(const double* a, const double* b, const double* c);
 double edge_length(const double* a, const double* b);
 // A sum that does not depend on the order of its terms (sorted, then added), so
 // that equal triangulations listed differently have bit-identical totals.
-double order_free_sum(std::vector<double> values);
+double order_free_sum(std::vector<double> values, const Progress& progress = {});
 
 // Neighbours of every vertex, counterclockwise, in compressed rows.
 struct Stars {
@@ -66,7 +67,7 @@ struct Stars {
   std::vector<uint8_t> on_hull;
   uint32_t degree(uint32_t v) const { return offset[v + 1] - offset[v]; }
 };
-Stars build_stars(const Mesh& mesh);
+Stars build_stars(const Mesh& mesh, const Progress& progress = {});
 
 // Per-element measures of a triangulation, as arrays (what the API exposes).
 struct Measures {

@@ -15,10 +15,12 @@ struct DegreeBounds {
 };
 DegreeBounds degree_bounds(const FirstOrder& fo);
 
-// The optimal choice; throws LimitError if a feasibility test is too wide.
+// The optimal choice; throws LimitError if a feasibility test is over the
+// budget of limits (a vertex term or a decomposition too large).
 Choice min_max_degree_exact(const FirstOrder& fo, const DpLimits& limits);
 
-// The feasibility model for bound D (exposed for tests and the teaching view).
-FactorGraph degree_feasibility_model(const FirstOrder& fo, uint32_t bound);
+// The feasibility model for bound D (exposed for tests and the teaching view);
+// throws LimitError naming the vertex if a term is over the budget of limits.
+FactorGraph degree_feasibility_model(const FirstOrder& fo, uint32_t bound, const DpLimits& limits = {});
 
 }  // namespace hodt

@@ -9,6 +9,7 @@
 
 #include "hodt/mesh.hpp"
 #include "hodt/objectives.hpp"
+#include "hodt/progress.hpp"
 #include "hodt/skeleton.hpp"
 
 namespace hodt {
@@ -80,7 +81,8 @@ double edge_term(const ObjectiveTerms& d, const Mesh& points, uint32_t u, uint32
 // The identity of the combination (0: every term is >= 0, and a max over nothing is 0).
 inline double combine(TermCombine c, double a, double b) { return c == TermCombine::Sum ? a + b : (a > b ? a : b); }
 
-// The objective's value on a triangulation, from its terms alone.
-double evaluate_terms(Objective o, const Mesh& mesh);
+// The objective's value on a triangulation, from its terms alone (progress: now
+// and then, with the elements done; false cancels).
+double evaluate_terms(Objective o, const Mesh& mesh, const Progress& progress = {});
 
 }  // namespace hodt

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "hodt/mesh.hpp"
+#include "hodt/progress.hpp"
 
 namespace hodt {
 
@@ -48,6 +49,8 @@ inline bool better(Sense s, double a, double b) { return s == Sense::Min ? a < b
 // The value of every objective on one triangulation (max over an empty set of
 // pairs is 0). Indexed by static_cast<size_t>(Objective).
 std::array<double, kNumObjectives> evaluate_all(const Mesh& mesh);
-double evaluate(Objective o, const Mesh& mesh);
+// One objective's value; progress (solvers measure their result) is called
+// along the way and may cancel.
+double evaluate(Objective o, const Mesh& mesh, const Progress& progress = {});
 
 }  // namespace hodt

@@ -21,6 +21,6 @@ double pair_enclosing_circle(const Mesh& m, const Tri& s, const Tri& t);
 // Is the objective a max over pairs (edge- or vertex-adjacent)?
 bool is_pair_objective(Objective o);
 // The pair of triangles attaining a pair objective's value on a triangulation.
-std::optional<CriticalPair> critical_pair(Objective o, const Mesh& m);
+std::optional<CriticalPair> critical_pair(Objective o, const Mesh& m, const Progress& progress = {});
 
 }  // namespace hodt

@@ -16,16 +16,19 @@ struct SolveOptions {
   bool trace = false;     // record the bottleneck search (min-max pair objectives)
   uint32_t max_width = 20;  // exact engine: widest tree decomposition allowed (memory cap)
   Progress progress;      // long runs: called with (done, total); false cancels
+  // progress is called at least at every phase and at most every this often
+  // (paced(); 0: at every progress point of the solvers, for tests).
+  double progress_interval_ms = kProgressIntervalMs;
 };
 
 const char* method_id(Method m);
 std::optional<Method> parse_method(std::string_view id);
 std::string method_ids();  // "brute-force, exact, approx, auto"
 
-// Solves objective over the first order triangulations of fo (over the k-th
-// order ones for options.order = k > 1: the result then carries its mesh). Throws LimitError
-// when the method cannot handle the instance (with the reason) and InputError for
-// bad options. The delaunay_value of the result is filled in.
+// Solves objective over the first order triangulations of fo (order k: the k-th
+// order ones, k_order.hpp). Throws LimitError when the method cannot handle the
+// instance (with the reason), InputError for bad options (check_options) and
+// Cancelled when progress says stop. The delaunay_value of the result is filled in.
 Solution solve(const FirstOrder& fo, Objective objective, const SolveOptions& options);
 
 }  // namespace hodt

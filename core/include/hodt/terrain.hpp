@@ -31,6 +31,8 @@ class Terrain {
   // index), remove_point shifts later indices down by one, like splicing an array.
   // Bad values, an index out of range, a position taken by another point, or too
   // few / collinear points left throw InputError and leave the terrain unchanged.
+  // Removing a point dropped as a duplicate (Dedupe::KeepFirst) only shifts the
+  // indices; moving one is refused.
   uint32_t add_point(double x, double y, double z);
   void move_point(uint32_t i, double x, double y, double z);
   void remove_point(uint32_t i);
@@ -48,8 +50,9 @@ class Terrain {
   // Checks a choice from outside (length m, bytes 0/1); throws InputError.
   void check_choice(const Choice& choice) const;
   const std::array<double, kNumObjectives>& delaunay_values() const;
-  // One objective's value on the Delaunay (base) triangulation, computed once.
-  double delaunay_value(Objective o) const;
+  // One objective's value on the Delaunay (base) triangulation, computed once
+  // (progress as for a solve, which measures it too).
+  double delaunay_value(Objective o, const Progress& progress = {}) const;
   // The Delaunay triangulation of the points (the base, unless the user gave one).
   const Mesh& delaunay_mesh() const;
 

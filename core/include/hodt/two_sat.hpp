@@ -5,6 +5,8 @@
 #include <optional>
 #include <vector>
 
+#include "hodt/progress.hpp"
+
 namespace hodt {
 
 class TwoSat {
@@ -20,8 +22,9 @@ class TwoSat {
     else add_clause(lit(v, !a), lit(static_cast<uint32_t>(w), !b));
   }
   size_t num_clauses() const { return clauses_.size(); }
-  // A satisfying assignment (one byte per variable), or nothing.
-  std::optional<std::vector<uint8_t>> solve() const;
+  // A satisfying assignment (one byte per variable), or nothing. progress is
+  // called with (done, total) as given, to pace a long search.
+  std::optional<std::vector<uint8_t>> solve(const Progress& progress = {}, double done = 0, double total = 1) const;
 
  private:
   struct Clause { uint32_t a, b; };

@@ -46,6 +46,7 @@ export interface RawTerrain {
   delaunayValues(): Float64Array;
   evaluateTriangles(triangles: Uint32Array): Float64Array;
   measuresOfTriangles(triangles: Uint32Array): RawMeasures;
+  /** order >= 2: with the triangles (not a choice of diagonals). */
   solve(
     objective: string,
     method: string,

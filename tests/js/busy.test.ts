@@ -1,0 +1,93 @@
+// Calls on a terrain from inside the progress callback of its own solve(): the core
+// is using the terrain, so changing it, freeing it or starting another solve is
+// refused with BusyError (never a use after free or a change under the solver);
+// reads are allowed, and other terrains are free to use.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { BusyError, type Hodt, InputError, loadHodt, type Terrain } from '../../web/src/index.js';
+
+let hodt: Hodt;
+let other: Terrain;
+
+function randomPoints(n: number, seed: number): Float64Array {
+  let s = seed;
+  const r = () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
+  return Float64Array.from({ length: 3 * n }, r);
+}
+
+beforeAll(async () => {
+  hodt = await loadHodt();
+  other = hodt.terrain(randomPoints(100, 2));
+});
+afterAll(() => other.dispose());
+
+// A solve that calls its progress callback (the exact DP reports at its start).
+const solveWith = (t: Terrain, progress: () => void) => t.solve('max-convex-edges', { method: 'exact', progress });
+
+const busy = (method: string) => `terrain is busy: ${method} called from inside a progress callback of solve()`;
+
+describe('changing or freeing a terrain from its own progress callback', () => {
+  const calls: [string, (t: Terrain) => unknown][] = [
+    ['dispose', (t) => t.dispose()],
+    ['addPoint', (t) => t.addPoint(0.5, 0.5, 1)],
+    ['movePoint', (t) => t.movePoint(3, 0.25, 0.75, 1)],
+    ['removePoint', (t) => t.removePoint(3)],
+    ['solve', (t) => t.solve('min-local-minima')],
+  ];
+  it.each(calls)('%s throws BusyError, and the solve stops with it', (method, call) => {
+    const t = hodt.terrain(randomPoints(400, 7));
+    const quads = t.numQuads;
+    let error: unknown;
+    try {
+      solveWith(t, () => void call(t));
+    } catch (e) {
+      error = e;
+    }
+    expect(error).toBeInstanceOf(BusyError);
+    expect(error).toBeInstanceOf(InputError);
+    expect((error as Error).message).toBe(busy(method));
+    // Nothing changed: the terrain is whole and usable, and can be freed now.
+    expect(t.disposed).toBe(false);
+    expect(t.numInputPoints).toBe(400);
+    expect(t.numQuads).toBe(quads);
+    expect(solveWith(t, () => {}).optimal).toBe(true);
+    call(t);
+    if (method !== 'dispose') t.dispose();
+    expect(t.disposed).toBe(true);
+  });
+
+  it('a callback that catches BusyError lets the solve finish normally', () => {
+    using t = hodt.terrain(randomPoints(400, 7));
+    const caught: unknown[] = [];
+    const s = solveWith(t, () => {
+      try {
+        t.addPoint(0.5, 0.5, 1);
+      } catch (e) {
+        caught.push(e);
+      }
+    });
+    expect(caught.length).toBeGreaterThan(0);
+    expect(caught[0]).toBeInstanceOf(BusyError);
+    expect(s.value).toBe(t.solve('max-convex-edges', { method: 'exact' }).value);
+    expect(t.numInputPoints).toBe(400);
+  });
+});
+
+describe('what a progress callback may do', () => {
+  it('read the terrain it is solving', () => {
+    using t = hodt.terrain(randomPoints(400, 7));
+    const seen: number[] = [];
+    const s = solveWith(t, () => {
+      seen.push(t.numQuads, t.delaunay().triangles.length, t.evaluate()[0]!, t.points.length);
+    });
+    expect(seen.length).toBeGreaterThan(0);
+    expect(s.optimal).toBe(true);
+  });
+  it('use another terrain, even solve it', () => {
+    using t = hodt.terrain(randomPoints(400, 7));
+    const values: number[] = [];
+    const s = solveWith(t, () => void values.push(other.solve('min-local-minima').value));
+    expect(values.length).toBeGreaterThan(0);
+    expect(s.optimal).toBe(true);
+    other.addPoint(0.123, 0.456, 1);  // and the other one is not busy
+  });
+});
