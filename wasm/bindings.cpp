@@ -181,9 +181,7 @@ class TerrainHandle {
   val solve(const std::string& objective, const std::string& method, double epsilon, bool trace, double order,
             val progress) const {
     return guarded([&] {
-      check_order(order);
       SolveOptions options;
-      options.order = order;
       const auto m = parse_method(method);
       if (!m) throw InputError("unknown method '" + method + "'; valid methods: " + method_ids());
       options.method = *m;
