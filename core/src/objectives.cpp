@@ -5,6 +5,9 @@
 #include <stdexcept>
 
 #include "hodt/measures.hpp"
+#include "hodt/pair_measures.hpp"
+#include "hodt/skeleton.hpp"
+#include "hodt/triangle_memo.hpp"
 
 namespace hodt {
 
@@ -58,11 +61,6 @@ namespace {
 
 // Each family of objectives computes only what it needs: evaluate() of one
 // objective must stay linear and light (it runs after every solve).
-const double* const* corners(const Mesh& m, uint32_t t, const double* out[3]) {
-  for (int k = 0; k < 3; ++k) out[k] = m.point(m.triangles[3 * t + k]);
-  return out;
-}
-
 double tri_area(const Mesh& m, uint32_t t) {
   return triangle_area(m.point(m.triangles[3 * t]), m.point(m.triangles[3 * t + 1]), m.point(m.triangles[3 * t + 2]));
 }
@@ -134,14 +132,22 @@ double vertex_area_ratio(const Mesh& m, const Stars& s, const std::vector<double
   return best;
 }
 
+// Each triangle's normal once (it is in three edges, three stars, many pairs):
+// the angles are those of normal_angle.
+auto normal_memo(const Mesh& m) {
+  return TriangleMemo([&m](const Tri& t) { return triangle_normal(m, t); }, m.num_triangles());
+}
+
 double vertex_normal_angle(const Mesh& m, const Stars& s) {
+  auto normal = normal_memo(m);
+  std::vector<std::array<double, 3>> star;
   double best = 0;
-  for (uint32_t v = 0; v < m.num_vertices(); ++v)
-    for (uint32_t i = s.tri_offset[v]; i < s.tri_offset[v + 1]; ++i)
-      for (uint32_t j = i + 1; j < s.tri_offset[v + 1]; ++j) {
-        const double *ci[3], *cj[3];
-        best = std::max(best, normal_angle(corners(m, s.triangle[i], ci), corners(m, s.triangle[j], cj)));
-      }
+  for (uint32_t v = 0; v < m.num_vertices(); ++v) {
+    star.clear();
+    for (uint32_t i = s.tri_offset[v]; i < s.tri_offset[v + 1]; ++i) star.push_back(normal(base_triangle(m, s.triangle[i])));
+    for (size_t i = 0; i < star.size(); ++i)
+      for (size_t j = i + 1; j < star.size(); ++j) best = std::max(best, normals_angle(star[i].data(), star[j].data()));
+  }
   return best;
 }
 
@@ -162,11 +168,12 @@ double evaluate(Objective o, const Mesh& m) {
       const std::vector<double> a = areas(m);
       return edge_pair_max(m, [&](uint32_t e, uint32_t f) { return area_ratio(a[e / 3], a[f / 3]); });
     }
-    case Objective::MinmaxEdgeNormalAngle:
+    case Objective::MinmaxEdgeNormalAngle: {
+      auto normal = normal_memo(m);
       return edge_pair_max(m, [&](uint32_t e, uint32_t f) {
-        const double *c1[3], *c2[3];
-        return normal_angle(corners(m, e / 3, c1), corners(m, f / 3, c2));
+        return normals_angle(normal(base_triangle(m, e / 3)).data(), normal(base_triangle(m, f / 3)).data());
       });
+    }
     case Objective::MinmaxEdgeEnclosingCircle:
       return edge_pair_max(m, [&](uint32_t e, uint32_t f) {
         return enclosing_circle(m.point(m.origin(e)), m.point(m.target(e)), m.point(m.apex(e)), m.point(m.apex(f)));

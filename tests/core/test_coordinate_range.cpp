@@ -31,7 +31,7 @@ std::string error_of(F f) {
 }
 
 std::string range_error(const std::string& point, const char* axis, const std::string& value) {
-  return point + ": " + axis + " is " + value + ", outside the supported range: every coordinate must be 0 or of magnitude from 1e-45 to 1e45";
+  return point + ": " + axis + " is " + value + ", outside the supported range: every coordinate must be 0 or of magnitude from 1e-45 to 1e+45";
 }
 
 const std::vector<double> kSquare = {0, 0, 0, 1, 0, 1, 1, 1, 0, 0, 1, 1, 0.5, 0.4, 2};
@@ -45,7 +45,7 @@ TEST_CASE("coordinate range: tiny, subnormal and huge coordinates are rejected w
     return error_of([&] { validate_points(p); });
   };
   CHECK(with(3, 1e-300) == range_error("point 1", "x", "1e-300"));
-  CHECK(with(7, 5e-324) == range_error("point 2", "y", "4.9406564584124654e-324"));
+  CHECK(with(7, 5e-324) == range_error("point 2", "y", "5e-324"));
   CHECK(with(14, -1e300) == range_error("point 4", "z", "-1e+300"));
   CHECK(with(4, 1e46) == range_error("point 1", "y", "1e+46"));
   CHECK(with(4, 1e-46) == range_error("point 1", "y", "1e-46"));
@@ -62,7 +62,7 @@ TEST_CASE("coordinate range: live edits and given triangulations check it too") 
   Terrain t = Terrain::from_points(kSquare);
   CHECK(error_of([&] { t.add_point(1e-300, 0.5, 0); }) == range_error("point 5", "x", "1e-300"));
   CHECK(error_of([&] { t.move_point(2, 0.5, 2e45, 0); }) == range_error("point 2", "y", "2e+45"));
-  CHECK(error_of([&] { t.move_point(4, 0.5, 0.4, 1e-310); }) == range_error("point 4", "z", "9.9999999999999694e-311"));
+  CHECK(error_of([&] { t.move_point(4, 0.5, 0.4, 1e-310); }) == range_error("point 4", "z", "1e-310"));
   CHECK(t.num_input_points() == 5);
   CHECK(t.structure().base.num_vertices() == 5);
   std::vector<double> p = kSquare;
