@@ -51,20 +51,33 @@ Choice smaller_largest_triangles(const FirstOrder& fo, const Progress& progress)
   // The optimum is the larger of the largest fixed triangle and, over the quads,
   // the smaller of their two options; a quad flips only if Delaunay exceeds it.
   const Mesh& m = fo.base;
+  // Triangles whose rough area (within 2^-21) is below the running optimum by
+  // the margin 2^-20 cannot raise it or exceed it, accurate area and all: most
+  // skip the accurate area.
   double optimum = 0;
+  auto below = [&](uint32_t a, uint32_t b, uint32_t c) {
+    const double r = rough_triangle_area(m.point(a), m.point(b), m.point(c));
+    return r > 0 && r * (1 + 0x1p-20) <= optimum;
+  };
+  auto choice_below = [&](uint32_t q, bool flipped) {  // both triangles of the choice
+    uint32_t t[6];
+    fo.triangles_of(q, flipped, t);
+    return below(t[0], t[1], t[2]) && below(t[3], t[4], t[5]);
+  };
   for (uint32_t t = 0; t < m.num_triangles(); ++t) {
-    if (fo.quad_of_triangle[t] < 0)
+    if (fo.quad_of_triangle[t] < 0 && !below(m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]))
       optimum = std::max(optimum, triangle_area(m.point(m.triangles[3 * t]), m.point(m.triangles[3 * t + 1]),
                                                 m.point(m.triangles[3 * t + 2])));
     if (work.tick(8)) report(progress, t, m.num_triangles());
   }
   for (uint32_t q = 0; q < fo.num_quads(); ++q) {
-    optimum = std::max(optimum, std::min(largest_triangle(fo, q, false), largest_triangle(fo, q, true)));
+    if (!choice_below(q, false) && !choice_below(q, true))
+      optimum = std::max(optimum, std::min(largest_triangle(fo, q, false), largest_triangle(fo, q, true)));
     if (work.tick(16)) report(progress, q, fo.num_quads());
   }
   Choice c(fo.num_quads(), 0);
   for (uint32_t q = 0; q < fo.num_quads(); ++q) {
-    c[q] = largest_triangle(fo, q, false) > optimum;
+    c[q] = !choice_below(q, false) && largest_triangle(fo, q, false) > optimum;
     if (work.tick(8)) report(progress, q, fo.num_quads());
   }
   return c;
@@ -72,10 +85,11 @@ Choice smaller_largest_triangles(const FirstOrder& fo, const Progress& progress)
 
 BottleneckModel pair_model(const FirstOrder& fo, Objective o, const Progress& progress) {
   const Mesh& m = fo.base;
-  // With a cut: the search needs only values above the floor (a pruned model).
-  auto ratio = [&](const Tri& s, const Tri& t, double) { return pair_area_ratio(m, s, t); };
+  // With a cut: the search needs only values above the floor (a pruned model),
+  // and most pairs are far below it (pair_measures.hpp).
+  auto ratio = [&](const Tri& s, const Tri& t, double cut) { return pair_area_ratio(m, s, t, cut); };
   auto angle = [&](const Tri& s, const Tri& t, double cut) { return pair_normal_angle(m, s, t, cut); };
-  auto circle = [&](const Tri& s, const Tri& t, double) { return pair_enclosing_circle(m, s, t); };
+  auto circle = [&](const Tri& s, const Tri& t, double cut) { return pair_enclosing_circle(m, s, t, cut); };
   switch (o) {
     case Objective::MinmaxEdgeAreaRatio: return edge_pair_model(fo, ratio, progress);
     case Objective::MinmaxEdgeNormalAngle: return edge_pair_model(fo, angle, progress);

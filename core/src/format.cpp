@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 
 namespace hodt {
 
@@ -22,6 +23,11 @@ std::string format_number(double v) {
     if (std::strtod(buf, nullptr) == v) break;
   }
   return buf;
+}
+
+std::string json_number(double v) {
+  if (!std::isfinite(v)) throw std::logic_error("a measured value is " + format_number(v) + ": not a JSON number");
+  return format_number(v);
 }
 
 }  // namespace hodt

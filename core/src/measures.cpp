@@ -1,6 +1,7 @@
 #include "hodt/measures.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "hodt/kernel.hpp"
@@ -63,22 +64,29 @@ Extremum extremum(const double* p, const double* const* nb, uint32_t d) {
 
 namespace {
 bool xy_less(const double* p, const double* q) { return p[0] < q[0] || (p[0] == q[0] && p[1] < q[1]); }
-// Rotates a triangle to start at its lexicographically smallest corner, so that a
-// triangle's measures do not depend on how a mesh happens to list its corners.
-void canonical(const double*& a, const double*& b, const double*& c) {
-  if (xy_less(b, a) && xy_less(b, c)) std::swap(a, b), std::swap(b, c);       // b c a
-  else if (xy_less(c, a) && xy_less(c, b)) std::swap(a, c), std::swap(b, c);  // c a b
+// 1 / 2^e for the binade [2^e, 2^(e+1)) of a positive normal double x: the
+// power of two that scales x into [1, 2), read off its exponent bits (cheaper
+// than ilogb and ldexp; exact and the same on every platform).
+double inverse_binade(double x) {
+  const uint64_t biased = std::bit_cast<uint64_t>(x) >> 52;  // e + 1023, in 1..2046
+  return std::bit_cast<double>((2046 - biased) << 52);        // biased exponent 1023 - e
 }
 }  // namespace
 
 void triangle_normal(const double* const t[3], double n[3]) {
+  // (b - a) x (c - a): each component the determinant of one coordinate plane.
   const double *a = t[0], *b = t[1], *c = t[2];
-  canonical(a, b, c);
-  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-  const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  n[0] = u[1] * v[2] - u[2] * v[1];
-  n[1] = u[2] * v[0] - u[0] * v[2];
-  n[2] = u[0] * v[1] - u[1] * v[0];
+  middle_first(a, b, c);  // the same normal for every rotation of the corners
+  n[0] = accurate_det(a, b, c, 1, 2);
+  n[1] = accurate_det(a, b, c, 2, 0);
+  n[2] = accurate_det(a, b, c, 0, 1);
+  // Largest component into [1, 2). In the coordinate range every nonzero
+  // component is in [2^-404, 2^303], so the scaled ones stay normal numbers:
+  // the scaling is exact, and angles (ratios) are those of the unscaled normal.
+  const double top = std::max({std::abs(n[0]), std::abs(n[1]), std::abs(n[2])});
+  if (top == 0) return;
+  const double scale = inverse_binade(top);
+  for (int k = 0; k < 3; ++k) n[k] *= scale;
 }
 
 double normals_dot(const double n[3], const double m[3]) { return n[0] * m[0] + n[1] * m[1] + n[2] * m[2]; }
@@ -148,7 +156,8 @@ double enclosing_circle(const double* a, const double* b, const double* c, const
 
 double circumradius(const double* a, const double* b, const double* c) {
   // |ab| |bc| |ca| / (4 area), each factor computed the same way on every platform.
-  const double area2 = std::abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+  middle_first(a, b, c);
+  const double area2 = std::abs(accurate_det(a, b, c));
   return edge_length(a, b) * edge_length(b, c) * edge_length(c, a) / (2 * area2);
 }
 

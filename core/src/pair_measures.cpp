@@ -5,18 +5,20 @@
 #include <vector>
 
 #include "hodt/measures.hpp"
+#include "hodt/triangle_memo.hpp"
 
 namespace hodt {
 
-namespace {
-double area(const Mesh& m, const Tri& t) { return triangle_area(m.point(t[0]), m.point(t[1]), m.point(t[2])); }
+double triangle_area(const Mesh& m, const Tri& t) { return triangle_area(m.point(t[0]), m.point(t[1]), m.point(t[2])); }
 
-std::array<double, 3> normal(const Mesh& m, const Tri& t) {
+std::array<double, 3> triangle_normal(const Mesh& m, const Tri& t) {
   const double* c[3] = {m.point(t[0]), m.point(t[1]), m.point(t[2])};
   std::array<double, 3> n;
   triangle_normal(c, n.data());
   return n;
 }
+
+namespace {
 
 // cos(cut), recomputed only when the cut changes (it is a slowly rising max).
 double cos_of(double cut) {
@@ -25,12 +27,14 @@ double cos_of(double cut) {
   return value;
 }
 
+}  // namespace
+
 // The angle of two normals, or 0 when it is at most cut. The angle is
 // portable_angle(y, x) of y = |n x k| and x = n . k, within 1e-15 of atan2(y, x),
 // and atan2(y, x) < cut - 1e-15 when x / |(x, y)| exceeds cos(cut) by the margin
 // (which also covers the rounding of cos, the norm and the product). Saves the
 // arctangent; with x >= 0 and a cut past pi/2 even the cross product.
-double angle_above(const std::array<double, 3>& n, const std::array<double, 3>& k, double cut) {
+double normal_angle_above(const std::array<double, 3>& n, const std::array<double, 3>& k, double cut) {
   const double x = normals_dot(n.data(), k.data());
   if (cut >= kRightAngleBound && x >= 0) return 0;
   if (cut > 0) {
@@ -40,9 +44,21 @@ double angle_above(const std::array<double, 3>& n, const std::array<double, 3>& 
   }
   return normals_angle(n.data(), k.data());
 }
+
+double pair_area_ratio(const Mesh& m, const Tri& s, const Tri& t) { return area_ratio(triangle_area(m, s), triangle_area(m, t)); }
+
+namespace {
+double rough_area(const Mesh& m, const Tri& t) { return rough_triangle_area(m.point(t[0]), m.point(t[1]), m.point(t[2])); }
 }  // namespace
 
-double pair_area_ratio(const Mesh& m, const Tri& s, const Tri& t) { return area_ratio(area(m, s), area(m, t)); }
+double pair_area_ratio(const Mesh& m, const Tri& s, const Tri& t, double cut) {
+  // Rough areas within 2^-21 make a ratio within 2^-19.9: below the cut with
+  // the margin 2^-18, the exact ratio is below it too, and so is the accurate
+  // one (within 9 ulps of it): most pairs end here.
+  const double a = rough_area(m, s), b = rough_area(m, t);
+  if (a > 0 && b > 0 && area_ratio(a, b) * (1 + 0x1p-18) <= cut) return cut;
+  return pair_area_ratio(m, s, t);
+}
 
 double pair_normal_angle(const Mesh& m, const Tri& s, const Tri& t) {
   const double* a[3] = {m.point(s[0]), m.point(s[1]), m.point(s[2])};
@@ -50,8 +66,54 @@ double pair_normal_angle(const Mesh& m, const Tri& s, const Tri& t) {
   return normal_angle(a, b);
 }
 
+namespace {
+// A triangle's normal (b - a) x (c - a) by the plain float formula, if it can be
+// trusted: each component is within 3u S + u |n_k| <= 4u S of the exact one
+// (u = 2^-53, S = |p| + |q| of its two products), so with every S <= 2^21 max
+// |n_k| the normal is within 2^-30 max |n_k| per component, 2^-29 |n| in length:
+// its direction within 2^-29 radians.
+bool rough_normal(const Mesh& m, const Tri& t, double n[3]) {
+  const double *a = m.point(t[0]), *b = m.point(t[1]), *c = m.point(t[2]);
+  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  double top = 0, sum = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double p = u[(k + 1) % 3] * v[(k + 2) % 3], q = u[(k + 2) % 3] * v[(k + 1) % 3];
+    n[k] = p - q;
+    top = std::max(top, std::abs(n[k]));
+    sum = std::max(sum, std::abs(p) + std::abs(q));
+  }
+  return sum <= 0x1p21 * top;
+}
+}  // namespace
+
 double pair_normal_angle(const Mesh& m, const Tri& s, const Tri& t, double cut) {
-  return angle_above(normal(m, s), normal(m, t), cut);
+  // Rough normals within 2^-29 radians each: when the cosine of their angle
+  // exceeds cos(cut) by 2^-20 (far more than its rounding), their angle is below
+  // cut - 2^-20 and the exact one below cut. Most pairs end here.
+  double n[3], k[3];
+  if (cut > 0 && rough_normal(m, s, n) && rough_normal(m, t, k) &&
+      normals_dot(n, k) >= std::sqrt(normals_dot(n, n) * normals_dot(k, k)) * (cos_of(cut) + 0x1p-20))
+    return 0;
+  return normal_angle_above(triangle_normal(m, s), triangle_normal(m, t), cut);
+}
+
+double pair_enclosing_circle(const Mesh& m, const Tri& s, const Tri& t, double cut) {
+  // Jung's theorem: four points at most D apart lie in a circle of radius D / sqrt(3).
+  // D^2 in floats is within 4u of the exact one: with the margin 2^-20 below the
+  // cut, the exact radius and the accurate one are below it.
+  if (cut > 0) {
+    const double* p[4] = {m.point(s[0]), m.point(s[1]), m.point(s[2]), nullptr};
+    for (uint32_t v : t)
+      if (v != s[0] && v != s[1] && v != s[2]) p[3] = m.point(v);
+    double d2 = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const double dx = p[j][0] - p[i][0], dy = p[j][1] - p[i][1];
+        d2 = std::max(d2, dx * dx + dy * dy);
+      }
+    if (d2 * (1 + 0x1p-20) <= 3 * cut * cut) return cut;
+  }
+  return pair_enclosing_circle(m, s, t);
 }
 
 double pair_enclosing_circle(const Mesh& m, const Tri& s, const Tri& t) {
@@ -113,17 +175,22 @@ std::optional<CriticalPair> first_largest_pair(const Mesh& m, bool edge, Feature
 }  // namespace
 
 std::optional<CriticalPair> critical_pair(Objective o, const Mesh& m, const Progress& progress) {
-  auto tri_area = [&](uint32_t t) { return area(m, base_triangle(m, t)); };
+  auto tri_area = [&](uint32_t t) { return triangle_area(m, base_triangle(m, t)); };
   auto ratio = [](double a, double b, double) { return area_ratio(a, b); };
-  auto tri_normal = [&](uint32_t t) { return normal(m, base_triangle(m, t)); };
   auto tri = [&](uint32_t t) { return base_triangle(m, t); };
   auto circle = [&](const Tri& a, const Tri& b, double) { return pair_enclosing_circle(m, a, b); };
+  // Each triangle is in three edges and three stars, and its accurate normal
+  // costs more than a lookup: once each, mostly.
+  auto angle = [&](bool edge) {
+    TriangleMemo normal([&](const Tri& t) { return triangle_normal(m, t); }, m.num_triangles());
+    return first_largest_pair(m, edge, [&](uint32_t t) { return normal(tri(t)); }, normal_angle_above, progress);
+  };
   switch (o) {
     case Objective::MinmaxEdgeAreaRatio: return first_largest_pair(m, true, tri_area, ratio, progress);
-    case Objective::MinmaxEdgeNormalAngle: return first_largest_pair(m, true, tri_normal, angle_above, progress);
+    case Objective::MinmaxEdgeNormalAngle: return angle(true);
     case Objective::MinmaxEdgeEnclosingCircle: return first_largest_pair(m, true, tri, circle, progress);
     case Objective::MinmaxVertexAreaRatio: return first_largest_pair(m, false, tri_area, ratio, progress);
-    case Objective::MinmaxVertexNormalAngle: return first_largest_pair(m, false, tri_normal, angle_above, progress);
+    case Objective::MinmaxVertexNormalAngle: return angle(false);
     default: return std::nullopt;
   }
 }

@@ -16,18 +16,28 @@ std::string PointLabels::describe(size_t i) const {
   return s;
 }
 
+void check_coordinate(double v, int axis, const std::string& who) {
+  static const char* const name[3] = {"x", "y", "z"};
+  if (!std::isfinite(v))
+    throw InputError(who + ": " + name[axis] + " is " + format_number(v) + ", expected a finite number");
+  if (v != 0 && !(std::abs(v) >= kMinCoordinate && std::abs(v) <= kMaxCoordinate))
+    throw InputError(who + ": " + name[axis] + " is " + format_number(v) +
+                     ", outside the supported range: every coordinate must be 0 or of magnitude from " +
+                     format_number(kMinCoordinate) + " to " + format_number(kMaxCoordinate));
+}
+
 TerrainPoints validate_points(std::vector<double> xyz, Dedupe dedupe, const PointLabels& labels,
                               PointOrder point_order) {
   if (xyz.size() % 3 != 0)
     throw InputError("expected x, y, z per point: " + std::to_string(xyz.size()) +
                      " numbers is not a multiple of 3");
   const size_t n = xyz.size() / 3;
-  static const char* const axis[3] = {"x", "y", "z"};
   for (size_t i = 0; i < n; ++i)
-    for (int k = 0; k < 3; ++k)
-      if (!std::isfinite(xyz[3 * i + k]))
-        throw InputError(labels.describe(i) + ": " + axis[k] + " is " +
-                         format_number(xyz[3 * i + k]) + ", expected a finite number");
+    for (int k = 0; k < 3; ++k) {
+      const double v = xyz[3 * i + k];
+      if (!(v == 0 || (std::abs(v) >= kMinCoordinate && std::abs(v) <= kMaxCoordinate)))  // (false for NaN)
+        check_coordinate(v, k, labels.describe(i));
+    }
 
   // Along the spatial order equal points are consecutive, the earliest input index
   // first; the first of each run is kept. The error names the run with the

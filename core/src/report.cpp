@@ -16,7 +16,7 @@ std::string stats_json(const Terrain& t, uint32_t order) {
                   ", \"hullVertices\": " + std::to_string(m.hull.size()) + ", \"delaunay\": {";
   const auto& v = t.delaunay_values();
   for (size_t k = 0; k < kNumObjectives; ++k)
-    s += (k ? ", \"" : "\"") + std::string(objectives()[k].id) + "\": " + format_number(v[k]);
+    s += (k ? ", \"" : "\"") + std::string(objectives()[k].id) + "\": " + json_number(v[k]);
   s += "}";
   if (order > 0) {
     const auto edges = useful_edges(t.delaunay_mesh(), order);
@@ -48,22 +48,22 @@ std::string solution_json(const Terrain& t, const Solution& r, bool with_triangl
   const ObjectiveInfo& oi = info(r.objective);
   std::string s = "{\"objective\": \"" + std::string(oi.id) + "\", \"sense\": \"" +
                   (oi.sense == Sense::Min ? "min" : "max") + "\", \"method\": \"" + r.method +
-                  "\", \"value\": " + format_number(r.value) +
-                  ", \"delaunayValue\": " + format_number(r.delaunay_value) +
+                  "\", \"value\": " + json_number(r.value) +
+                  ", \"delaunayValue\": " + json_number(r.delaunay_value) +
                   ", \"optimal\": " + (r.optimal ? "true" : "false") +
-                  ", \"bound\": " + (r.bound ? format_number(*r.bound) : "null") +
+                  ", \"bound\": " + (r.bound ? json_number(*r.bound) : "null") +
                   ", \"flipped\": " + std::to_string(r.mesh ? r.non_delaunay_edges : count_flipped(r.choice)) +
-                  ", \"timeMs\": " + format_number(r.time_ms);
+                  ", \"timeMs\": " + json_number(r.time_ms);
   if (r.order > 1) s += ", \"order\": " + std::to_string(r.order);
   if (r.method == "approx") s += std::string(", \"localSearchImproved\": ") + (r.local_search_improved ? "true" : "false");
   if (!r.details.empty()) s += ", \"details\": \"" + json_escape(r.details) + "\"";
   if (r.critical)
     s += ", \"critical\": {\"first\": " + triangle_json(t, r.critical->first) + ", \"second\": " +
-         triangle_json(t, r.critical->second) + ", \"value\": " + format_number(r.critical->value) + "}";
+         triangle_json(t, r.critical->second) + ", \"value\": " + json_number(r.critical->value) + "}";
   if (with_trace) {
     s += ", \"trace\": [";
     for (size_t k = 0; k < r.trace.size(); ++k)
-      s += std::string(k ? ", " : "") + "{\"threshold\": " + format_number(r.trace[k].threshold) +
+      s += std::string(k ? ", " : "") + "{\"threshold\": " + json_number(r.trace[k].threshold) +
            ", \"satisfiable\": " + (r.trace[k].satisfiable ? "true" : "false") +
            ", \"clauses\": " + std::to_string(r.trace[k].clauses) + "}";
     s += "]";

@@ -38,10 +38,7 @@ void Terrain::check_editable(double x, double y, double z, const std::string& wh
   if (!fo_.is_delaunay || input_index_.empty())
     throw InputError("only a terrain built from points can be edited (this one is a given triangulation)");
   const double v[3] = {x, y, z};
-  static const char* const axis[3] = {"x", "y", "z"};
-  for (int k = 0; k < 3; ++k)
-    if (!std::isfinite(v[k]))
-      throw InputError(what + ": " + axis[k] + " is " + format_number(v[k]) + ", expected a finite number");
+  for (int k = 0; k < 3; ++k) check_coordinate(v[k], k, what);
 }
 
 void Terrain::forget_delaunay_values() {

@@ -104,4 +104,57 @@ inline std::vector<double> wheel_points(int n, bool cone = false) {
   return p;
 }
 
+// Near-degenerate point sets: points within rounding of a segment, computed as
+// t a + (1 - t) b in doubles (the rounded point is just off the segment, or on it).
+inline void push_on_segment(std::vector<double>& p, const double* a, const double* b, double t, double z) {
+  p.insert(p.end(), {t * a[0] + (1 - t) * b[0], t * a[1] + (1 - t) * b[1], z});
+}
+
+// n - 1 random points and one within rounding of the segment between two of them:
+// its triangle with the segment's ends is a sliver.
+inline std::vector<double> sliver_points(int n, uint64_t seed) {
+  Rng r(seed);
+  std::vector<double> p = uniform_points(n - 1, seed + 1000);
+  const int i = r.below(n - 1), j = (i + 1 + r.below(n - 2)) % (n - 1);
+  const double a[2] = {p[3 * i], p[3 * i + 1]}, b[2] = {p[3 * j], p[3 * j + 1]};
+  push_on_segment(p, a, b, 0.05 + 0.9 * r.uniform(), r.uniform());
+  return p;
+}
+
+// The corners of a square rotated by a random angle, `inside` random points in it,
+// and `on_edges` points computed on its edges (each within rounding of a hull edge:
+// a sliver with the edge's ends, or a hull vertex a rounding error out).
+inline std::vector<double> rotated_hull_points(int inside, int on_edges, uint64_t seed) {
+  Rng r(seed);
+  const double angle = 6.283185307179586 * r.uniform(), scale = 1 + 9 * r.uniform();
+  const double ox = 100 * r.uniform() - 50, oy = 100 * r.uniform() - 50;
+  double corner[4][2];
+  for (int k = 0; k < 4; ++k) {
+    const double x = (k == 1 || k == 2) ? 1 : -1, y = k >= 2 ? 1 : -1;
+    corner[k][0] = ox + scale * (x * std::cos(angle) - y * std::sin(angle));
+    corner[k][1] = oy + scale * (x * std::sin(angle) + y * std::cos(angle));
+  }
+  std::vector<double> p;
+  for (auto& c : corner) p.insert(p.end(), {c[0], c[1], r.uniform()});
+  for (int i = 0; i < inside; ++i) {
+    const double s = 0.9 * (2 * r.uniform() - 1), t = 0.9 * (2 * r.uniform() - 1);
+    p.insert(p.end(), {ox + scale * (s * std::cos(angle) - t * std::sin(angle)),
+                       oy + scale * (s * std::sin(angle) + t * std::cos(angle)), r.uniform()});
+  }
+  for (int i = 0; i < on_edges; ++i) {
+    const int k = r.below(4);
+    push_on_segment(p, corner[k], corner[(k + 1) % 4], 0.05 + 0.9 * r.uniform(), r.uniform());
+  }
+  return p;
+}
+
+// n points, all within rounding of one segment (nearly, but rarely exactly, collinear).
+inline std::vector<double> near_collinear_points(int n, uint64_t seed) {
+  Rng r(seed);
+  const double a[2] = {r.uniform(), r.uniform()}, b[2] = {1 + r.uniform(), 1 + r.uniform()};
+  std::vector<double> p;
+  for (int i = 0; i < n; ++i) push_on_segment(p, a, b, r.uniform(), r.uniform());
+  return p;
+}
+
 }  // namespace hodt::test

@@ -12,7 +12,7 @@ beforeAll(async () => {
   hodt = await loadHodt();
 });
 
-const points = Float64Array.from([0, 0, 1.5, 10, 0, -2.25, 10, 10, 1 / 3, 0, 10, 1e-300, 4.000000000000001, 6, 9]);
+const points = Float64Array.from([0, 0, 1.5, 10, 0, -2.25, 10, 10, 1 / 3, 0, 10, 1e-40, 4.000000000000001, 6, 9]);
 
 describe('exports', () => {
   test('points CSV reads back bit for bit', () => {

@@ -4,4 +4,8 @@
 
 namespace hodt {
 std::string format_number(double v);
+// The same for a JSON document, which cannot hold Infinity or NaN. Valid input
+// never makes a measure non-finite (the coordinate range of points.hpp), so one
+// is a bug: std::logic_error, not a number no JSON parser reads.
+std::string json_number(double v);
 }

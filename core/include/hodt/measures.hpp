@@ -2,10 +2,12 @@
 // vertex class, extrema) are exact; measured values (areas, angles, radii) are
 // doubles computed the same way everywhere, so every solver compares the same numbers.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
 
+#include "hodt/accurate_det.hpp"
 #include "hodt/mesh.hpp"
 #include "hodt/progress.hpp"
 
@@ -25,15 +27,21 @@ EdgeShape edge_shape(const double* u, const double* v, const double* w, const do
 VertexClass vertex_class(const double* p, const double* const* nb, uint32_t count);
 Extremum extremum(const double* p, const double* const* nb, uint32_t count);
 
-// Plane (xy) area of a counterclockwise triangle, positive.
-// (Inline: the min-max models evaluate it millions of times.)
+// Plane (xy) area of a counterclockwise triangle, positive: within 4 ulps of the
+// exact area however thin the triangle, and the same whatever corner comes first
+// (accurate_det.hpp). (Inline: the min-max models evaluate it millions of times.)
 inline double triangle_area(const double* a, const double* b, const double* c) {
-  // Start at the lexicographically smallest corner, so that the value does not
-  // depend on how a mesh happens to list the corners.
-  auto less = [](const double* p, const double* q) { return p[0] < q[0] || (p[0] == q[0] && p[1] < q[1]); };
-  if (less(b, a) && less(b, c)) std::swap(a, b), std::swap(b, c);       // b c a
-  else if (less(c, a) && less(c, b)) std::swap(a, c), std::swap(b, c);  // c a b
-  return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+  middle_first(a, b, c);
+  return 0.5 * accurate_det(a, b, c);
+}
+// The same by the plain float formula, for filters that only need to know that
+// an area is far from some bound: within 2^-21 of the exact area (relative), or
+// 0 when the formula cannot be trusted. Its error is at most 3u (|p| + |q|) +
+// u |det| (u = 2^-53; rounded differences and products p, q): 2^-21 when the
+// products cancel less than det >= 2^-30 (|p| + |q|). Counterclockwise triangles.
+inline double rough_triangle_area(const double* a, const double* b, const double* c) {
+  const double p = (b[0] - a[0]) * (c[1] - a[1]), q = (b[1] - a[1]) * (c[0] - a[0]), det = p - q;
+  return det >= 0x1p-30 * (std::abs(p) + std::abs(q)) ? 0.5 * det : 0;
 }
 // Larger over smaller plane area.
 inline double area_ratio(double area1, double area2) { return area1 > area2 ? area1 / area2 : area2 / area1; }
@@ -41,7 +49,10 @@ inline double area_ratio(double area1, double area2) { return area1 > area2 ? ar
 // (each counterclockwise in xy).
 double normal_angle(const double* const t1[3], const double* const t2[3]);
 // The same in two steps, for callers that reuse a triangle's normal: the upward
-// (unnormalised) normal, and the angle between two of them.
+// normal, and the angle between two of them. Each component is a 2x2
+// determinant within 4 ulps; the normal is scaled by a power of two (exactly) so
+// that its largest component is in [1, 2): angles of normals of any size neither
+// overflow nor underflow.
 void triangle_normal(const double* const t[3], double n[3]);
 double normals_dot(const double n[3], const double m[3]);
 double normals_angle(const double n[3], const double m[3]);
@@ -50,7 +61,8 @@ double normals_angle(const double n[3], const double m[3]);
 constexpr double kRightAngleBound = 1.6;
 // Radius of the smallest circle containing the four points (plane).
 double enclosing_circle(const double* a, const double* b, const double* c, const double* d);
-// Radius of the circle through three non-collinear points (plane).
+// Radius of the circle through three non-collinear points (plane); its
+// denominator is the accurate area, so a sliver's radius is accurate too.
 double circumradius(const double* a, const double* b, const double* c);
 // Plane length of a segment.
 double edge_length(const double* a, const double* b);
