@@ -1,18 +1,41 @@
 #!/usr/bin/env node
 // `hodt` on the command line: the core's CLI (core/src/cli.cpp) run in wasm, with
-// Node's file system to read FILE or standard input.
-import { readFileSync } from 'node:fs';
+// Node's file system to read FILE or standard input and to write --output files
+// (the mesh formats with hodt/export's writers), and stderr for progress.
+import { readFileSync, writeFileSync, writeSync } from 'node:fs';
+import { exportMesh } from './export.js';
 import { loadHodt } from './index.js';
 
-const hodt = await loadHodt();
-const result = hodt.runCli(process.argv.slice(2), (path) => {
+// The core puts an Error's Node code (ENOENT, ...) in the same words as the native CLI.
+const failure = (e: unknown): Error => (e instanceof Error ? e : new Error(String(e)));
+const attempt = (write: () => void): Error | undefined => {
   try {
-    return readFileSync(path === '-' ? 0 : path, 'utf8');
+    write();
+    return undefined;
   } catch (e) {
-    const code = (e as NodeJS.ErrnoException).code;
-    return new Error(code === 'ENOENT' ? 'no such file' : code === 'EISDIR' ? 'is a directory' : String((e as Error).message));
+    return failure(e);
   }
-});
+};
+
+const hodt = await loadHodt();
+const result = hodt.runCli(
+  process.argv.slice(2),
+  (path) => {
+    try {
+      return readFileSync(path === '-' ? 0 : path); // bytes: the core decodes them
+    } catch (e) {
+      return failure(e);
+    }
+  },
+  {
+    writeFile: (path, text) => attempt(() => writeFileSync(path, text)),
+    writeMesh: (path, format, mesh) => attempt(() => writeFileSync(path, exportMesh(format, mesh))),
+    progress: (text) => {
+      writeSync(2, text);
+    },
+    stderrIsTerminal: process.stderr.isTTY === true,
+  },
+);
 process.stdout.write(result.stdout);
 process.stderr.write(result.stderr);
 process.exitCode = result.exitCode;

@@ -1,0 +1,57 @@
+/**
+ * hodt/export: a triangulation as a file, for GIS tools, 3D viewers and meshing
+ * software. No wasm: it works on arrays (the points and a solution's triangles).
+ *
+ *   import { exportMesh } from 'hodt/export';
+ *   const bytes = exportMesh('ply', { points: terrain.points, triangles: best.triangles });
+ *
+ * Reference: docs/api.md, "Writing files".
+ */
+import { geojsonParts } from './export/geojson.js';
+import type { MeshData, MeshFormat } from './export/meshData.js';
+import { objParts } from './export/obj.js';
+import { toGLB } from './export/glb.js';
+import { toPLY } from './export/ply.js';
+import { encodeParts } from './export/text.js';
+import { InputError } from './errors.js';
+
+export type { MeshData, MeshFormat } from './export/meshData.js';
+export { toGeoJSON } from './export/geojson.js';
+export { toGLB } from './export/glb.js';
+export { nonDelaunayTriangles } from './export/nonDelaunay.js';
+export { toOBJ } from './export/obj.js';
+export { toPLY } from './export/ply.js';
+
+/** The formats, each with its file extension and media type. */
+export const MESH_FORMATS: Readonly<Record<MeshFormat, { extension: string; mediaType: string }>> = Object.freeze({
+  obj: { extension: '.obj', mediaType: 'model/obj' },
+  ply: { extension: '.ply', mediaType: 'application/octet-stream' },
+  geojson: { extension: '.geojson', mediaType: 'application/geo+json' },
+  glb: { extension: '.glb', mediaType: 'model/gltf-binary' },
+});
+
+/** The format a file name asks for by its extension (any case), or null. */
+export function meshFormatOf(fileName: string): MeshFormat | null {
+  const name = fileName.toLowerCase();
+  for (const [format, { extension }] of Object.entries(MESH_FORMATS)) {
+    if (name.endsWith(extension)) return format as MeshFormat;
+  }
+  return null;
+}
+
+/** The bytes of the file: toOBJ, toPLY, toGeoJSON or toGLB, text as UTF-8. Text is
+ * encoded in parts, so files longer than the longest JavaScript string work. */
+export function exportMesh(format: MeshFormat, mesh: MeshData): Uint8Array {
+  switch (format) {
+    case 'obj':
+      return encodeParts(objParts(mesh));
+    case 'ply':
+      return toPLY(mesh);
+    case 'geojson':
+      return encodeParts(geojsonParts(mesh));
+    case 'glb':
+      return toGLB(mesh);
+    default:
+      throw new InputError(`unknown format ${JSON.stringify(String(format))}; expected obj, ply, geojson or glb`);
+  }
+}
