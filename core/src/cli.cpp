@@ -159,7 +159,9 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     std::string comment;
     if (command == "stats") {
       printed = stats_json(terrain, static_cast<uint32_t>(order));
-      if (json_output) written = with_triangles_json(printed, terrain.to_input(terrain.delaunay_mesh().triangles));
+      // ("triangles" is already the count)
+      if (json_output)
+        written = with_triangles_json(printed, terrain.to_input(terrain.delaunay_mesh().triangles), "delaunayTriangles");
       comment = std::string("hodt ") + version() + ": the Delaunay triangulation of " + name;
     } else {
       started = Clock::now();

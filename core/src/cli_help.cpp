@@ -48,7 +48,7 @@ std::string cli_help() {
       "  --trace           min-max objectives: add the thresholds the search tested\n"
       "  --dedupe first    keep the first of points with the same (x, y) (default: error)\n"
       "  --output OUT      also write the triangulation to OUT; repeatable. By extension:\n"
-      "                    .json (the printed JSON plus triangles), .obj, .ply (binary,\n"
+      "                    .json (the printed JSON plus the triangles), .obj, .ply (binary,\n"
       "                    vertex class and extremum, non-Delaunay triangles), .geojson\n"
       "                    (one polygon per triangle), .glb (binary glTF); the native\n"
       "                    build writes .json only (the others: npx hodt)\n"

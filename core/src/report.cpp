@@ -41,17 +41,18 @@ std::string json_escape(const std::string& in) {
 }
 
 std::string triangle_json(const Terrain& t, const Tri& tri) {
-  return "[" + std::to_string(t.to_input(tri[0])) + ", " + std::to_string(t.to_input(tri[1])) + ", " +
-         std::to_string(t.to_input(tri[2])) + "]";
+  std::string s = "[";
+  s += std::to_string(t.to_input(tri[0])) + ", " + std::to_string(t.to_input(tri[1])) + ", ";
+  return s + std::to_string(t.to_input(tri[2])) + "]";
 }
 
 // Milliseconds to the microsecond: finer digits are noise.
 std::string ms_json(double ms) { return format_number(std::round(ms * 1000) / 1000); }
 }  // namespace
 
-std::string with_triangles_json(std::string s, const std::vector<uint32_t>& tris) {
+std::string with_triangles_json(std::string s, const std::vector<uint32_t>& tris, const std::string& key) {
   s.pop_back();  // the closing brace
-  s += ", \"triangles\": [";
+  s += ", \"" + key + "\": [";
   for (size_t k = 0; k + 2 < tris.size(); k += 3)
     s += (k ? ", [" : "[") + std::to_string(tris[k]) + ", " + std::to_string(tris[k + 1]) + ", " +
          std::to_string(tris[k + 2]) + "]";

@@ -23,7 +23,8 @@ struct PhaseTimes {
 //  [, "trace": [{"threshold", "satisfiable", "clauses"}, ...]][, "triangles"]}
 std::string solution_json(const Terrain& terrain, const Solution& s, bool with_triangles, bool with_trace = false,
                           const PhaseTimes* times = nullptr);
-// A JSON document (an object) with "triangles": [[i, j, k], ...] (input indices) added last.
-std::string with_triangles_json(std::string document, const std::vector<uint32_t>& input_triangles);
+// A JSON document (an object) with "key": [[i, j, k], ...] (input indices) added last.
+std::string with_triangles_json(std::string document, const std::vector<uint32_t>& input_triangles,
+                                const std::string& key = "triangles");
 
 }  // namespace hodt
