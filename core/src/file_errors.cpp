@@ -1,5 +1,7 @@
 #include "hodt/file_errors.hpp"
 
+#include <algorithm>
+
 namespace hodt {
 
 std::string file_error_message(const std::string& code, FileAccess access) {
@@ -11,6 +13,11 @@ std::string file_error_message(const std::string& code, FileAccess access) {
   if (code == "ENOSPC") return "no space left on the device";
   if (code == "EROFS") return "read-only file system";
   if (code == "ENAMETOOLONG") return "file name too long";
+  // Anything but a code (E and capitals, or the native "errno N") is the front
+  // end's own message.
+  const bool is_code = code.size() > 1 && code[0] == 'E' &&
+                       std::all_of(code.begin(), code.end(), [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'); });
+  if (!code.empty() && !is_code && code.rfind("errno ", 0) != 0) return code;
   std::string reason = read ? "cannot read the file" : "cannot write the file";
   if (!code.empty()) reason += " (" + code + ")";
   return reason;

@@ -138,6 +138,9 @@ TEST_CASE("file errors in the same words for every front end") {
   CHECK(file_error_message("ENOENT", FileAccess::Write) == "no such directory");
   CHECK(file_error_message("EISDIR", FileAccess::Write) == "is a directory");
   CHECK(file_error_message("EBUSY", FileAccess::Read) == "cannot read the file (EBUSY)");
+  CHECK(file_error_message("errno 5", FileAccess::Write) == "cannot write the file (errno 5)");
+  CHECK(file_error_message("", FileAccess::Read) == "cannot read the file");
+  CHECK(file_error_message("the server said no", FileAccess::Read) == "the server said no");
 }
 
 TEST_CASE("progress: steps with --progress; nothing on a terminal for a short run; the line cleared") {

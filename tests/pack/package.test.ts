@@ -127,7 +127,7 @@ describe('CLI (npm bin)', () => {
   });
   it('npx hodt --version, and --output writes the mesh formats with hodt/export', () => {
     const pkg = JSON.parse(readFileSync(join(repo, 'package.json'), 'utf8'));
-    expect(inProject('npx', ['--no', 'hodt', '--version']).stdout).toBe(`hodt ${pkg.version}\n`);
+    expect(inProject('npx', ['--no', '--', 'hodt', '--version']).stdout).toBe(`hodt ${pkg.version}\n`);
     const r = inProject('npx', ['--no', 'hodt', 'solve', fixture, '--objective', 'min-local-minima', '--output', 'cli.ply', '--output', 'cli.glb', '--output', 'cli.geojson']);
     expect(r.status, r.stderr).toBe(0);
     expect(readFileSync(join(project.dir, 'cli.ply'), 'latin1')).toMatch(/^ply\nformat binary_little_endian 1\.0\n/);

@@ -1,19 +1,17 @@
 /**
  * hodt/export: a triangulation as a file, for GIS tools, 3D viewers and meshing
- * software. No wasm: it works on arrays (the points and a solution's triangles).
- *
- *   import { exportMesh } from 'hodt/export';
- *   const bytes = exportMesh('ply', { points: terrain.points, triangles: best.triangles });
+ * software. No wasm: it works on arrays (the points and a solution's triangles),
+ * for example exportMesh('ply', { points: terrain.points, triangles: best.triangles }).
  *
  * Reference: docs/api.md, "Writing files".
  */
+import { InputError } from './errors.js';
 import { geojsonParts } from './export/geojson.js';
 import type { MeshData, MeshFormat } from './export/meshData.js';
-import { objParts } from './export/obj.js';
 import { toGLB } from './export/glb.js';
+import { objParts } from './export/obj.js';
 import { toPLY } from './export/ply.js';
 import { encodeParts } from './export/text.js';
-import { InputError } from './errors.js';
 
 export type { MeshData, MeshFormat } from './export/meshData.js';
 export { toGeoJSON } from './export/geojson.js';

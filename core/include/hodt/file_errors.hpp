@@ -8,7 +8,8 @@ namespace hodt {
 enum class FileAccess { Read, Write };
 
 // A short reason for an error code such as "ENOENT" ("no such file" when reading,
-// "no such directory" when writing); an unknown code is named as it is.
+// "no such directory" when writing); an unknown code is named as it is, and a
+// front end's own message (not a code) is returned unchanged.
 std::string file_error_message(const std::string& code, FileAccess access);
 
 }  // namespace hodt
