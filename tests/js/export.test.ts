@@ -3,6 +3,7 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import {
   exportMesh,
+  exportMeshParts,
   MESH_FORMATS,
   type MeshData,
   meshFormatOf,
@@ -163,6 +164,28 @@ describe('exportMesh', () => {
     expect(exportMesh('ply', mesh)).toEqual(toPLY(mesh));
     expect(exportMesh('glb', mesh)).toEqual(toGLB(mesh));
     expect(() => exportMesh('stl' as 'obj', mesh)).toThrow(InputError);
+  });
+
+  it('gives the file in parts for streaming: text in parts of a few thousand lines', () => {
+    // A 100 x 100 grid: 19,602 triangles.
+    const side = 100;
+    const points = Float64Array.from({ length: 3 * side * side }, (_, i) => (i % 3 === 2 ? i % 7 : i % 3 === 0 ? Math.floor(i / 3) % side : Math.floor(i / 3 / side)));
+    const triangles: number[] = [];
+    for (let r = 0; r + 1 < side; r++) {
+      for (let c = 0; c + 1 < side; c++) {
+        const v = r * side + c;
+        triangles.push(v, v + 1, v + side + 1, v, v + side + 1, v + side);
+      }
+    }
+    const big = { points, triangles };
+    const parts = Array.from(exportMeshParts('geojson', big)) as string[];
+    expect(parts.length).toBeGreaterThan(4);
+    expect(parts.join('')).toBe(toGeoJSON(big));
+    expect(JSON.parse(parts.join('')).features).toHaveLength(triangles.length / 3);
+    expect((Array.from(exportMeshParts('obj', big)) as string[]).join('')).toBe(toOBJ(big));
+    expect(Array.from(exportMeshParts('ply', big))).toEqual([toPLY(big)]);
+    // The mesh is checked when the parts are asked for, before any is written.
+    expect(() => exportMeshParts('obj', { points, triangles: [0, 1] })).toThrow(InputError);
   });
 
   it('knows the formats by file extension', () => {

@@ -2,8 +2,8 @@
 // `hodt` on the command line: the core's CLI (core/src/cli.cpp) run in wasm, with
 // Node's file system to read FILE or standard input and to write --output files
 // (the mesh formats with hodt/export's writers), and stderr for progress.
-import { readFileSync, writeFileSync, writeSync } from 'node:fs';
-import { exportMesh } from './export.js';
+import { closeSync, openSync, readFileSync, writeFileSync, writeSync } from 'node:fs';
+import { exportMeshParts, type MeshData, type MeshFormat } from './export.js';
 import { loadHodt } from './index.js';
 
 // The core puts an Error's Node code (ENOENT, ...) in the same words as the native CLI.
@@ -17,6 +17,20 @@ const attempt = (write: () => void): Error | undefined => {
   }
 };
 
+// Part by part: a large TIN as GeoJSON is longer than any JavaScript string.
+function writeMesh(path: string, format: MeshFormat, mesh: MeshData): void {
+  const parts = exportMeshParts(format, mesh); // checks the mesh before the file is made
+  const fd = openSync(path, 'w');
+  try {
+    for (const part of parts) {
+      const bytes = typeof part === 'string' ? Buffer.from(part, 'utf8') : part;
+      for (let at = 0; at < bytes.length; ) at += writeSync(fd, bytes, at);
+    }
+  } finally {
+    closeSync(fd);
+  }
+}
+
 const hodt = await loadHodt();
 const result = hodt.runCli(
   process.argv.slice(2),
@@ -29,7 +43,7 @@ const result = hodt.runCli(
   },
   {
     writeFile: (path, text) => attempt(() => writeFileSync(path, text)),
-    writeMesh: (path, format, mesh) => attempt(() => writeFileSync(path, exportMesh(format, mesh))),
+    writeMesh: (path, format, mesh) => attempt(() => writeMesh(path, format, mesh)),
     progress: (text) => {
       writeSync(2, text);
     },

@@ -11,7 +11,7 @@ import type { MeshData, MeshFormat } from './export/meshData.js';
 import { toGLB } from './export/glb.js';
 import { objParts } from './export/obj.js';
 import { toPLY } from './export/ply.js';
-import { encodeParts } from './export/text.js';
+import { concatParts } from './export/text.js';
 
 export type { MeshData, MeshFormat } from './export/meshData.js';
 export { toGeoJSON } from './export/geojson.js';
@@ -37,19 +37,26 @@ export function meshFormatOf(fileName: string): MeshFormat | null {
   return null;
 }
 
-/** The bytes of the file: toOBJ, toPLY, toGeoJSON or toGLB, text as UTF-8. Text is
- * encoded in parts, so files longer than the longest JavaScript string work. */
-export function exportMesh(format: MeshFormat, mesh: MeshData): Uint8Array {
+/** The file in parts, in order: text formats as strings of a few thousand lines
+ * (write them as UTF-8), binary formats as one Uint8Array. For writing large
+ * files to a stream without holding the whole file; the mesh is checked at once. */
+export function exportMeshParts(format: MeshFormat, mesh: MeshData): Iterable<string | Uint8Array> {
   switch (format) {
     case 'obj':
-      return encodeParts(objParts(mesh));
+      return objParts(mesh);
     case 'ply':
-      return toPLY(mesh);
+      return [toPLY(mesh)];
     case 'geojson':
-      return encodeParts(geojsonParts(mesh));
+      return geojsonParts(mesh);
     case 'glb':
-      return toGLB(mesh);
+      return [toGLB(mesh)];
     default:
       throw new InputError(`unknown format ${JSON.stringify(String(format))}; expected obj, ply, geojson or glb`);
   }
+}
+
+/** The bytes of the file: toOBJ, toPLY, toGeoJSON or toGLB, text as UTF-8 (also
+ * when the text is longer than the longest JavaScript string). */
+export function exportMesh(format: MeshFormat, mesh: MeshData): Uint8Array {
+  return concatParts(exportMeshParts(format, mesh));
 }

@@ -1,14 +1,17 @@
 // GeoJSON: the triangles as Polygon features with 3D coordinates.
 import { checkMesh, type MeshData } from './meshData.js';
-import { TextParts } from './text.js';
+import { LineBatch } from './text.js';
 
-/** The GeoJSON text in parts (see text.ts). */
-export function geojsonParts(mesh: MeshData): string[] {
-  const { triangles: m } = checkMesh(mesh);
+/** The GeoJSON text in parts (see text.ts); the mesh is checked at once. */
+export function geojsonParts(mesh: MeshData): Iterable<string> {
+  return geojsonText(mesh, checkMesh(mesh).triangles);
+}
+
+function* geojsonText(mesh: MeshData, m: number): Generator<string> {
   const { points: p, triangles: t, nonDelaunay } = mesh;
   const at = (i: number) => `[${String(p[3 * i])},${String(p[3 * i + 1])},${String(p[3 * i + 2])}]`;
-  const out = new TextParts();
-  out.line('{"type":"FeatureCollection","features":[');
+  const out = new LineBatch();
+  out.add('{"type":"FeatureCollection","features":[');
   for (let k = 0; k < m; k++) {
     let a = t[3 * k]!, b = t[3 * k + 1]!;
     const c = t[3 * k + 2]!;
@@ -18,13 +21,13 @@ export function geojsonParts(mesh: MeshData): string[] {
     if (twice < 0) [a, b] = [b, a]; // RFC 7946: exterior rings counterclockwise
     const properties = `"index":${k},"area":${String(Math.abs(twice) / 2)}` +
       (nonDelaunay ? `,"delaunay":${nonDelaunay[k] === 0}` : '');
-    out.line(
+    const feature =
       `{"type":"Feature","properties":{${properties}},"geometry":{"type":"Polygon","coordinates":[[${at(a)},${at(b)},${at(c)},${at(a)}]]}}` +
-        (k + 1 < m ? ',' : ''),
-    );
+      (k + 1 < m ? ',' : '');
+    if (out.add(feature)) yield out.take();
   }
-  out.line(']}');
-  return out.done();
+  out.add(']}');
+  yield out.take();
 }
 
 /**
@@ -38,5 +41,5 @@ export function geojsonParts(mesh: MeshData): string[] {
  * data (for example UTM).
  */
 export function toGeoJSON(mesh: MeshData): string {
-  return geojsonParts(mesh).join('');
+  return Array.from(geojsonParts(mesh)).join('');
 }

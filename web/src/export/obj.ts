@@ -1,18 +1,26 @@
 // Wavefront OBJ: `v x y z` per point, `f i j k` per triangle (1-based).
 import { checkMesh, type MeshData, oneLine } from './meshData.js';
-import { TextParts } from './text.js';
+import { LineBatch } from './text.js';
 
-/** The OBJ text in parts (see text.ts). */
-export function objParts(mesh: MeshData): string[] {
-  const { points: n, triangles: m } = checkMesh(mesh);
+/** The OBJ text in parts (see text.ts); the mesh is checked at once. */
+export function objParts(mesh: MeshData): Iterable<string> {
+  const counts = checkMesh(mesh);
+  return objText(mesh, counts.points, counts.triangles);
+}
+
+function* objText(mesh: MeshData, n: number, m: number): Generator<string> {
   const { points: p, triangles: t } = mesh;
-  const out = new TextParts();
-  if (mesh.comment) out.line(`# ${oneLine(mesh.comment)}`);
-  out.line(`# ${n} vertices, ${m} triangles (counterclockwise seen from +z)`);
+  const out = new LineBatch();
+  if (mesh.comment) out.add(`# ${oneLine(mesh.comment)}`);
+  out.add(`# ${n} vertices, ${m} triangles (counterclockwise seen from +z)`);
   // String(number) is the shortest decimal that reads back to the same double.
-  for (let i = 0; i < 3 * n; i += 3) out.line(`v ${String(p[i])} ${String(p[i + 1])} ${String(p[i + 2])}`);
-  for (let k = 0; k < 3 * m; k += 3) out.line(`f ${t[k]! + 1} ${t[k + 1]! + 1} ${t[k + 2]! + 1}`);
-  return out.done();
+  for (let i = 0; i < 3 * n; i += 3) {
+    if (out.add(`v ${String(p[i])} ${String(p[i + 1])} ${String(p[i + 2])}`)) yield out.take();
+  }
+  for (let k = 0; k < 3 * m; k += 3) {
+    if (out.add(`f ${t[k]! + 1} ${t[k + 1]! + 1} ${t[k + 2]! + 1}`)) yield out.take();
+  }
+  yield out.take();
 }
 
 /**
@@ -22,5 +30,5 @@ export function objParts(mesh: MeshData): string[] {
  * counts are `#` lines at the top. OBJ has no place for the attributes.
  */
 export function toOBJ(mesh: MeshData): string {
-  return objParts(mesh).join('');
+  return Array.from(objParts(mesh)).join('');
 }
