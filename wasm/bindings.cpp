@@ -264,10 +264,19 @@ TerrainHandle* fromTriangulation(val xyz, val triangles, val flippable) {
   });
 }
 
+// A file's contents given as a string (UTF-8) or as its bytes (a Uint8Array, so
+// that the core decodes them, byte order marks and UTF-16 included).
+std::string bytes_of(const val& v) {
+  if (v.isString()) return v.as<std::string>();
+  std::string out(v["length"].as<size_t>(), '\0');
+  val(emscripten::typed_memory_view(out.size(), reinterpret_cast<uint8_t*>(out.data()))).call<void>("set", v);
+  return out;
+}
+
 // Parses a point file's text: {xyz: Float64Array, lines: Int32Array}.
-val readPoints(const std::string& text, const std::string& name) {
+val readPoints(val text, const std::string& name) {
   return guarded([&] {
-    const ParsedPoints p = read_points(text, name);
+    const ParsedPoints p = read_points(bytes_of(text), name);
     val out = val::object();
     out.set("xyz", copy_out("Float64Array", p.xyz));
     out.set("lines", copy_out("Int32Array", p.lines));
@@ -275,17 +284,59 @@ val readPoints(const std::string& text, const std::string& name) {
   });
 }
 
-// The CLI; read(path) returns the file's text or throws.
-val runCli(val args, val read) {
+// An Error returned by a front end callback, as the core's reason: its Node code
+// (ENOENT, ...) if it has one, else its message.
+std::string reason_of(const val& error) {
+  if (error.isUndefined() || error.isNull()) return "";
+  const val code = error["code"];
+  return code.isString() ? code.as<std::string>() : error["message"].as<std::string>();
+}
+
+bool is_function(const val& v) { return v.typeOf().as<std::string>() == "function"; }
+
+// A TinData as hodt/export's MeshData.
+val mesh_data(const TinData& tin) {
+  val out = val::object();
+  out.set("points", copy_out("Float64Array", tin.points));
+  out.set("triangles", copy_out("Uint32Array", tin.triangles));
+  out.set("vertexClass", copy_out("Uint8Array", tin.vertex_class));
+  out.set("extremum", copy_out("Uint8Array", tin.extremum));
+  out.set("nonDelaunay", copy_out("Uint8Array", tin.non_delaunay));
+  out.set("comment", tin.comment);
+  return out;
+}
+
+// The CLI. read(path) returns the file's text or bytes, or an Error. io (optional):
+// {writeFile(path, text), writeMesh(path, format, mesh)} returning nothing or an
+// Error, progress(text), stderrIsTerminal.
+val runCli(val args, val read, val io) {
   std::vector<std::string> a;
   const unsigned n = args["length"].as<unsigned>();
   for (unsigned i = 0; i < n; ++i) a.push_back(args[i].as<std::string>());
-  const CliResult r = run_cli(a, [&](const std::string& path, std::string& error) -> std::optional<std::string> {
+  CliHost host;
+  host.read = [&](const std::string& path, std::string& error) -> std::optional<std::string> {
     const val text = read(path);
-    if (text.isString()) return text.as<std::string>();
-    error = text.isUndefined() ? "cannot read the file" : text["message"].as<std::string>();
+    if (text.isString() || text.instanceof(val::global("Uint8Array"))) return bytes_of(text);
+    error = reason_of(text);
     return std::nullopt;
-  });
+  };
+  const bool have_io = io.typeOf().as<std::string>() == "object" && !io.isNull();
+  if (have_io && is_function(io["writeFile"]))
+    host.write = [&](const std::string& path, std::string_view bytes, std::string& error) {
+      const val failed = io.call<val>("writeFile", path, std::string(bytes));
+      error = reason_of(failed);
+      return failed.isUndefined() || failed.isNull();
+    };
+  if (have_io && is_function(io["writeMesh"]))
+    host.write_mesh = [&](const std::string& path, OutputFormat format, const TinData& tin, std::string& error) {
+      const val failed = io.call<val>("writeMesh", path, std::string(format_id(format)), mesh_data(tin));
+      error = reason_of(failed);
+      return failed.isUndefined() || failed.isNull();
+    };
+  if (have_io && is_function(io["progress"]))
+    host.show_progress = [&](const std::string& text) { io.call<void>("progress", text); };
+  host.stderr_is_terminal = have_io && io["stderrIsTerminal"].isTrue();
+  const CliResult r = run_cli(a, host);
   val out = val::object();
   out.set("exitCode", r.exit_code);
   out.set("stdout", r.out);

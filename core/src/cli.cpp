@@ -1,8 +1,15 @@
 #include "hodt/cli.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
 
+#include "hodt/cli_help.hpp"
+#include "hodt/cli_progress.hpp"
 #include "hodt/error.hpp"
+#include "hodt/file_errors.hpp"
+#include "hodt/format.hpp"
+#include "hodt/k_order.hpp"
 #include "hodt/read_points.hpp"
 #include "hodt/report.hpp"
 #include "hodt/solve.hpp"
@@ -11,14 +18,6 @@
 
 namespace hodt {
 namespace {
-
-const char* kUsage =
-    "usage: hodt stats FILE [--order K] [--dedupe first]\n"
-    "       hodt solve FILE --objective ID [--method brute-force|exact|approx|auto]\n"
-    "                  [--epsilon E] [--order K] [--triangles] [--trace] [--dedupe first]\n"
-    "FILE: CSV/TSV/whitespace 'x y z' lines (optional header), JSON [[x,y,z],...],\n"
-    "      or an ESRI ASCII grid (.asc); '-' reads standard input.\n"
-    "Prints JSON. Exit codes: 0 ok, 2 bad input or usage, 3 refused (a limit).\n";
 
 struct Usage : InputError {
   using InputError::InputError;
@@ -34,21 +33,49 @@ double parse_number(const std::string& flag, const std::string& text) {
   return v;
 }
 
+struct Output {
+  std::string path;
+  OutputFormat format;
+};
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+// The one line the mesh formats carry about what they hold.
+std::string describe(const Solution& s, const std::string& source) {
+  std::string d = std::string("hodt ") + version() + ": " + info(s.objective).id + " = " + format_number(s.value) +
+                  " (Delaunay " + format_number(s.delaunay_value) + "), " + (s.optimal ? "optimal" : "not proven optimal") +
+                  ", method " + s.method;
+  if (s.order > 1) d += ", order " + std::to_string(s.order);
+  return d + ", from " + source;
+}
+
 }  // namespace
 
 CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) {
+  CliHost host;
+  host.read = read;
+  return run_cli(args, host);
+}
+
+CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
   CliResult r;
   try {
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-      r.out = kUsage;
+      r.out = cli_help();
       r.exit_code = args.empty() ? 2 : 0;
+      return r;
+    }
+    if (args[0] == "--version" || args[0] == "version") {
+      r.out = std::string("hodt ") + version() + "\n";
       return r;
     }
     const std::string& command = args[0];
     if (command != "stats" && command != "solve")
       throw Usage("unknown command '" + command + "'; expected stats or solve (hodt --help)");
     std::string file, objective_id;
-    bool have_file = false, triangles = false;
+    bool have_file = false, triangles = false, quiet = false, force_progress = false;
+    std::vector<Output> outputs;
     SolveOptions options;
     Dedupe dedupe = Dedupe::Error;
     bool have_order = false;
@@ -80,11 +107,23 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
         const std::string& d = value();
         if (d != "first" && d != "error") throw Usage("--dedupe expects 'first' or 'error', got '" + d + "'");
         dedupe = d == "first" ? Dedupe::KeepFirst : Dedupe::Error;
-      } else if (a.size() > 1 && a[0] == '-' && a != "-") throw Usage("unknown option '" + a + "' (hodt --help)");
+      } else if (a == "--output") {
+        const std::string& path = value();
+        const auto format = output_format_of(path);
+        if (!format) throw Usage("--output '" + path + "': unknown format; name the file " + output_extensions());
+        if (!host.write) throw Usage("--output '" + path + "': this front end writes no files");
+        if (*format != OutputFormat::Json && !host.write_mesh)
+          throw Usage("--output '" + path + "': this build of hodt writes .json only; for ." + format_id(*format) +
+                      " use the npm CLI: npx hodt");
+        outputs.push_back({path, *format});
+      } else if (a == "--quiet") quiet = true;
+      else if (a == "--progress") force_progress = true;
+      else if (a.size() > 1 && a[0] == '-' && a != "-") throw Usage("unknown option '" + a + "' (hodt --help)");
       else if (!have_file) file = a, have_file = true;
       else throw Usage("unexpected argument '" + a + "'");
     }
     if (!have_file) throw Usage(command + ": missing FILE (hodt --help)");
+    if (quiet && force_progress) throw Usage("--quiet and --progress exclude each other");
     check_options(options);  // before reading the file: the same check at every order
     std::optional<Objective> objective;
     if (command == "solve") {
@@ -92,11 +131,20 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
       objective = parse_objective(objective_id);
       if (!objective) throw Usage("unknown objective '" + objective_id + "'; valid objectives: " + objective_ids());
     }
-    std::string error;
-    const std::optional<std::string> text = read(file, error);
-    if (!text) throw InputError(file + ": " + error);
+
+    CliProgress progress(quiet ? nullptr : host.show_progress, host.stderr_is_terminal, force_progress);
+    PhaseTimes times;
+    auto started = Clock::now();
     const std::string name = file == "-" ? "stdin" : file;
+    progress.step("reading " + name);
+    std::string error;
+    const std::optional<std::string> text = host.read(file, error);
+    if (!text) throw InputError(file + ": " + file_error_message(error, FileAccess::Read));
     const ParsedPoints parsed = read_points(*text, name);
+    times.read_ms = ms_since(started);
+
+    started = Clock::now();
+    progress.step("triangulating " + std::to_string(parsed.lines.size()) + " points");
     PointLabels labels;
     labels.lines = parsed.lines;
     Terrain terrain;
@@ -105,13 +153,53 @@ CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) 
     } catch (const InputError& e) {
       throw InputError(name + ": " + e.what());
     }
+    times.build_ms = ms_since(started);
+    const uint32_t dropped = terrain.num_input_points() - terrain.structure().base.num_vertices();
+    if (dropped > 0 && !quiet)
+      r.err += "hodt: warning: " + name + ": dropped " + std::to_string(dropped) + " point" + (dropped == 1 ? "" : "s") +
+               " at the same (x, y) as an earlier one (--dedupe first)\n";
+
+    // The document printed, the one written to .json (with the triangles), and the
+    // triangulation the mesh formats get.
+    const bool json_output =
+        std::any_of(outputs.begin(), outputs.end(), [](const Output& o) { return o.format == OutputFormat::Json; });
+    std::string printed, written;
+    std::optional<Mesh> solved;
+    std::string comment;
     if (command == "stats") {
-      r.out = stats_json(terrain, have_order ? options.order : 0) + "\n";
+      printed = stats_json(terrain, have_order ? options.order : 0);
+      // ("triangles" is already the count)
+      if (json_output)
+        written = with_triangles_json(printed, terrain.to_input(terrain.delaunay_mesh().triangles), "delaunayTriangles");
+      comment = std::string("hodt ") + version() + ": the Delaunay triangulation of " + name;
     } else {
+      started = Clock::now();
+      progress.step("solving " + objective_id);
+      if (!quiet && host.show_progress && (force_progress || host.stderr_is_terminal))
+        options.progress = [&progress](double done, double total) { return progress.tick(done, total); };
       Solution s = solve(terrain.structure(), *objective, options);
       s.delaunay_value = terrain.delaunay_value(*objective);
-      r.out = solution_json(terrain, s, triangles, options.trace) + "\n";
+      times.solve_ms = ms_since(started);
+      printed = solution_json(terrain, s, triangles, options.trace, &times);
+      if (json_output) written = solution_json(terrain, s, true, options.trace, &times);
+      if (s.mesh) solved = std::move(*s.mesh);
+      else solved = triangulate(terrain.structure(), s.choice);
+      comment = describe(s, name);
     }
+
+    std::optional<TinData> tin;  // made once, for the first mesh format
+    for (const Output& o : outputs) {
+      progress.step("writing " + o.path);
+      bool ok;
+      if (o.format == OutputFormat::Json) {
+        ok = host.write(o.path, written + "\n", error);
+      } else {
+        if (!tin) tin = tin_data(terrain, parsed.xyz, solved ? *solved : terrain.delaunay_mesh(), comment);
+        ok = host.write_mesh(o.path, o.format, *tin, error);
+      }
+      if (!ok) throw InputError("cannot write " + o.path + ": " + file_error_message(error, FileAccess::Write));
+    }
+    r.out = printed + "\n";
   } catch (const InputError& e) {
     r.exit_code = 2;
     r.err = std::string("hodt: ") + e.what() + "\n";

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <optional>
 
 #include "hodt/error.hpp"
+#include "hodt/text_encoding.hpp"
 
 namespace hodt {
 namespace {
@@ -32,12 +34,21 @@ std::string shorten(std::string_view s) {
   return "'" + t + "'";
 }
 
-// Parses the whole token as a finite double; false if it is not a number.
+// Parses the whole token as a double; false if it is not a number. strtod rounds
+// correctly however many digits there are (glibc natively, musl in wasm), and takes
+// a leading '+' and exponents such as 1E+03.
 bool parse_double(std::string_view tok, double& out) {
-  if (tok.empty() || tok.size() > 64) return false;
-  char buf[72];
-  std::copy(tok.begin(), tok.end(), buf);
-  buf[tok.size()] = 0;
+  if (tok.empty()) return false;
+  char small[72];
+  std::string large;
+  const char* buf = small;
+  if (tok.size() < sizeof small) {
+    std::copy(tok.begin(), tok.end(), small);
+    small[tok.size()] = 0;
+  } else {
+    large.assign(tok);
+    buf = large.c_str();
+  }
   char* end = nullptr;
   out = std::strtod(buf, &end);
   return end == buf + tok.size();
@@ -69,19 +80,17 @@ std::vector<std::string_view> split_fields(std::string_view line) {
   return out;
 }
 
+// Lines end with LF (Unix), CR LF (Windows) or a lone CR (classic Mac, some exports).
 template <class F>
 void for_each_line(std::string_view text, F f) {
   int line = 0;
   size_t i = 0;
   while (i <= text.size()) {
-    size_t j = text.find('\n', i);
+    size_t j = text.find_first_of("\r\n", i);
     if (j == std::string_view::npos) j = text.size();
-    ++line;
-    std::string_view s = text.substr(i, j - i);
-    if (!s.empty() && s.back() == '\r') s.remove_suffix(1);
-    f(line, s);
+    f(++line, text.substr(i, j - i));
     if (j == text.size()) break;
-    i = j + 1;
+    i = j + (text[j] == '\r' && j + 1 < text.size() && text[j + 1] == '\n' ? 2 : 1);
   }
 }
 
@@ -151,7 +160,8 @@ struct JsonReader {
   int line = 1;
   void ws() {
     while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) {
-      if (s[i] == '\n') ++line;
+      // LF, CR LF and a lone CR each end one line
+      if (s[i] == '\n' || (s[i] == '\r' && (i + 1 == s.size() || s[i + 1] != '\n'))) ++line;
       ++i;
     }
   }
@@ -307,6 +317,9 @@ ParsedPoints read_ascii_grid(std::string_view text, const Reader& r) {
 
 ParsedPoints read_points(std::string_view text, const std::string& name, PointFormat format) {
   const Reader r{name};
+  // A byte order mark would otherwise make the first line look like a header.
+  const std::optional<std::string> decoded = utf8_from_utf16(text);
+  text = skip_utf8_bom(decoded ? std::string_view(*decoded) : text);
   if (format == PointFormat::Auto) {
     const size_t k = text.find_first_not_of(" \t\r\n");
     if (k == std::string_view::npos) throw InputError(name + ": the file is empty");

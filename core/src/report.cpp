@@ -1,5 +1,7 @@
 #include "hodt/report.hpp"
 
+#include <cmath>
+
 #include "hodt/format.hpp"
 #include "hodt/higher_order.hpp"
 
@@ -39,12 +41,26 @@ std::string json_escape(const std::string& in) {
 }
 
 std::string triangle_json(const Terrain& t, const Tri& tri) {
-  return "[" + std::to_string(t.to_input(tri[0])) + ", " + std::to_string(t.to_input(tri[1])) + ", " +
-         std::to_string(t.to_input(tri[2])) + "]";
+  std::string s = "[";
+  s += std::to_string(t.to_input(tri[0])) + ", " + std::to_string(t.to_input(tri[1])) + ", ";
+  return s + std::to_string(t.to_input(tri[2])) + "]";
 }
+
+// Milliseconds to the microsecond: finer digits are noise.
+std::string ms_json(double ms) { return format_number(std::round(ms * 1000) / 1000); }
 }  // namespace
 
-std::string solution_json(const Terrain& t, const Solution& r, bool with_triangles, bool with_trace) {
+std::string with_triangles_json(std::string s, const std::vector<uint32_t>& tris, const std::string& key) {
+  s.pop_back();  // the closing brace
+  s += ", \"" + key + "\": [";
+  for (size_t k = 0; k + 2 < tris.size(); k += 3)
+    s += (k ? ", [" : "[") + std::to_string(tris[k]) + ", " + std::to_string(tris[k + 1]) + ", " +
+         std::to_string(tris[k + 2]) + "]";
+  return s + "]}";
+}
+
+std::string solution_json(const Terrain& t, const Solution& r, bool with_triangles, bool with_trace,
+                          const PhaseTimes* times) {
   const ObjectiveInfo& oi = info(r.objective);
   std::string s = "{\"objective\": \"" + std::string(oi.id) + "\", \"sense\": \"" +
                   (oi.sense == Sense::Min ? "min" : "max") + "\", \"method\": \"" + r.method +
@@ -54,6 +70,9 @@ std::string solution_json(const Terrain& t, const Solution& r, bool with_triangl
                   ", \"bound\": " + (r.bound ? json_number(*r.bound) : "null") +
                   ", \"flipped\": " + std::to_string(r.mesh ? r.non_delaunay_edges : count_flipped(r.choice)) +
                   ", \"timeMs\": " + json_number(r.time_ms);
+  if (times)
+    s += ", \"times\": {\"readMs\": " + ms_json(times->read_ms) + ", \"buildMs\": " + ms_json(times->build_ms) +
+         ", \"solveMs\": " + ms_json(times->solve_ms) + "}";
   if (r.order > 1) s += ", \"order\": " + std::to_string(r.order);
   if (r.method == "approx") s += std::string(", \"localSearchImproved\": ") + (r.local_search_improved ? "true" : "false");
   if (!r.details.empty()) s += ", \"details\": \"" + json_escape(r.details) + "\"";
@@ -68,15 +87,10 @@ std::string solution_json(const Terrain& t, const Solution& r, bool with_triangl
            ", \"clauses\": " + std::to_string(r.trace[k].clauses) + "}";
     s += "]";
   }
-  if (with_triangles) {
-    const std::vector<uint32_t> tris = t.to_input(r.mesh ? r.mesh->triangles : triangulate(t.structure(), r.choice).triangles);
-    s += ", \"triangles\": [";
-    for (size_t k = 0; k < tris.size(); k += 3)
-      s += (k ? ", [" : "[") + std::to_string(tris[k]) + ", " + std::to_string(tris[k + 1]) + ", " +
-           std::to_string(tris[k + 2]) + "]";
-    s += "]";
-  }
-  return s + "}";
+  s += "}";
+  if (!with_triangles) return s;
+  return with_triangles_json(
+      std::move(s), t.to_input(r.mesh ? r.mesh->triangles : triangulate(t.structure(), r.choice).triangles));
 }
 
 }  // namespace hodt

@@ -1,9 +1,12 @@
 // Exports of the demo (web/demo/src/io): the points CSV reads back to the same
-// doubles with the library's own parser; OBJ and PLY list every point and
-// triangle; the solution JSON has the CLI's keys in the CLI's order.
+// doubles with the library's own parser; the mesh files (the library's writers,
+// hodt/export) hold every point, triangle and attribute the views show; the
+// solution JSON has the CLI's keys in the CLI's order.
 import { loadHodt, type Hodt } from 'hodt';
 import { beforeAll, describe, expect, test } from 'vitest';
-import { triangulationToObj, triangulationToPly } from '../../web/demo/src/io/meshFormats.ts';
+import { analyse, analyseTriangles, readStructure } from '../../web/demo/src/app/analysis.ts';
+import { meshFile } from '../../web/demo/src/io/meshExport.ts';
+import { readOBJ, readPLY } from '../js/meshReaders.ts';
 import { pointsToCsv } from '../../web/demo/src/io/pointsCsv.ts';
 import { solutionToJson } from '../../web/demo/src/io/solutionJson.ts';
 
@@ -20,18 +23,27 @@ describe('exports', () => {
     expect(Array.from(back)).toEqual(Array.from(points));
   });
 
-  test('OBJ and PLY hold every point and triangle', () => {
+  test('OBJ, PLY, GeoJSON and glTF hold every point and triangle; PLY the classes and flipped triangles', () => {
     using terrain = hodt.terrain(points);
-    const { triangles } = terrain.delaunay();
-    const obj = triangulationToObj(points, triangles, 'test').split('\n');
-    expect(obj.filter((l) => l.startsWith('v ')).length).toBe(5);
-    const faces = obj.filter((l) => l.startsWith('f '));
-    expect(faces.length).toBe(triangles.length / 3);
-    expect(faces[0]).toBe(`f ${triangles[0]! + 1} ${triangles[1]! + 1} ${triangles[2]! + 1}`);
-    const ply = triangulationToPly(points, triangles, 'test');
-    expect(ply).toContain(`element vertex 5\n`);
-    expect(ply).toContain(`element face ${triangles.length / 3}\n`);
-    expect(ply.trim().split('\n').at(-1)).toBe(`3 ${triangles.at(-3)} ${triangles.at(-2)} ${triangles.at(-1)}`);
+    const structure = readStructure(terrain);
+    expect(terrain.numQuads).toBeGreaterThan(0);
+    const choice = new Uint8Array(terrain.numQuads).fill(1);
+    const shown = analyse(terrain, structure, points, choice);
+    const obj = readOBJ(new TextDecoder().decode(meshFile('obj', shown, 'test').bytes));
+    expect(obj.points).toEqual(Array.from(points));
+    expect(obj.triangles).toEqual(Array.from(shown.triangles));
+    const ply = readPLY(meshFile('ply', shown, 'test').bytes).elements;
+    expect(ply.vertex!.rows.map((r) => r.class)).toEqual(Array.from(shown.vertexClass));
+    expect(ply.face!.rows.filter((r) => r.non_delaunay === 1)).toHaveLength(2 * terrain.numQuads);
+    const geojson = meshFile('geojson', shown, 'test');
+    expect(geojson.type).toBe('application/geo+json');
+    expect(JSON.parse(new TextDecoder().decode(geojson.bytes)).features).toHaveLength(shown.triangles.length / 3);
+    expect(meshFile('glb', shown, 'test').type).toBe('model/gltf-binary');
+    // An order-k result marks its non-Delaunay triangles the same way.
+    const k = analyseTriangles(terrain, structure, points, shown.triangles);
+    expect(readPLY(meshFile('ply', k, 'test').bytes).elements.face!.rows.map((r) => r.non_delaunay)).toEqual(
+      ply.face!.rows.map((r) => r.non_delaunay),
+    );
   });
 
   test("solution JSON has the CLI's keys and order", () => {

@@ -4,6 +4,7 @@ import { mkdtempSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { loadHodt, type Hodt } from 'hodt';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
+import { readGLB, readOBJ, readPLY } from '../js/meshReaders.ts';
 import { hooks, openPage, screenshot, settled, startDemo, type Demo } from './harness.ts';
 
 let demo: Demo;
@@ -61,12 +62,27 @@ describe('objectives', () => {
     }
     expect(new Set(choices.values()).size).toBe(choices.size); // each objective flips differently
 
-    // The solution JSON download is the CLI's document (up to the time taken).
+    // The solution JSON download is the CLI's document (up to the time taken and
+    // the CLI's own read, build and solve times).
     const [json] = await Promise.all([page.waitForEvent('download'), page.click('#export-json')]);
     await json.saveAs(`${dir}/solution.json`);
     const saved = JSON.parse(readFileSync(`${dir}/solution.json`, 'utf8'));
-    const expected = cli(file, 'min-mixed-vertices');
+    const { times: _times, ...expected } = cli(file, 'min-mixed-vertices');
     expect({ ...saved, timeMs: 0 }).toEqual({ ...expected, timeMs: 0 });
+
+    // The mesh downloads (hodt/export's writers) hold the shown triangulation.
+    const meshes: Record<string, Buffer> = {};
+    for (const format of ['obj', 'ply', 'geojson', 'glb']) {
+      const [d] = await Promise.all([page.waitForEvent('download'), page.click(`#export-${format}`)]);
+      expect(d.suggestedFilename()).toBe(`hodt-min-mixed-vertices.${format}`);
+      await d.saveAs(`${dir}/tin.${format}`);
+      meshes[format] = readFileSync(`${dir}/tin.${format}`);
+    }
+    const numPoints = h.points;
+    expect(readOBJ(meshes.obj!.toString('utf8')).points).toHaveLength(3 * numPoints);
+    expect(readPLY(new Uint8Array(meshes.ply!)).elements.face!.rows.filter((r) => r.non_delaunay === 1)).toHaveLength(2 * h.flipped);
+    expect(JSON.parse(meshes.geojson!.toString('utf8')).features).toHaveLength(h.triangles);
+    expect(readGLB(new Uint8Array(meshes.glb!)).gltf.accessors[0].count).toBe(numPoints);
     await screenshot(page, 'demo-objective.png');
     expect(errors).toEqual([]);
     await context.close();

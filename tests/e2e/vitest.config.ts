@@ -6,7 +6,10 @@ import { defineConfig } from 'vitest/config';
 
 export default defineConfig({
   resolve: {
-    alias: { hodt: fileURLToPath(new URL('../../web/src/index.ts', import.meta.url)) },
+    alias: [
+      { find: /^hodt$/, replacement: fileURLToPath(new URL('../../web/src/index.ts', import.meta.url)) },
+      { find: /^hodt\/export$/, replacement: fileURLToPath(new URL('../../web/src/export.ts', import.meta.url)) },
+    ],
   },
   test: {
     include: ['tests/e2e/**/*.test.ts'],

@@ -40,7 +40,7 @@ const extraNodes = (process.env.HODT_NODES ?? '').split(':').filter(Boolean);
 describe('the tarball', () => {
   it('holds the JS, the types, the wasm and the CLI, and nothing else', () => {
     const paths = project.files.map((f) => f.path).sort();
-    for (const f of ['package.json', 'README.md', 'dist/index.js', 'dist/index.d.ts', 'dist/three.js', 'dist/three.d.ts', 'dist/cli.js', 'dist/wasm/hodt.mjs', 'dist/wasm/hodt.d.mts', 'dist/wasm/hodt.wasm']) {
+    for (const f of ['package.json', 'README.md', 'dist/index.js', 'dist/index.d.ts', 'dist/three.js', 'dist/three.d.ts', 'dist/export.js', 'dist/export.d.ts', 'dist/cli.js', 'dist/wasm/hodt.mjs', 'dist/wasm/hodt.d.mts', 'dist/wasm/hodt.wasm']) {
       expect(paths).toContain(f);
     }
     for (const p of paths) expect(p).toMatch(/^(package\.json|README\.md|docs\/(api|objectives)\.md|dist\/.+\.(js|d\.ts|mjs|d\.mts|wasm))$/);
@@ -61,6 +61,18 @@ describe('the tarball', () => {
     for (const t of targets) expect(paths, t).toContain(t.startsWith('./') ? t : `./${t}`);
     expect(pkg.type).toBe('module');
     expect(pkg.sideEffects).toBe(false);
+  });
+
+  it('hodt/export is an entry of its own: the main entry imports none of it at run time', () => {
+    const imports = (f: string): string[] => {
+      const text = readFileSync(join(project.dir, 'node_modules/hodt/dist', f), 'utf8');
+      const found = [...text.matchAll(/^(?:import|export)\b[^'"]*?from\s*['"](\.[^'"]+)['"]/gm)].map((m) => m[1]!);
+      return found.flatMap((s) => [s, ...imports(join(f, '..', s))]);
+    };
+    const reached = imports('index.js');
+    expect(reached).toContain('./load.js');
+    expect(reached.filter((s) => /export/.test(s))).toEqual([]);
+    expect(imports('export.js').filter((s) => /wasm|index|terrain/.test(s))).toEqual([]);
   });
 
   it('has no eval or new Function (a page can forbid unsafe-eval)', () => {
@@ -113,6 +125,15 @@ describe('CLI (npm bin)', () => {
     expect(j.points).toBe(50);
     expect(Object.keys(j.delaunay)).toHaveLength(13);
   });
+  it('npx hodt --version, and --output writes the mesh formats with hodt/export', () => {
+    const pkg = JSON.parse(readFileSync(join(repo, 'package.json'), 'utf8'));
+    expect(inProject('npx', ['--no', '--', 'hodt', '--version']).stdout).toBe(`hodt ${pkg.version}\n`);
+    const r = inProject('npx', ['--no', 'hodt', 'solve', fixture, '--objective', 'min-local-minima', '--output', 'cli.ply', '--output', 'cli.glb', '--output', 'cli.geojson']);
+    expect(r.status, r.stderr).toBe(0);
+    expect(readFileSync(join(project.dir, 'cli.ply'), 'latin1')).toMatch(/^ply\nformat binary_little_endian 1\.0\n/);
+    expect(readFileSync(join(project.dir, 'cli.glb')).readUInt32LE(0)).toBe(0x46546c67);
+    expect(JSON.parse(readFileSync(join(project.dir, 'cli.geojson'), 'utf8')).type).toBe('FeatureCollection');
+  });
   it('npx hodt solve reads standard input and reports bad files with exit code 2', () => {
     const ok = spawnSync('npx', ['--no', 'hodt', 'solve', '-', '--objective', 'min-local-minima'], {
       cwd: project.dir,
@@ -157,6 +178,14 @@ describe('TypeScript', () => {
     const r = inProject('node', ['examples/out/node.js', fixture]);
     expect(r.status, r.stderr).toBe(0);
     expect(r.stdout).toMatch(/^\d+ flippable quads; local minima: Delaunay \d+, optimal \d+\nUint32Array\(\d+\)/);
+  });
+  it('the hodt/export example runs and writes its files', () => {
+    check('tsconfig.json', ['--noEmit', 'false', '--outDir', 'examples/out']);
+    const r = inProject('node', ['examples/out/export.js']);
+    expect(r.status, r.stderr).toBe(0);
+    expect(r.stdout).toBe('3 [ 731012.3456789, 5501234.5, 12 ]\n');
+    expect(readFileSync(join(project.dir, 'tin.ply'), 'latin1')).toContain('property uchar non_delaunay\n');
+    expect(readFileSync(join(project.dir, 'tin.glb')).readUInt32LE(0)).toBe(0x46546c67);
   });
 });
 

@@ -24,11 +24,13 @@ const row = (what, buffers) => {
 };
 const read = (f) => readFileSync(join(dist, f));
 
-const library = readdirSync(dist).filter((f) => f.endsWith('.js') && !['cli.js', 'three.js'].includes(f));
+const library = readdirSync(dist).filter((f) => f.endsWith('.js') && !['cli.js', 'three.js', 'export.js'].includes(f));
+const exporters = ['export.js', ...readdirSync(join(dist, 'export')).filter((f) => f.endsWith('.js')).map((f) => `export/${f}`)];
 row('`dist/wasm/hodt.wasm`', [read('wasm/hodt.wasm')]);
 row('`dist/wasm/hodt.mjs` (Emscripten glue)', [read('wasm/hodt.mjs')]);
 row(`library JS as shipped (${library.length} files, unminified)`, library.map(read));
 row('`hodt/three` as shipped', [read('three.js')]);
+row(`\`hodt/export\` as shipped (${exporters.length} files, unminified)`, exporters.map(read));
 
 // A user's production bundle: Vite (Rolldown, minified) of one import.
 const { build } = await import(join(repo, 'node_modules/vite/dist/node/index.js'));

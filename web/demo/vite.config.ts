@@ -8,12 +8,13 @@ const repo = here('../../');
 export default defineConfig({
   root: here('.'),
   resolve: {
-    alias: {
-      // The demo uses the library only through its public entry point.
-      hodt: here('../src/index.ts'),
+    alias: [
+      // The demo uses the library only through its public entry points.
+      { find: /^hodt$/, replacement: here('../src/index.ts') },
+      { find: /^hodt\/export$/, replacement: here('../src/export.ts') },
       // vega-datasets' package exports hide its data files; reach them directly.
-      'vega-data': here('../../node_modules/vega-datasets/data'),
-    },
+      { find: 'vega-data', replacement: here('../../node_modules/vega-datasets/data') },
+    ],
   },
   server: {
     host: '127.0.0.1',

@@ -10,6 +10,7 @@
  */
 import { describeValue, guard, InputError } from './errors.js';
 import { loadModule, type LoadOptions } from './load.js';
+import type { MeshData, MeshFormat } from './export/meshData.js';
 import type { ObjectiveInfo } from './objectives.js';
 import { type PointInput, toXyz } from './points.js';
 import { Terrain } from './terrain.js';
@@ -39,6 +40,20 @@ export interface CliResult {
   exitCode: number;
   stdout: string;
   stderr: string;
+}
+
+/** What runCli may use besides reading files (the npm bin gives all of it). */
+export interface CliIo {
+  /** Writes `--output FILE.json`; returns an Error (with a Node `code` such as
+   * 'ENOENT', or a message) if it cannot. Without it, --output is refused. */
+  writeFile?: (path: string, text: string) => Error | undefined;
+  /** Writes `--output FILE.obj|.ply|.geojson|.glb`, typically with hodt/export's
+   * exportMesh(format, mesh); returns an Error as writeFile. */
+  writeMesh?: (path: string, format: MeshFormat, mesh: Required<MeshData>) => Error | undefined;
+  /** Receives progress text for stderr as it happens (with its own line ends). */
+  progress?: (text: string) => void;
+  /** Is stderr a terminal: progress then appears after a second, redrawn in place. */
+  stderrIsTerminal?: boolean;
 }
 
 /** The loaded library (from loadHodt()). It holds no per-terrain state. */
@@ -78,9 +93,11 @@ export class Hodt {
     );
   }
 
-  /** Parses the text of a point file: CSV/TSV/whitespace x y z, JSON [[x, y, z],
-   * ...] or an ESRI ASCII grid. Errors name the file, line and value. */
-  readPoints(text: string, name = 'input'): ParsedPoints {
+  /** Parses a point file: CSV/TSV/whitespace x y z, JSON [[x, y, z], ...] or an
+   * ESRI ASCII grid, given as text or as the file's bytes (UTF-8 with or without a
+   * byte order mark, or UTF-16); any line endings. Errors name the file, line and
+   * value. */
+  readPoints(text: string | Uint8Array, name = 'input'): ParsedPoints {
     return guard(() => {
       const r = this.#module.readPoints(text, name);
       return { points: r.xyz, lines: r.lines };
@@ -94,9 +111,10 @@ export class Hodt {
   }
 
   /** Runs the `hodt` command line in-process (the npm bin uses it); `read`
-   * returns a file's text, or an Error whose message the CLI reports. */
-  runCli(args: string[], read: (path: string) => string | Error): CliResult {
-    return this.#module.runCli(args, read);
+   * returns a file's text or bytes, or an Error (with a Node `code` such as
+   * 'ENOENT', or a message) that the CLI reports. */
+  runCli(args: string[], read: (path: string) => string | Uint8Array | Error, io?: CliIo): CliResult {
+    return this.#module.runCli(args, read, io);
   }
 }
 

@@ -16,6 +16,9 @@ struct ParsedPoints {
 
 // Throws InputError "<name>: line L: <what is wrong>". Auto picks the format from
 // the content: '[' starts JSON, an "ncols" header an ASCII grid, anything else text.
+// The text may start with a UTF-8 byte order mark or be UTF-16 (with its mark);
+// lines end with LF, CR LF or CR; numbers are read correctly rounded, whatever
+// their length, with an optional '+' and exponent.
 ParsedPoints read_points(std::string_view text, const std::string& name,
                          PointFormat format = PointFormat::Auto);
 

@@ -10,9 +10,21 @@ namespace hodt {
 // {"points", "triangles", "edges", "flippable", "hullVertices", "delaunay": {id: value}}
 // With order k > 1 (or k given): also "usefulEdges" and "usefulTriangles" counts.
 std::string stats_json(const Terrain& terrain, uint32_t order = 0);
+// How long the CLI's steps took, in milliseconds.
+struct PhaseTimes {
+  double read_ms = 0;   // reading and parsing the file
+  double build_ms = 0;  // Delaunay triangulation and first order structure
+  double solve_ms = 0;  // the solve, with the Delaunay value it is compared to
+};
+
 // {"objective", "sense", "method", "value", "delaunayValue", "optimal", "bound",
-//  "flipped", "timeMs"[, "critical": {"first", "second", "value"}]
+//  "flipped", "timeMs"[, "times": {"readMs", "buildMs", "solveMs"}]
+//  [, "critical": {"first", "second", "value"}]
 //  [, "trace": [{"threshold", "satisfiable", "clauses"}, ...]][, "triangles"]}
-std::string solution_json(const Terrain& terrain, const Solution& s, bool with_triangles, bool with_trace = false);
+std::string solution_json(const Terrain& terrain, const Solution& s, bool with_triangles, bool with_trace = false,
+                          const PhaseTimes* times = nullptr);
+// A JSON document (an object) with "key": [[i, j, k], ...] (input indices) added last.
+std::string with_triangles_json(std::string document, const std::vector<uint32_t>& input_triangles,
+                                const std::string& key = "triangles");
 
 }  // namespace hodt

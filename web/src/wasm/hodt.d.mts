@@ -68,13 +68,29 @@ export interface RawObjective {
   integral: boolean;
   summary: string;
 }
+/** A triangulation to write (hodt/export's MeshData, every attribute given). */
+export interface RawMesh {
+  points: Float64Array;
+  triangles: Uint32Array;
+  vertexClass: Uint8Array;
+  extremum: Uint8Array;
+  nonDelaunay: Uint8Array;
+  comment: string;
+}
+export interface RawCliIo {
+  writeFile?: (path: string, text: string) => Error | undefined;
+  writeMesh?: (path: string, format: 'obj' | 'ply' | 'geojson' | 'glb', mesh: RawMesh) => Error | undefined;
+  progress?: (text: string) => void;
+  stderrIsTerminal?: boolean;
+}
 export interface HodtModule {
   fromPoints(xyz: Float64Array, dedupe: boolean): RawTerrain;
   fromTriangulation(xyz: Float64Array, triangles: Uint32Array, flippable: Uint32Array): RawTerrain;
-  readPoints(text: string, name: string): { xyz: Float64Array; lines: Int32Array };
+  readPoints(text: string | Uint8Array, name: string): { xyz: Float64Array; lines: Int32Array };
   runCli(
     args: string[],
-    read: (path: string) => string | Error,
+    read: (path: string) => string | Uint8Array | Error,
+    io: RawCliIo | undefined,
   ): { exitCode: number; stdout: string; stderr: string };
   objectiveTable(): RawObjective[];
   heapSize(): number;

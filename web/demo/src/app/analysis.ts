@@ -1,4 +1,5 @@
 import type { Choice, ObjectiveValues, Terrain } from 'hodt';
+import { nonDelaunayTriangles } from 'hodt/export';
 
 /** Everything the views draw for one triangulation; every index is a point
  * index (the points as given to hodt.terrain). */
@@ -88,12 +89,8 @@ export function countFlipped(choice: Choice): number {
 export function analyseTriangles(terrain: Terrain, structure: Structure, points: Float64Array, triangles: Uint32Array): Analysis {
   const delaunay = terrain.delaunay();
   const m = terrain.measuresOfTriangles(triangles);
-  const key = (a: number, b: number, c: number) => [a, b, c].sort((x, y) => x - y).join(',');
-  const inDelaunay = new Set<string>();
-  for (let k = 0; k < delaunay.triangles.length; k += 3) inDelaunay.add(key(delaunay.triangles[k]!, delaunay.triangles[k + 1]!, delaunay.triangles[k + 2]!));
   const numTriangles = triangles.length / 3;
-  const changed = new Uint8Array(numTriangles);
-  for (let k = 0; k < numTriangles; k++) changed[k] = inDelaunay.has(key(triangles[3 * k]!, triangles[3 * k + 1]!, triangles[3 * k + 2]!)) ? 0 : 1;
+  const changed = nonDelaunayTriangles(triangles, delaunay.triangles);
   return {
     points,
     triangles,

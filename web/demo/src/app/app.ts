@@ -1,7 +1,7 @@
 import { InputError, type Hodt, type ObjectiveInfo, type Solution } from 'hodt';
 import { Vector2 } from 'three';
-import { downloadText } from '../io/download.ts';
-import { triangulationToObj, triangulationToPly } from '../io/meshFormats.ts';
+import { download } from '../io/download.ts';
+import { meshFile } from '../io/meshExport.ts';
 import { pointsToCsv } from '../io/pointsCsv.ts';
 import { readTextFile } from '../io/readTextFile.ts';
 import { solutionToJson } from '../io/solutionJson.ts';
@@ -345,10 +345,11 @@ export function startApp(hodt: Hodt): void {
   function exportAs(format: ExportFormat): void {
     const base = `hodt-${settings.objective}`;
     const about = solution ? `${solution.objective} = ${solution.value} (Delaunay ${solution.delaunayValue})` : 'Delaunay triangulation';
-    if (format === 'csv') downloadText('hodt-points.csv', pointsToCsv(points), 'text/csv');
-    else if (format === 'obj') downloadText(`${base}.obj`, triangulationToObj(points, shown!.triangles, `hodt: ${about}`), 'model/obj');
-    else if (format === 'ply') downloadText(`${base}.ply`, triangulationToPly(points, shown!.triangles, `hodt: ${about}`));
-    else if (solution) downloadText(`${base}.json`, solutionToJson(solution), 'application/json');
+    if (format === 'csv') download('hodt-points.csv', pointsToCsv(points), 'text/csv');
+    else if (format !== 'json') {
+      const { bytes, type } = meshFile(format, shown!, `hodt: ${about}`);
+      download(`${base}.${format}`, bytes, type);
+    } else if (solution) download(`${base}.json`, solutionToJson(solution), 'application/json');
     else notice.show('No solution to export yet: wait for the solver to finish.', 'info');
   }
 

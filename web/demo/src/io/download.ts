@@ -1,6 +1,6 @@
-/** Saves text as a file through a temporary link. */
-export function downloadText(name: string, text: string, type = 'text/plain'): void {
-  const url = URL.createObjectURL(new Blob([text], { type }));
+/** Saves text or bytes as a file through a temporary link. */
+export function download(name: string, data: string | Uint8Array, type = 'text/plain'): void {
+  const url = URL.createObjectURL(new Blob([data as BlobPart], { type }));
   const a = document.createElement('a');
   a.href = url;
   a.download = name;

@@ -7,7 +7,7 @@ export interface TerrainSource {
   seed: number;
 }
 
-export type ExportFormat = 'csv' | 'obj' | 'ply' | 'json';
+export type ExportFormat = 'csv' | 'obj' | 'ply' | 'geojson' | 'glb' | 'json';
 
 /** Built-in terrain picker with point count and seed sliders; import and export
  * buttons. Sliders regenerate when released. */
@@ -64,7 +64,7 @@ export function createTerrainPanel(): TerrainPanel {
   });
 
   const exportHandlers: ((f: ExportFormat) => void)[] = [];
-  for (const format of ['csv', 'obj', 'ply', 'json'] as const) {
+  for (const format of ['csv', 'obj', 'ply', 'geojson', 'glb', 'json'] as const) {
     byId(`export-${format}`).addEventListener('click', () => exportHandlers.forEach((e) => e(format)));
   }
 

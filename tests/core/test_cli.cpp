@@ -1,0 +1,177 @@
+// The CLI contract through a fake front end: files in memory, progress recorded.
+#include <doctest/doctest.h>
+
+#include <map>
+#include <string>
+
+#include "hodt/cli.hpp"
+#include "hodt/cli_help.hpp"
+#include "hodt/file_errors.hpp"
+#include "hodt/tin_output.hpp"
+
+using namespace hodt;
+
+namespace {
+
+// A front end whose files live in a map; mesh files record the TinData they got.
+struct FakeHost {
+  std::map<std::string, std::string> files;
+  std::map<std::string, std::pair<OutputFormat, TinData>> meshes;
+  std::string progress;
+  bool terminal = false;
+
+  CliHost host(bool with_mesh_writer = true) {
+    CliHost h;
+    h.read = [this](const std::string& path, std::string& error) -> std::optional<std::string> {
+      const auto it = files.find(path);
+      if (it == files.end()) {
+        error = "ENOENT";
+        return std::nullopt;
+      }
+      return it->second;
+    };
+    h.write = [this](const std::string& path, std::string_view bytes, std::string& error) {
+      if (path.rfind("/readonly/", 0) == 0) return error = "EACCES", false;
+      files[path] = std::string(bytes);
+      return true;
+    };
+    if (with_mesh_writer)
+      h.write_mesh = [this](const std::string& path, OutputFormat f, const TinData& tin, std::string&) {
+        meshes.insert_or_assign(path, std::make_pair(f, tin));
+        return true;
+      };
+    h.show_progress = [this](const std::string& text) { progress += text; };
+    h.stderr_is_terminal = terminal;
+    return h;
+  }
+};
+
+// Five points: a square with a high point off the centre, and a duplicate.
+const std::string kPoints = "x y z\n0 0 0\n4 0 1\n4 4 0\n0 4 1\n1.5 2.5 9\n4 0 7\n";
+
+}  // namespace
+
+TEST_CASE("output formats by extension") {
+  CHECK(output_format_of("a/b/tin.JSON") == OutputFormat::Json);
+  CHECK(output_format_of("tin.obj") == OutputFormat::Obj);
+  CHECK(output_format_of("tin.Ply") == OutputFormat::Ply);
+  CHECK(output_format_of("tin.geojson") == OutputFormat::GeoJson);
+  CHECK(output_format_of("tin.glb") == OutputFormat::Glb);
+  CHECK(!output_format_of("tin.gltf"));
+  CHECK(!output_format_of("tin"));
+  CHECK(!output_format_of("dir.obj/tin"));
+  CHECK(output_extensions() == ".json, .obj, .ply, .geojson or .glb");
+}
+
+TEST_CASE("non-Delaunay triangles: by their corners, any rotation") {
+  const std::vector<uint32_t> delaunay = {0, 1, 2, 0, 2, 3};
+  CHECK(non_delaunay_triangles({1, 2, 0, 3, 0, 2}, delaunay) == std::vector<uint8_t>{0, 0});
+  CHECK(non_delaunay_triangles({0, 1, 3, 1, 2, 3}, delaunay) == std::vector<uint8_t>{1, 1});
+}
+
+TEST_CASE("--output writes .json itself and hands the mesh formats to the front end") {
+  FakeHost fake;
+  fake.files["p.txt"] = kPoints;
+  const CliResult r = run_cli({"solve", "p.txt", "--objective", "min-local-minima", "--dedupe", "first", "--output",
+                               "out.json", "--output", "out.PLY", "--output", "out.glb"},
+                              fake.host());
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err == "hodt: warning: p.txt: dropped 1 point at the same (x, y) as an earlier one (--dedupe first)\n");
+  const std::string& json = fake.files["out.json"];
+  CHECK(json.rfind("{\"objective\": \"min-local-minima\"", 0) == 0);
+  CHECK(json.find("\"times\": {\"readMs\": ") != std::string::npos);
+  CHECK(json.find(", \"triangles\": [[") != std::string::npos);
+  CHECK(r.out.find("\"triangles\"") == std::string::npos);  // printed without, as before
+  REQUIRE(fake.meshes.size() == 2);
+  const auto& [format, tin] = fake.meshes.at("out.PLY");
+  CHECK(format == OutputFormat::Ply);
+  CHECK(fake.meshes.at("out.glb").first == OutputFormat::Glb);
+  // Every input point as read, the duplicate too, which is no vertex (class 255).
+  CHECK(tin.points == std::vector<double>{0, 0, 0, 4, 0, 1, 4, 4, 0, 0, 4, 1, 1.5, 2.5, 9, 4, 0, 7});
+  CHECK(tin.triangles.size() == 3 * 4);
+  CHECK(tin.vertex_class.size() == 6);
+  CHECK(tin.vertex_class[5] == 255);
+  CHECK(tin.vertex_class[0] == 4);  // a hull vertex: boundary
+  CHECK(tin.extremum[4] == 2);      // the high point in the middle is a peak
+  CHECK(tin.non_delaunay.size() == 4);
+  CHECK(tin.comment.rfind(std::string("hodt ") + version() + ": min-local-minima = ", 0) == 0);
+}
+
+TEST_CASE("stats --output writes the Delaunay triangulation") {
+  FakeHost fake;
+  fake.files["p.txt"] = kPoints;
+  const CliResult r = run_cli({"stats", "p.txt", "--dedupe", "first", "--quiet", "--output", "d.json", "--output", "d.obj"},
+                              fake.host());
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.empty());  // --quiet: no warning
+  CHECK(fake.files["d.json"].find("\"triangles\": 4, ") != std::string::npos);
+  CHECK(fake.files["d.json"].find("\"delaunayTriangles\": [[") != std::string::npos);
+  const TinData& tin = fake.meshes.at("d.obj").second;
+  CHECK(tin.non_delaunay == std::vector<uint8_t>(4, 0));
+  CHECK(tin.comment == std::string("hodt ") + version() + ": the Delaunay triangulation of p.txt");
+}
+
+TEST_CASE("--output refusals and failures: one line each") {
+  FakeHost fake;
+  fake.files["p.txt"] = kPoints;
+  auto err = [&](std::vector<std::string> args, bool mesh_writer = true) {
+    const CliResult r = run_cli(args, fake.host(mesh_writer));
+    CHECK(r.exit_code == 2);
+    CHECK(r.out.empty());
+    return r.err;
+  };
+  CHECK(err({"stats", "p.txt", "--output", "t.stl"}) ==
+        "hodt: --output 't.stl': unknown format; name the file .json, .obj, .ply, .geojson or .glb\n");
+  CHECK(err({"stats", "p.txt", "--output", "t.obj"}, false) ==
+        "hodt: --output 't.obj': this build of hodt writes .json only; for .obj use the npm CLI: npx hodt\n");
+  CHECK(err({"stats", "p.txt", "--dedupe", "first", "--output", "/readonly/t.json"}) ==
+        "hodt: cannot write /readonly/t.json: permission denied\n");
+  CHECK(err({"stats", "missing.txt"}) == "hodt: missing.txt: no such file\n");
+  CHECK(err({"stats", "p.txt", "--quiet", "--progress"}) == "hodt: --quiet and --progress exclude each other\n");
+  // run_cli(args, read): no writer at all.
+  const CliResult r = run_cli({"stats", "p.txt", "--output", "t.json"}, fake.host().read);
+  CHECK(r.err == "hodt: --output 't.json': this front end writes no files\n");
+}
+
+TEST_CASE("file errors in the same words for every front end") {
+  CHECK(file_error_message("ENOENT", FileAccess::Read) == "no such file");
+  CHECK(file_error_message("ENOENT", FileAccess::Write) == "no such directory");
+  CHECK(file_error_message("EISDIR", FileAccess::Write) == "is a directory");
+  CHECK(file_error_message("EBUSY", FileAccess::Read) == "cannot read the file (EBUSY)");
+  CHECK(file_error_message("errno 5", FileAccess::Write) == "cannot write the file (errno 5)");
+  CHECK(file_error_message("", FileAccess::Read) == "cannot read the file");
+  CHECK(file_error_message("the server said no", FileAccess::Read) == "the server said no");
+}
+
+TEST_CASE("progress: steps with --progress; nothing on a terminal for a short run; the line cleared") {
+  FakeHost fake;
+  fake.files["p.txt"] = kPoints;
+  const std::vector<std::string> args = {"solve", "p.txt", "--objective", "max-convex-edges", "--dedupe", "first"};
+  run_cli(args, fake.host());
+  CHECK(fake.progress.empty());  // not a terminal, not asked for
+  std::vector<std::string> forced = args;
+  forced.push_back("--progress");
+  run_cli(forced, fake.host());
+  CHECK(fake.progress == "hodt: reading p.txt\nhodt: triangulating 6 points\nhodt: solving max-convex-edges\n");
+  fake.progress.clear();
+  fake.terminal = true;
+  run_cli(args, fake.host());
+  CHECK(fake.progress.empty());  // under a second
+  run_cli(forced, fake.host());
+  CHECK(fake.progress ==
+        "\r\x1b[Khodt: reading p.txt\r\x1b[Khodt: triangulating 6 points\r\x1b[Khodt: solving max-convex-edges\r\x1b[K");
+}
+
+TEST_CASE("--version and --help") {
+  FakeHost fake;
+  const CliResult v = run_cli({"--version"}, fake.host());
+  CHECK(v.exit_code == 0);
+  CHECK(v.out == std::string("hodt ") + version() + "\n");
+  const CliResult h = run_cli({"--help"}, fake.host());
+  CHECK(h.exit_code == 0);
+  for (const auto& o : objectives())
+    CHECK(h.out.find("  " + std::string(o.id) + " [" + objective_unit(o.objective) + "]\n      " + o.summary + "\n") !=
+          std::string::npos);
+  CHECK(std::string(objective_unit(Objective::MinmaxEdgeNormalAngle)).rfind("radians", 0) == 0);
+  CHECK(std::string(objective_unit(Objective::MinmaxTriangleArea)) == "squared plane units");
+}
