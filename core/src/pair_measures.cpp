@@ -89,10 +89,12 @@ bool rough_normal(const Mesh& m, const Tri& t, double n[3]) {
 double pair_normal_angle(const Mesh& m, const Tri& s, const Tri& t, double cut) {
   // Rough normals within 2^-29 radians each: when the cosine of their angle
   // exceeds cos(cut) by 2^-20 (far more than its rounding), their angle is below
-  // cut - 2^-20 and the exact one below cut. Most pairs end here.
+  // cut - 2^-20 and the exact one below cut. Most pairs end here. (In the
+  // coordinate range |n|^2 < 2^608 and a product of two would overflow: the
+  // norms are taken one by one.)
   double n[3], k[3];
   if (cut > 0 && rough_normal(m, s, n) && rough_normal(m, t, k) &&
-      normals_dot(n, k) >= std::sqrt(normals_dot(n, n) * normals_dot(k, k)) * (cos_of(cut) + 0x1p-20))
+      normals_dot(n, k) >= std::sqrt(normals_dot(n, n)) * std::sqrt(normals_dot(k, k)) * (cos_of(cut) + 0x1p-20))
     return 0;
   return normal_angle_above(triangle_normal(m, s), triangle_normal(m, t), cut);
 }

@@ -14,9 +14,14 @@ using namespace hodt::test;
 
 TEST_CASE("pair filters: the measure, or at most the cut when the measure is") {
   size_t pairs = 0, filtered = 0;
-  for (uint64_t seed = 1; seed <= 30; ++seed) {
-    const std::vector<double> xyz = seed % 3 == 0 ? sliver_points(40, seed) : seed % 3 == 1 ? dem_points(200, seed)
-                                                                                               : rotated_hull_points(30, 10, seed);
+  for (uint64_t seed = 1; seed <= 36; ++seed) {
+    std::vector<double> xyz = seed % 3 == 0 ? sliver_points(40, seed) : seed % 3 == 1 ? dem_points(200, seed)
+                                                                                         : rotated_hull_points(30, 10, seed);
+    // Steep random heights (angles past pi/2) at both ends of the coordinate range.
+    if (seed > 30) {
+      xyz = uniform_points(60, seed);
+      for (double& v : xyz) v = (v + 0.1) * (seed % 2 ? 1e44 : 1e-44);
+    }
     const Terrain t = Terrain::from_points(xyz);
     const Mesh& m = t.structure().base;
     Rng r(seed);

@@ -73,9 +73,9 @@ inline double accurate_det(const double* a, const double* b, const double* c, in
   const Difference ux = difference(b[i], a[i]), uy = difference(b[j], a[j]);
   const Difference vx = difference(c[i], a[i]), vy = difference(c[j], a[j]);
   // The products of the rounded differences plus the first-order terms of their
-  // errors, c (zero when the differences are exact). With u = 2^-53 and S = |p| +
-  // |q| the error is at most u S (products) + u |det| (p - q) + u |det| (+ c, if
-  // not 0) + O(u^2 S): within 4u |det| when S <= 3 |det| (c = 0) or S <= 2 |det|,
+  // errors, e (zero when the differences are exact). With u = 2^-53 and S = |p| +
+  // |q| the error is at most u S (products) + u |det| (p - q) + u |det| (+ e, if
+  // not 0) + O(u^2 S): within 4u |det| when S <= 3 |det| (e = 0) or S <= 2 |det|,
   // so the sign is exact too. That holds whenever p and q have opposite signs
   // (S = |det|), and for most other triangles.
   const double p = ux.d * vy.d, q = uy.d * vx.d;
