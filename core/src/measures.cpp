@@ -1,8 +1,8 @@
 #include "hodt/measures.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
+#include <cstring>
 
 #include "hodt/kernel.hpp"
 #include "hodt/portable_math.hpp"
@@ -67,9 +67,15 @@ bool xy_less(const double* p, const double* q) { return p[0] < q[0] || (p[0] == 
 // 1 / 2^e for the binade [2^e, 2^(e+1)) of a positive normal double x: the
 // power of two that scales x into [1, 2), read off its exponent bits (cheaper
 // than ilogb and ldexp; exact and the same on every platform).
+// (memcpy, not std::bit_cast: Emscripten 3.1.6's libc++ lacks it.)
 double inverse_binade(double x) {
-  const uint64_t biased = std::bit_cast<uint64_t>(x) >> 52;  // e + 1023, in 1..2046
-  return std::bit_cast<double>((2046 - biased) << 52);        // biased exponent 1023 - e
+  uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  const uint64_t biased = bits >> 52;  // e + 1023, in 1..2046
+  bits = (2046 - biased) << 52;        // biased exponent 1023 - e
+  double r;
+  std::memcpy(&r, &bits, sizeof r);
+  return r;
 }
 }  // namespace
 
