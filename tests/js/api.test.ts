@@ -1,17 +1,12 @@
 // The TypeScript API against the real wasm module in Node.
 import { beforeAll, describe, expect, it } from 'vitest';
 import { type Hodt, InputError, LimitError, loadHodt, OBJECTIVE_IDS } from '../../web/src/index.js';
+import { randomPoints } from './randomPoints.js';
 
 let hodt: Hodt;
 beforeAll(async () => {
   hodt = await loadHodt();
 });
-
-function randomPoints(n: number, seed: number): Float64Array {
-  let s = seed;
-  const r = () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
-  return Float64Array.from({ length: 3 * n }, r);
-}
 
 describe('terrain handles', () => {
   it('builds a terrain and reads its structure as typed arrays', () => {

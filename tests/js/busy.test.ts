@@ -4,15 +4,10 @@
 // reads are allowed, and other terrains are free to use.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { BusyError, type Hodt, InputError, loadHodt, type Terrain } from '../../web/src/index.js';
+import { randomPoints } from './randomPoints.js';
 
 let hodt: Hodt;
 let other: Terrain;
-
-function randomPoints(n: number, seed: number): Float64Array {
-  let s = seed;
-  const r = () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
-  return Float64Array.from({ length: 3 * n }, r);
-}
 
 beforeAll(async () => {
   hodt = await loadHodt();

@@ -4,18 +4,13 @@
 import { spawnSync } from 'node:child_process';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type Hodt, InputError, LimitError, loadHodt, type Terrain } from '../../web/src/index.js';
+import { randomPoints } from './randomPoints.js';
 
 const root = new URL('../../', import.meta.url).pathname;
 const fixture = (name: string) => `${root}tests/fixtures/${name}`;
 
 let hodt: Hodt;
 let small: Terrain;
-
-function randomPoints(n: number, seed: number): Float64Array {
-  let s = seed;
-  const r = () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
-  return Float64Array.from({ length: 3 * n }, r);
-}
 
 beforeAll(async () => {
   hodt = await loadHodt();
@@ -126,7 +121,7 @@ describe('CLI: the same one-line message from the native and the wasm binary', (
     const w = wasm(args), n = native(args);
     expect(w.code).toBe(0);
     expect(JSON.parse(w.out)).toMatchObject({ method: 'brute-force', optimal: true });
-    const drop = (text: string) => ({ ...JSON.parse(text), timeMs: 0 });
+    const drop = (text: string) => ({ ...JSON.parse(text), timeMs: 0, times: null });
     expect(drop(n.out)).toEqual(drop(w.out));
     const large = ['solve', fixture('uniform-300.csv'), '--objective', 'min-local-minima', '--method', 'brute-force', '--order', '2'];
     const w300 = wasm(large);

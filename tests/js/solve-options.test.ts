@@ -1,15 +1,10 @@
 // Terrain.solve options: order, progress, AbortSignal, and the triangles it returns.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { CancelledError, type Hodt, HodtError, InputError, loadHodt, type Terrain } from '../../web/src/index.js';
+import { randomPoints } from './randomPoints.js';
 
 let hodt: Hodt;
 let terrain: Terrain;
-
-function randomPoints(n: number, seed: number): Float64Array {
-  let s = seed;
-  const r = () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
-  return Float64Array.from({ length: 3 * n }, r);
-}
 
 beforeAll(async () => {
   hodt = await loadHodt();

@@ -3,17 +3,12 @@ import * as THREE from 'three';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { type Hodt, InputError, loadHodt } from '../../web/src/index.js';
 import { setTriangles, terrainGeometry } from '../../web/src/three.js';
+import { randomPoints } from './randomPoints.js';
 
 let hodt: Hodt;
 beforeAll(async () => {
   hodt = await loadHodt();
 });
-
-function randomPoints(n: number, seed: number): Float64Array {
-  let s = seed;
-  const r = () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
-  return Float64Array.from({ length: 3 * n }, r);
-}
 
 describe('terrainGeometry', () => {
   it('makes an indexed BufferGeometry with positions and normals', () => {
