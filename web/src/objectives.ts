@@ -1,4 +1,4 @@
-/** The 13 objectives (DEFINITIONS.md). */
+/** The 13 objectives (docs/objectives.md). */
 export const OBJECTIVE_IDS = [
   'max-convex-vertices',
   'minmax-edge-area-ratio',
