@@ -1,8 +1,8 @@
 #include "hodt/measures.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
+#include <cstring>
 
 #include "hodt/kernel.hpp"
 #include "hodt/portable_math.hpp"
@@ -68,8 +68,12 @@ bool xy_less(const double* p, const double* q) { return p[0] < q[0] || (p[0] == 
 // power of two that scales x into [1, 2), read off its exponent bits (cheaper
 // than ilogb and ldexp; exact and the same on every platform).
 double inverse_binade(double x) {
-  const uint64_t biased = std::bit_cast<uint64_t>(x) >> 52;  // e + 1023, in 1..2046
-  return std::bit_cast<double>((2046 - biased) << 52);        // biased exponent 1023 - e
+  uint64_t bits;  // (memcpy: emscripten 3.1.6's libc++ has no std::bit_cast)
+  std::memcpy(&bits, &x, sizeof bits);
+  bits = (2046 - (bits >> 52)) << 52;  // biased exponent e + 1023 (1..2046) -> 1023 - e
+  double inverse;
+  std::memcpy(&inverse, &bits, sizeof inverse);
+  return inverse;
 }
 }  // namespace
 
