@@ -7,7 +7,6 @@
 #include "hodt/measures.hpp"
 #include "hodt/pair_measures.hpp"
 #include "hodt/skeleton.hpp"
-#include "hodt/triangle_memo.hpp"
 
 namespace hodt {
 
@@ -132,22 +131,15 @@ double vertex_area_ratio(const Mesh& m, const Stars& s, const std::vector<double
   return best;
 }
 
-// Each triangle's normal once (it is in three edges, three stars, many pairs):
-// the angles are those of normal_angle.
-auto normal_memo(const Mesh& m) {
-  return TriangleMemo([&m](const Tri& t) { return triangle_normal(m, t); }, m.num_triangles());
-}
-
+// The largest normal angle over the pairs of triangles at a vertex. The best so
+// far is the cut: float estimates show most pairs below it, and only pairs that
+// raise it get accurate normals (pair_measures.hpp); the max is the same.
 double vertex_normal_angle(const Mesh& m, const Stars& s) {
-  auto normal = normal_memo(m);
-  std::vector<std::array<double, 3>> star;
   double best = 0;
-  for (uint32_t v = 0; v < m.num_vertices(); ++v) {
-    star.clear();
-    for (uint32_t i = s.tri_offset[v]; i < s.tri_offset[v + 1]; ++i) star.push_back(normal(base_triangle(m, s.triangle[i])));
-    for (size_t i = 0; i < star.size(); ++i)
-      for (size_t j = i + 1; j < star.size(); ++j) best = std::max(best, normals_angle(star[i].data(), star[j].data()));
-  }
+  for (uint32_t v = 0; v < m.num_vertices(); ++v)
+    for (uint32_t i = s.tri_offset[v]; i < s.tri_offset[v + 1]; ++i)
+      for (uint32_t j = i + 1; j < s.tri_offset[v + 1]; ++j)
+        best = std::max(best, pair_normal_angle(m, base_triangle(m, s.triangle[i]), base_triangle(m, s.triangle[j]), best));
   return best;
 }
 
@@ -169,9 +161,9 @@ double evaluate(Objective o, const Mesh& m) {
       return edge_pair_max(m, [&](uint32_t e, uint32_t f) { return area_ratio(a[e / 3], a[f / 3]); });
     }
     case Objective::MinmaxEdgeNormalAngle: {
-      auto normal = normal_memo(m);
+      double best = 0;  // the cut, as in vertex_normal_angle
       return edge_pair_max(m, [&](uint32_t e, uint32_t f) {
-        return normals_angle(normal(base_triangle(m, e / 3)).data(), normal(base_triangle(m, f / 3)).data());
+        return best = std::max(best, pair_normal_angle(m, base_triangle(m, e / 3), base_triangle(m, f / 3), best));
       });
     }
     case Objective::MinmaxEdgeEnclosingCircle:
