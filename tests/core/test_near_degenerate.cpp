@@ -137,8 +137,11 @@ TEST_CASE("near-degenerate: areas, normals and circumradii of every k-OD triangl
       CHECK(ulps_off(area, area2 / 2) <= kAreaUlps);
       // Each normal component is such a determinant (on the planes yz, zx, xy).
       const double* corners[3] = {a, b, c};
-      double n[3];
+      const double* rotated[3] = {b, c, a};
+      double n[3], m[3];
       triangle_normal(corners, n);
+      triangle_normal(rotated, m);
+      CHECK((n[0] == m[0] && n[1] == m[1] && n[2] == m[2]));
       const Rational exact_n[3] = {exact_det(a, b, c, 1, 2), exact_det(a, b, c, 2, 0), area2};
       // The normal may come scaled by a power of two: the one nearest to the ratio
       // of the largest components.
