@@ -69,13 +69,12 @@ bool xy_less(const double* p, const double* q) { return p[0] < q[0] || (p[0] == 
 // than ilogb and ldexp; exact and the same on every platform).
 // (memcpy, not std::bit_cast: Emscripten 3.1.6's libc++ lacks it.)
 double inverse_binade(double x) {
-  uint64_t bits;
+  uint64_t bits;  // (memcpy: emscripten 3.1.6's libc++ has no std::bit_cast)
   std::memcpy(&bits, &x, sizeof bits);
-  const uint64_t biased = bits >> 52;  // e + 1023, in 1..2046
-  bits = (2046 - biased) << 52;        // biased exponent 1023 - e
-  double r;
-  std::memcpy(&r, &bits, sizeof r);
-  return r;
+  bits = (2046 - (bits >> 52)) << 52;  // biased exponent e + 1023 (1..2046) -> 1023 - e
+  double inverse;
+  std::memcpy(&inverse, &bits, sizeof inverse);
+  return inverse;
 }
 }  // namespace
 

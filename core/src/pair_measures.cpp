@@ -5,20 +5,18 @@
 #include <vector>
 
 #include "hodt/measures.hpp"
-#include "hodt/triangle_memo.hpp"
 
 namespace hodt {
 
-double triangle_area(const Mesh& m, const Tri& t) { return triangle_area(m.point(t[0]), m.point(t[1]), m.point(t[2])); }
+namespace {
+double area(const Mesh& m, const Tri& t) { return triangle_area(m.point(t[0]), m.point(t[1]), m.point(t[2])); }
 
-std::array<double, 3> triangle_normal(const Mesh& m, const Tri& t) {
+std::array<double, 3> normal(const Mesh& m, const Tri& t) {
   const double* c[3] = {m.point(t[0]), m.point(t[1]), m.point(t[2])};
   std::array<double, 3> n;
   triangle_normal(c, n.data());
   return n;
 }
-
-namespace {
 
 // cos(cut), recomputed only when the cut changes (it is a slowly rising max).
 double cos_of(double cut) {
@@ -27,14 +25,12 @@ double cos_of(double cut) {
   return value;
 }
 
-}  // namespace
-
 // The angle of two normals, or 0 when it is at most cut. The angle is
 // portable_angle(y, x) of y = |n x k| and x = n . k, within 1e-15 of atan2(y, x),
 // and atan2(y, x) < cut - 1e-15 when x / |(x, y)| exceeds cos(cut) by the margin
 // (which also covers the rounding of cos, the norm and the product). Saves the
 // arctangent; with x >= 0 and a cut past pi/2 even the cross product.
-double normal_angle_above(const std::array<double, 3>& n, const std::array<double, 3>& k, double cut) {
+double angle_above(const std::array<double, 3>& n, const std::array<double, 3>& k, double cut) {
   const double x = normals_dot(n.data(), k.data());
   if (cut >= kRightAngleBound && x >= 0) return 0;
   if (cut > 0) {
@@ -45,11 +41,10 @@ double normal_angle_above(const std::array<double, 3>& n, const std::array<doubl
   return normals_angle(n.data(), k.data());
 }
 
-double pair_area_ratio(const Mesh& m, const Tri& s, const Tri& t) { return area_ratio(triangle_area(m, s), triangle_area(m, t)); }
-
-namespace {
 double rough_area(const Mesh& m, const Tri& t) { return rough_triangle_area(m.point(t[0]), m.point(t[1]), m.point(t[2])); }
 }  // namespace
+
+double pair_area_ratio(const Mesh& m, const Tri& s, const Tri& t) { return area_ratio(area(m, s), area(m, t)); }
 
 double pair_area_ratio(const Mesh& m, const Tri& s, const Tri& t, double cut) {
   // Rough areas within 2^-21 make a ratio within 2^-19.9: below the cut with
@@ -96,7 +91,7 @@ double pair_normal_angle(const Mesh& m, const Tri& s, const Tri& t, double cut) 
   if (cut > 0 && rough_normal(m, s, n) && rough_normal(m, t, k) &&
       normals_dot(n, k) >= std::sqrt(normals_dot(n, n)) * std::sqrt(normals_dot(k, k)) * (cos_of(cut) + 0x1p-20))
     return 0;
-  return normal_angle_above(triangle_normal(m, s), triangle_normal(m, t), cut);
+  return angle_above(normal(m, s), normal(m, t), cut);
 }
 
 double pair_enclosing_circle(const Mesh& m, const Tri& s, const Tri& t, double cut) {
@@ -177,22 +172,22 @@ std::optional<CriticalPair> first_largest_pair(const Mesh& m, bool edge, Feature
 }  // namespace
 
 std::optional<CriticalPair> critical_pair(Objective o, const Mesh& m, const Progress& progress) {
-  auto tri_area = [&](uint32_t t) { return triangle_area(m, base_triangle(m, t)); };
-  auto ratio = [](double a, double b, double) { return area_ratio(a, b); };
+  // Edges: the best value so far is the cut, and float estimates show most pairs
+  // below it (only the few that raise it get accurate measures). Stars: each
+  // triangle's accurate area or normal once per star, as its pairs there share it.
   auto tri = [&](uint32_t t) { return base_triangle(m, t); };
-  auto circle = [&](const Tri& a, const Tri& b, double) { return pair_enclosing_circle(m, a, b); };
-  // Each triangle is in three edges and three stars, and its accurate normal
-  // costs more than a lookup: once each, mostly.
-  auto angle = [&](bool edge) {
-    TriangleMemo normal([&](const Tri& t) { return triangle_normal(m, t); }, m.num_triangles());
-    return first_largest_pair(m, edge, [&](uint32_t t) { return normal(tri(t)); }, normal_angle_above, progress);
-  };
+  auto tri_area = [&](uint32_t t) { return area(m, tri(t)); };
+  auto tri_normal = [&](uint32_t t) { return normal(m, tri(t)); };
+  auto ratio = [](double a, double b, double) { return area_ratio(a, b); };
+  auto ratio_above = [&](const Tri& a, const Tri& b, double cut) { return pair_area_ratio(m, a, b, cut); };
+  auto angle = [&](const Tri& a, const Tri& b, double cut) { return pair_normal_angle(m, a, b, cut); };
+  auto circle = [&](const Tri& a, const Tri& b, double cut) { return pair_enclosing_circle(m, a, b, cut); };
   switch (o) {
-    case Objective::MinmaxEdgeAreaRatio: return first_largest_pair(m, true, tri_area, ratio, progress);
-    case Objective::MinmaxEdgeNormalAngle: return angle(true);
+    case Objective::MinmaxEdgeAreaRatio: return first_largest_pair(m, true, tri, ratio_above, progress);
+    case Objective::MinmaxEdgeNormalAngle: return first_largest_pair(m, true, tri, angle, progress);
     case Objective::MinmaxEdgeEnclosingCircle: return first_largest_pair(m, true, tri, circle, progress);
     case Objective::MinmaxVertexAreaRatio: return first_largest_pair(m, false, tri_area, ratio, progress);
-    case Objective::MinmaxVertexNormalAngle: return angle(false);
+    case Objective::MinmaxVertexNormalAngle: return first_largest_pair(m, false, tri_normal, angle_above, progress);
     default: return std::nullopt;
   }
 }
