@@ -63,9 +63,7 @@ KOrderResult brute_force_k_order(const Mesh& dt, Objective o, uint32_t k, uint64
 std::vector<uint32_t> states_of(const Regions& R, const Mesh& m) {
   std::set<Tri> tris;
   for (uint32_t t = 0; t < m.num_triangles(); ++t) {
-    Tri c = base_triangle(m, t);
-    while (c[0] > c[1] || c[0] > c[2]) c = {c[1], c[2], c[0]};
-    tris.insert(c);
+    tris.insert(canonical_triangle(base_triangle(m, t)));
   }
   std::vector<uint32_t> state(R.regions.size(), 0);
   for (size_t r = 0; r < R.regions.size(); ++r) {
@@ -96,8 +94,7 @@ bool add_states_of(Regions& R, const Mesh& dt, const Mesh& m) {
     const uint32_t h = it != delaunay_edge.end() ? it->second : crossed_edges(dt, start, c[0], c[1]).front();
     const uint32_t r = R.region_of_triangle[h / 3];
     if (R.regions[r].complete) continue;
-    while (c[0] > c[1] || c[0] > c[2]) c = {c[1], c[2], c[0]};
-    part[r].push_back(c);
+    part[r].push_back(canonical_triangle(c));
   }
   bool added = false;
   for (size_t r = 0; r < R.regions.size(); ++r) {
@@ -112,6 +109,26 @@ bool add_states_of(Regions& R, const Mesh& dt, const Mesh& m) {
   return added;
 }
 
+// The first order optimum, the heuristic's start at every order of the ladder:
+// solved once.
+struct FirstOrderStart {
+  const FirstOrder& fo;
+  Objective o;
+  const SolveOptions& options;
+  std::optional<Mesh> mesh;
+  double value = 0;
+  const Mesh& get() {
+    if (!mesh) {
+      SolveOptions first = options;
+      first.method = Method::Auto;
+      first.order = 1;
+      mesh = triangulate(fo, solve(fo, o, first).choice);
+      value = evaluate(o, *mesh);
+    }
+    return *mesh;
+  }
+};
+
 std::string region_summary(const Regions& R) {
   size_t choice = 0, largest = 0;
   for (const Region& g : R.regions)
@@ -119,15 +136,11 @@ std::string region_summary(const Regions& R) {
   return std::to_string(choice) + " regions with a choice (up to " + std::to_string(largest) + " triangulations each)";
 }
 
-}  // namespace
-
-KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes) {
-  if (!fo.is_delaunay) throw InputError("higher order needs the Delaunay triangulation: not for user triangulations");
+KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes,
+                           FirstOrderStart& first_order) {
   const Mesh& dt = fo.base;
   if (options.method == Method::BruteForce) {
-    KOrderResult r = brute_force_k_order(dt, o, k, max_nodes, options.progress);
-    r.delaunay_value = evaluate(o, dt);
-    return r;
+    return brute_force_k_order(dt, o, k, max_nodes, options.progress);
   }
   Regions R = k_order_skeleton(dt, k, options.progress);
   const StateReducer reducer = objective_reducer(dt, R, o);
@@ -138,7 +151,6 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
   enumerate_regions(dt, R, rl);
   RegionModel model = region_model(dt, R, o, {}, options.progress);
   KOrderResult r;
-  r.delaunay_value = evaluate(o, dt);
   std::string refused;
   if (R.incomplete) refused = std::to_string(R.incomplete) + " regions have more k-OD triangulations than the budget";
   else if (model.graph.relaxed_terms)
@@ -163,19 +175,17 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
   // listed (the first order optimum's among them, so never worse than it), by the
   // same DP when its tables fit, else by local search; the bound is the
   // relaxation's optimum.
-  SolveOptions first = options;
-  first.method = Method::Auto;
-  first.order = 1;
-  Mesh start = triangulate(fo, solve(fo, o, first).choice);
+  Mesh start = first_order.get();
+  double start_value = first_order.value;
   bool added = add_states_of(R, dt, start);
   // A ladder: every (k/2)-OD triangulation is k-OD, so the result at order k/2
   // gives each region one more listed triangulation (and a start no worse).
   if (k >= 4) {
     SolveOptions half = options;
     half.method = Method::Auto;
-    const KOrderResult lower = solve_k_order(fo, o, k / 2, half, max_nodes);
+    KOrderResult lower = solve_regions(fo, o, k / 2, half, max_nodes, first_order);
     added = add_states_of(R, dt, lower.triangulation) || added;
-    if (better(info(o).sense, lower.value, evaluate(o, start))) start = lower.triangulation;
+    if (better(info(o).sense, lower.value, start_value)) start = std::move(lower.triangulation), start_value = lower.value;
   }
   if (added) model = region_model(dt, R, o, {}, options.progress);
   StateDpLimits dl;
@@ -191,9 +201,9 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
   }
   r.triangulation = R.triangulation(dt, model.region_states(x));
   r.value = evaluate(o, r.triangulation);
-  if (better(info(o).sense, evaluate(o, start), r.value)) {  // (relaxed terms can mislead the search)
-    r.triangulation = start;
-    r.value = evaluate(o, start);
+  if (better(info(o).sense, start_value, r.value)) {  // (relaxed terms can mislead the search)
+    r.triangulation = std::move(start);
+    r.value = start_value;
   }
   // Then k-OD flips that improve the terms around them (they reach into the
   // regions too large to list).
@@ -209,6 +219,16 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
   r.method = "heuristic";
   r.details = region_summary(R) + "; " + how + " (" +
               (refused.empty() ? std::string("approx asked") : "exact refused: " + refused) + ")";
+  return r;
+}
+
+}  // namespace
+
+KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes) {
+  if (!fo.is_delaunay) throw InputError("higher order needs the Delaunay triangulation: not for user triangulations");
+  FirstOrderStart first_order{fo, o, options, {}};
+  KOrderResult r = solve_regions(fo, o, k, options, max_nodes, first_order);
+  r.delaunay_value = evaluate(o, fo.base);
   return r;
 }
 

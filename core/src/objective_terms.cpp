@@ -52,6 +52,13 @@ double area(const Mesh& m, const Tri& t) { return triangle_area(m.point(t[0]), m
 
 constexpr double kCount = 1, kUnbounded = INFINITY;
 
+// The cut-aware pair measures (pair_measures.hpp), as plain functions.
+double pair_area_ratio_above(const Mesh& m, const Tri& s, const Tri& t, double cut) { return pair_area_ratio(m, s, t, cut); }
+double pair_normal_angle_above(const Mesh& m, const Tri& s, const Tri& t, double cut) { return pair_normal_angle(m, s, t, cut); }
+double pair_enclosing_circle_above(const Mesh& m, const Tri& s, const Tri& t, double cut) {
+  return pair_enclosing_circle(m, s, t, cut);
+}
+
 std::array<ObjectiveTerms, kNumObjectives> make_table() {
   using S = TermSite;
   using C = TermCombine;
@@ -65,34 +72,44 @@ std::array<ObjectiveTerms, kNumObjectives> make_table() {
   set(Objective::MaxConvexEdges, {S::InteriorEdge, C::Sum, kCount, nullptr, convex_edge});
   set(Objective::MinTotalEdgeLength, {S::Edge, C::Sum, kUnbounded, nullptr, length});
   set(Objective::MinmaxTriangleArea, {S::Triangle, C::Max, kUnbounded, nullptr, nullptr, area});
-  set(Objective::MinmaxEdgeAreaRatio, {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_area_ratio});
-  set(Objective::MinmaxEdgeNormalAngle, {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_normal_angle});
+  set(Objective::MinmaxEdgeAreaRatio, {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_area_ratio_above});
+  set(Objective::MinmaxEdgeNormalAngle, {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_normal_angle_above});
   set(Objective::MinmaxEdgeEnclosingCircle,
-      {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_enclosing_circle});
-  set(Objective::MinmaxVertexAreaRatio, {S::VertexPair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_area_ratio});
+      {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_enclosing_circle_above});
+  set(Objective::MinmaxVertexAreaRatio, {S::VertexPair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_area_ratio_above});
   set(Objective::MinmaxVertexNormalAngle,
-      {S::VertexPair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_normal_angle});
+      {S::VertexPair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_normal_angle_above});
   return t;
 }
 
 }  // namespace
+
+void star_neighbors(uint32_t v, const std::vector<Tri>& triangles, std::vector<uint32_t>& out) {
+  out.clear();
+  for (const Tri& t : triangles)
+    for (uint32_t w : t)
+      if (w != v) out.push_back(w);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
 
 const ObjectiveTerms& objective_terms(Objective o) {
   static const std::array<ObjectiveTerms, kNumObjectives> table = make_table();
   return table[static_cast<size_t>(o)];
 }
 
-double vertex_term(const ObjectiveTerms& d, const Mesh& m, const Star& s) {
+double vertex_term(const ObjectiveTerms& d, const Mesh& m, const Star& s, double cut) {
   if (d.site != TermSite::VertexPair) return d.vertex(m, s);
   double best = 0;
   for (uint32_t i = 0; i < s.num_triangles; ++i)
-    for (uint32_t j = i + 1; j < s.num_triangles; ++j) best = std::max(best, d.pair(m, s.triangles[i], s.triangles[j]));
+    for (uint32_t j = i + 1; j < s.num_triangles; ++j)
+      best = std::max(best, d.pair(m, s.triangles[i], s.triangles[j], std::max(best, cut)));
   return best;
 }
 
-double edge_term(const ObjectiveTerms& d, const Mesh& m, uint32_t u, uint32_t v, uint32_t w, uint32_t x) {
+double edge_term(const ObjectiveTerms& d, const Mesh& m, uint32_t u, uint32_t v, uint32_t w, uint32_t x, double cut) {
   if (d.site != TermSite::EdgePair) return d.edge(m, u, v, w, x);
-  return d.pair(m, Tri{u, v, w}, Tri{v, u, x});
+  return d.pair(m, Tri{u, v, w}, Tri{v, u, x}, cut);
 }
 
 double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
@@ -121,14 +138,15 @@ double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
       tris.clear();  // (only pair terms read the triangles)
       if (d.site == TermSite::VertexPair)
         for (uint32_t i = st.tri_offset[v]; i < st.tri_offset[v + 1]; ++i) tris.push_back(base_triangle(m, st.triangle[i]));
-      add(vertex_term(d, m, Star(v, st.neighbor.data() + st.offset[v], st.degree(v), tris.data(), static_cast<uint32_t>(tris.size()))));
+      add(vertex_term(d, m, Star(v, st.neighbor.data() + st.offset[v], st.degree(v), tris.data(), static_cast<uint32_t>(tris.size())),
+                      max));
     }
   } else if (edge_site(d.site)) {
     for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
       step(e, static_cast<double>(m.halfedges.size()), 32);
       const int32_t f = m.halfedges[e];
       if (f < 0 ? interior_only(d.site) : f < static_cast<int32_t>(e)) continue;
-      add(edge_term(d, m, m.origin(e), m.target(e), m.apex(e), f < 0 ? kNoApex : m.apex(static_cast<uint32_t>(f))));
+      add(edge_term(d, m, m.origin(e), m.target(e), m.apex(e), f < 0 ? kNoApex : m.apex(static_cast<uint32_t>(f)), max));
     }
   } else {
     for (uint32_t t = 0; t < m.num_triangles(); ++t) step(t, m.num_triangles(), 16), add(d.triangle(m, base_triangle(m, t)));

@@ -48,6 +48,7 @@ Fans fans_of(const Region& r, bool by_neighbors, const std::function<void()>& ti
   std::vector<std::map<std::vector<Tri>, uint32_t>> ids(nv);
   std::vector<std::vector<Tri>> around(nv);
   std::vector<Tri> key;
+  std::vector<uint32_t> nb;
   for (size_t s = 0; s < r.states.size(); ++s) {
     tick();
     for (auto& a : around) a.clear();
@@ -55,13 +56,10 @@ Fans fans_of(const Region& r, bool by_neighbors, const std::function<void()>& ti
       for (uint32_t v : t) around[f.local(v)].push_back(t);
     for (size_t i = 0; i < nv; ++i) {
       key = around[i];
-      if (by_neighbors) {  // the neighbours, as sorted one-vertex entries
+      if (by_neighbors) {  // the neighbours, as one-vertex entries
+        star_neighbors(f.vertices[i], around[i], nb);
         key.clear();
-        for (const Tri& t : around[i])
-          for (uint32_t w : t)
-            if (w != f.vertices[i]) key.push_back({w, 0, 0});
-        std::sort(key.begin(), key.end());
-        key.erase(std::unique(key.begin(), key.end()), key.end());
+        for (uint32_t w : nb) key.push_back({w, 0, 0});
       }
       auto [it, fresh] = ids[i].try_emplace(key, static_cast<uint32_t>(f.fan[i].size()));
       if (fresh) f.fan[i].push_back(around[i]);
@@ -208,12 +206,7 @@ struct Builder {
           const auto& fan = fans[choice_regions[j]].fan[local[j]][cls[j]];
           tris.insert(tris.end(), fan.begin(), fan.end());
         }
-        nb.clear();
-        for (const Tri& t : tris)
-          for (uint32_t w : t)
-            if (w != v) nb.push_back(w);
-        std::sort(nb.begin(), nb.end());
-        nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+        star_neighbors(v, tris, nb);
         return vertex_term(d, dt, Star(v, nb, tris));
       };
       if (choice_regions.empty()) {
@@ -303,12 +296,8 @@ StateReducer objective_reducer(const Mesh& dt, const Regions& R, Objective o) {
           key.signature.insert(key.signature.end(), fan.begin(), fan.end());
         } else if (vertex_site(d.site)) {
           key.signature.push_back({UINT32_MAX, v, 1});
-          for (const Tri& t : fan)
-            for (uint32_t w : t)
-              if (w != v) key.signature.push_back({w, 0, 0});
-          std::sort(key.signature.end() - 2 * static_cast<std::ptrdiff_t>(fan.size()), key.signature.end());
-          key.signature.erase(std::unique(key.signature.end() - 2 * static_cast<std::ptrdiff_t>(fan.size()), key.signature.end()),
-                              key.signature.end());
+          star_neighbors(v, fan, nb);
+          for (uint32_t w : nb) key.signature.push_back({w, 0, 0});
         }
         continue;
       }
@@ -318,12 +307,7 @@ StateReducer objective_reducer(const Mesh& dt, const Regions& R, Objective o) {
       const Stars& st = data->stars;
       for (uint32_t j = st.tri_offset[v]; j < st.tri_offset[v + 1]; ++j)
         if (R.region_of_triangle[st.triangle[j]] != r) star.push_back(base_triangle(dt, st.triangle[j]));
-      nb.clear();
-      for (const Tri& t : star)
-        for (uint32_t w : t)
-          if (w != v) nb.push_back(w);
-      std::sort(nb.begin(), nb.end());
-      nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+      star_neighbors(v, star, nb);
       add(vertex_term(d, dt, Star(v, nb, star)));
     }
     if (d.site == TermSite::Triangle) {

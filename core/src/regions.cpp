@@ -68,9 +68,7 @@ uint32_t find(std::vector<uint32_t>& parent, uint32_t x) {
 // Triangles rotated to start at their smallest vertex, sorted: equal
 // triangulations of a region compare equal.
 std::vector<Tri> canonical(std::vector<Tri> tris) {
-  for (Tri& t : tris) {
-    while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
-  }
+  for (Tri& t : tris) t = canonical_triangle(t);
   std::sort(tris.begin(), tris.end());
   return tris;
 }

@@ -335,7 +335,6 @@ Threshold threshold_graph(const StateGraph& g, double t) {
 // Min-max: binary search over the values the tables hold, each threshold a
 // feasibility DP over 0/1 tables (which merge far more classes than values do).
 StateDpResult bottleneck(const StateGraph& g, const StateDpLimits& limits) {
-  const Ops ops{g.combine, g.sense};
   // Every assignment is at least each table's smallest entry.
   double lo = g.constant;
   auto min_of = [](const std::vector<double>& t) { return *std::min_element(t.begin(), t.end()); };
@@ -373,7 +372,6 @@ StateDpResult bottleneck(const StateGraph& g, const StateDpLimits& limits) {
     else a = mid + 1;
   }
   best.value = evaluate_states(g, best.state);
-  (void)ops;
   return best;
 }
 

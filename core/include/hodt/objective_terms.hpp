@@ -4,6 +4,7 @@
 // region engine (region_model.hpp) read only this description, at every order:
 // adding an objective means adding its terms here, not touching a solver.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -44,6 +45,9 @@ struct Star {
       : center(v), neighbors(nb), degree(d), triangles(tris), num_triangles(nt) {}
 };
 
+// The neighbours of v in triangles around it: sorted, each once.
+void star_neighbors(uint32_t v, const std::vector<Tri>& triangles, std::vector<uint32_t>& out);
+
 struct ObjectiveTerms {
   TermSite site;
   TermCombine combine;
@@ -55,8 +59,10 @@ struct ObjectiveTerms {
   // Edge u -> v with w the apex on its left and x on its right (kNoApex on the hull).
   double (*edge)(const Mesh& points, uint32_t u, uint32_t v, uint32_t w, uint32_t x) = nullptr;
   double (*triangle)(const Mesh& points, const Tri& t) = nullptr;
-  // Pair sites: the measure of two triangles (symmetric).
-  double (*pair)(const Mesh& points, const Tri& s, const Tri& t) = nullptr;
+  // Pair sites: the measure of two triangles (symmetric), or any value <= cut
+  // when the measure is at most cut (a max that already holds cut loses nothing,
+  // and most pairs then need no accurate measure). cut = -INFINITY: the measure.
+  double (*pair)(const Mesh& points, const Tri& s, const Tri& t, double cut) = nullptr;
 };
 
 const ObjectiveTerms& objective_terms(Objective o);
@@ -74,9 +80,11 @@ inline bool interior_only(TermSite s) {
 }
 
 // One vertex term (vertex sites; hull vertices of an interior site are not asked).
-double vertex_term(const ObjectiveTerms& d, const Mesh& points, const Star& star);
+// cut: pair terms may answer anything <= cut when they are at most cut.
+double vertex_term(const ObjectiveTerms& d, const Mesh& points, const Star& star, double cut = -INFINITY);
 // One edge term; x = kNoApex on the hull (only asked for the Edge site).
-double edge_term(const ObjectiveTerms& d, const Mesh& points, uint32_t u, uint32_t v, uint32_t w, uint32_t x);
+double edge_term(const ObjectiveTerms& d, const Mesh& points, uint32_t u, uint32_t v, uint32_t w, uint32_t x,
+                 double cut = -INFINITY);
 
 // The identity of the combination (0: every term is >= 0, and a max over nothing is 0).
 inline double combine(TermCombine c, double a, double b) { return c == TermCombine::Sum ? a + b : (a > b ? a : b); }

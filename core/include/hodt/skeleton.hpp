@@ -36,6 +36,13 @@ VertexIncidence vertex_incidence(const FirstOrder& fo);
 // The larger plane area of quad q's two triangles for one choice.
 double largest_triangle(const FirstOrder& fo, uint32_t q, bool flipped);
 
+// The same triangle rotated to start at its smallest vertex (orientation kept):
+// equal triangles listed from different corners compare equal.
+inline Tri canonical_triangle(Tri t) {
+  while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
+  return t;
+}
+
 inline Tri base_triangle(const Mesh& m, uint32_t t) {
   return {m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]};
 }
