@@ -11,6 +11,7 @@
 #include "hodt/higher_order.hpp"
 #include "hodt/pair_measures.hpp"
 #include "hodt/region_model.hpp"
+#include "hodt/region_terms.hpp"
 #include "hodt/regions.hpp"
 #include "hodt/solve_options.hpp"
 
@@ -143,11 +144,11 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     return brute_force_k_order(dt, o, k, max_nodes, options.progress);
   }
   Regions R = k_order_skeleton(dt, k, options.progress);
-  const StateReducer reducer = objective_reducer(dt, R, o);
+  const RegionTerms terms(dt, R, o);
   RegionLimits rl;
   rl.max_nodes_per_region = max_nodes;
   rl.progress = options.progress;
-  rl.reduce = &reducer;
+  rl.terms = &terms;
   enumerate_regions(dt, R, rl);
   RegionModel model = region_model(dt, R, o, {}, options.progress);
   KOrderResult r;

@@ -42,6 +42,14 @@ double local_extremum(const Mesh& m, const Star& s) {
   const NeighborPoints nb(m, s);
   return extremum(m.point(s.center), nb.p.data(), nb.size()) != kNotExtremum;
 }
+// Neighbour classes for the extremum terms: above, below, level (bits 1, 2, 4).
+uint32_t height_class(const Mesh& m, uint32_t v, uint32_t w) {
+  const double zv = m.point(v)[2], zw = m.point(w)[2];
+  return zw > zv ? 0 : zw < zv ? 1 : 2;
+}
+double minimum_of_classes(uint32_t mask) { return mask == 1; }
+double extremum_of_classes(uint32_t mask) { return mask == 1 || mask == 2; }
+
 double degree(const Mesh&, const Star& s) { return static_cast<double>(s.degree); }
 
 double convex_edge(const Mesh& m, uint32_t u, uint32_t v, uint32_t w, uint32_t x) {
@@ -66,11 +74,17 @@ std::array<ObjectiveTerms, kNumObjectives> make_table() {
   auto set = [&](Objective o, ObjectiveTerms d) { t[static_cast<size_t>(o)] = d; };
   set(Objective::MaxConvexVertices, {S::InteriorVertex, C::Sum, kCount, convex_vertex});
   set(Objective::MinMixedVertices, {S::InteriorVertex, C::Sum, kCount, mixed_vertex});
-  set(Objective::MinLocalMinima, {S::InteriorVertex, C::Sum, kCount, local_minimum});
-  set(Objective::MinLocalExtrema, {S::InteriorVertex, C::Sum, kCount, local_extremum});
+  ObjectiveTerms minima{S::InteriorVertex, C::Sum, kCount, local_minimum};
+  minima.neighbor_class = height_class, minima.term_of_classes = minimum_of_classes;
+  set(Objective::MinLocalMinima, minima);
+  ObjectiveTerms extrema{S::InteriorVertex, C::Sum, kCount, local_extremum};
+  extrema.neighbor_class = height_class, extrema.term_of_classes = extremum_of_classes;
+  set(Objective::MinLocalExtrema, extrema);
   set(Objective::MinmaxDegree, {S::Vertex, C::Max, kUnbounded, degree});
   set(Objective::MaxConvexEdges, {S::InteriorEdge, C::Sum, kCount, nullptr, convex_edge});
-  set(Objective::MinTotalEdgeLength, {S::Edge, C::Sum, kUnbounded, nullptr, length});
+  ObjectiveTerms total_length{S::Edge, C::Sum, kUnbounded, nullptr, length};
+  total_length.edge_reads_apexes = false;
+  set(Objective::MinTotalEdgeLength, total_length);
   set(Objective::MinmaxTriangleArea, {S::Triangle, C::Max, kUnbounded, nullptr, nullptr, area});
   set(Objective::MinmaxEdgeAreaRatio, {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_area_ratio_above});
   set(Objective::MinmaxEdgeNormalAngle, {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_normal_angle_above});
@@ -91,6 +105,12 @@ void star_neighbors(uint32_t v, const std::vector<Tri>& triangles, std::vector<u
       if (w != v) out.push_back(w);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+uint32_t neighbor_classes(const ObjectiveTerms& d, const Mesh& m, uint32_t v, const std::vector<uint32_t>& nb) {
+  uint32_t mask = 0;
+  for (uint32_t w : nb) mask |= 1u << d.neighbor_class(m, v, w);
+  return mask;
 }
 
 const ObjectiveTerms& objective_terms(Objective o) {

@@ -35,9 +35,10 @@ struct Fans {
   }
 };
 
-// by_neighbors: states with the same neighbours at a vertex share a class (what
-// vertex terms see); else the same triangles (what vertex-pair terms see).
-Fans fans_of(const Region& r, bool by_neighbors, const std::function<void()>& tick) {
+// States with the same neighbours at a vertex (or the same neighbour classes)
+// share a class: what vertex terms see; for vertex-pair terms, the same triangles.
+Fans fans_of(const Mesh& dt, const ObjectiveTerms& d, const Region& r, const std::function<void()>& tick) {
+  const bool by_neighbors = d.site != TermSite::VertexPair;
   Fans f;
   for (const Tri& t : r.states[0]) f.vertices.insert(f.vertices.end(), t.begin(), t.end());
   std::sort(f.vertices.begin(), f.vertices.end());
@@ -56,10 +57,12 @@ Fans fans_of(const Region& r, bool by_neighbors, const std::function<void()>& ti
       for (uint32_t v : t) around[f.local(v)].push_back(t);
     for (size_t i = 0; i < nv; ++i) {
       key = around[i];
-      if (by_neighbors) {  // the neighbours, as one-vertex entries
+      if (by_neighbors) {  // the neighbours (or their classes), as one-vertex entries
         star_neighbors(f.vertices[i], around[i], nb);
         key.clear();
-        for (uint32_t w : nb) key.push_back({w, 0, 0});
+        if (d.neighbor_class) key.push_back({neighbor_classes(d, dt, f.vertices[i], nb), 0, 0});
+        else
+          for (uint32_t w : nb) key.push_back({w, 0, 0});
       }
       auto [it, fresh] = ids[i].try_emplace(key, static_cast<uint32_t>(f.fan[i].size()));
       if (fresh) f.fan[i].push_back(around[i]);
@@ -126,6 +129,12 @@ struct Builder {
       const int32_t f = dt.halfedges[e];
       const uint32_t u = dt.origin(e), v = dt.target(e), r1 = R.region_of_triangle[e / 3];
       const auto& s1 = R.regions[r1].states;
+      if (!d.edge_reads_apexes) {  // a fixed edge's term is a constant
+        const bool once = f < 0 ? !interior_only(d.site)
+                                : f > static_cast<int32_t>(e) && R.region_of_triangle[static_cast<uint32_t>(f) / 3] != r1;
+        if (once) add_constant(edge_term(d, dt, u, v, kNoApex, kNoApex));
+        continue;
+      }
       if (f < 0) {
         if (interior_only(d.site)) continue;
         for (uint32_t s = 0; s < s1.size(); ++s) add_unary(r1, s, edge_term(d, dt, u, v, apex_of(s1[s], u, v), kNoApex), s == 0);
@@ -170,7 +179,7 @@ struct Builder {
     std::vector<Fans> fans(R.regions.size());
     std::vector<uint8_t> have(R.regions.size(), 0);
     auto fans_at = [&](uint32_t r) -> const Fans& {
-      if (!have[r]) fans[r] = fans_of(R.regions[r], d.site != TermSite::VertexPair, [&] { tick(r, R.regions.size()); }), have[r] = 1;
+      if (!have[r]) fans[r] = fans_of(dt, d, R.regions[r], [&] { tick(r, R.regions.size()); }), have[r] = 1;
       return fans[r];
     };
     std::vector<uint8_t> on_hull(dt.num_vertices(), 0);
@@ -247,97 +256,6 @@ struct Builder {
 };
 
 }  // namespace
-
-StateReducer objective_reducer(const Mesh& dt, const Regions& R, Objective o) {
-  const ObjectiveTerms& d = objective_terms(o);
-  struct Shared {
-    std::vector<uint8_t> shared;  // per vertex: in two regions that may have a choice
-    std::vector<uint8_t> on_hull;
-    Stars stars;
-  };
-  auto data = std::make_shared<Shared>();
-  const uint32_t n = dt.num_vertices();
-  std::vector<uint32_t> count(n, 0);
-  std::vector<uint32_t> seen(n, UINT32_MAX);
-  for (uint32_t r = 0; r < R.regions.size(); ++r) {
-    if (R.regions[r].delaunay_triangles.size() < 2) continue;
-    for (uint32_t t : R.regions[r].delaunay_triangles)
-      for (uint32_t e = 3 * t; e < 3 * t + 3; ++e)
-        if (seen[dt.triangles[e]] != r) seen[dt.triangles[e]] = r, ++count[dt.triangles[e]];
-  }
-  data->shared.resize(n);
-  for (uint32_t v = 0; v < n; ++v) data->shared[v] = count[v] >= 2;
-  data->on_hull.assign(n, 0);
-  for (uint32_t v : dt.hull) data->on_hull[v] = 1;
-  data->stars = build_stars(dt);
-  const Sense sense = info(o).sense;
-  StateReducer reducer;
-  reducer.better = [sense](double a, double b) { return better(sense, a, b); };
-  reducer.key = [&dt, &R, &d, data](uint32_t r, const std::vector<Tri>& tris) {
-    StateKey key{{}, 0};
-    auto add = [&](double v) { key.value = combine(d.combine, key.value, v); };
-    // Fans at every vertex of the triangulation (its vertices, in order).
-    std::vector<std::pair<uint32_t, uint32_t>> at;  // (vertex, triangle index)
-    for (uint32_t i = 0; i < tris.size(); ++i)
-      for (uint32_t v : tris[i]) at.push_back({v, i});
-    std::sort(at.begin(), at.end());
-    std::vector<Tri> fan, star;
-    std::vector<uint32_t> nb;
-    for (size_t i = 0; i < at.size();) {
-      const uint32_t v = at[i].first;
-      fan.clear();
-      for (; i < at.size() && at[i].first == v; ++i) fan.push_back(tris[at[i].second]);
-      if (data->shared[v]) {
-        // What the terms outside see of this fan: the triangles (vertex pairs),
-        // the neighbours (vertex terms); edge terms see apexes (below); triangle
-        // terms nothing.
-        if (d.site == TermSite::VertexPair) {
-          key.signature.push_back({UINT32_MAX, v, 0});
-          key.signature.insert(key.signature.end(), fan.begin(), fan.end());
-        } else if (vertex_site(d.site)) {
-          key.signature.push_back({UINT32_MAX, v, 1});
-          star_neighbors(v, fan, nb);
-          for (uint32_t w : nb) key.signature.push_back({w, 0, 0});
-        }
-        continue;
-      }
-      if (!vertex_site(d.site) || (interior_only(d.site) && data->on_hull[v])) continue;
-      // Its other triangles are fixed: the Delaunay ones outside this region.
-      star = fan;
-      const Stars& st = data->stars;
-      for (uint32_t j = st.tri_offset[v]; j < st.tri_offset[v + 1]; ++j)
-        if (R.region_of_triangle[st.triangle[j]] != r) star.push_back(base_triangle(dt, st.triangle[j]));
-      star_neighbors(v, star, nb);
-      add(vertex_term(d, dt, Star(v, nb, star)));
-    }
-    if (d.site == TermSite::Triangle) {
-      for (const Tri& t : tris) add(d.triangle(dt, t));
-    } else if (edge_site(d.site)) {
-      for (const Tri& t : tris)
-        for (int i = 0; i < 3; ++i) {
-          const uint32_t u = t[i], v = t[(i + 1) % 3];
-          const uint32_t x = apex_of(tris, v, u);
-          if (x != kNoApex && u < v) add(edge_term(d, dt, u, v, t[(i + 2) % 3], x));
-        }
-      // Boundary edges whose other side is a fixed triangle or the outside.
-      for (uint32_t t : R.regions[r].delaunay_triangles)
-        for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
-          const int32_t f = dt.halfedges[e];
-          if (f >= 0 && R.region_of_triangle[static_cast<uint32_t>(f) / 3] == r) continue;  // inside
-          if (f < 0 && interior_only(d.site)) continue;
-          const uint32_t u = dt.origin(e), v = dt.target(e);
-          if (f >= 0 && R.regions[R.region_of_triangle[static_cast<uint32_t>(f) / 3]].delaunay_triangles.size() > 1) {
-            key.signature.push_back({UINT32_MAX - 1, u, v});  // seen from the other side: the apex
-            key.signature.push_back({apex_of(tris, u, v), 0, 0});
-            continue;
-          }
-          add(edge_term(d, dt, u, v, apex_of(tris, u, v), f < 0 ? kNoApex : dt.apex(static_cast<uint32_t>(f))));
-        }
-    }
-    return key;
-  };
-  return reducer;
-}
 
 RegionModel region_model(const Mesh& dt, const Regions& R, Objective o, const RegionModelLimits& limits,
                          const Progress& progress) {

@@ -6,10 +6,12 @@
 #include <stdexcept>
 
 #include "hodt/error.hpp"
+#include "hodt/fill_dp.hpp"
 #include "hodt/fill_enumerator.hpp"
 #include "hodt/higher_order.hpp"
 #include "hodt/k_order.hpp"
 #include "hodt/predicates.hpp"
+#include "hodt/region_terms.hpp"
 
 namespace hodt {
 
@@ -132,26 +134,45 @@ Regions k_order_skeleton(const Mesh& dt, uint32_t k, const Progress& progress) {
 void enumerate_regions(const Mesh& dt, Regions& out, const RegionLimits& limits) {
   const bool any_free = std::find(out.fixed.begin(), out.fixed.end(), 0) != out.fixed.end();
   const Candidates cand = any_free ? k_order_candidates(dt, out.order, out.useful, limits.progress) : Candidates{};
-  const StateReducer* reduce = limits.reduce;
-  uint64_t used = 0;
+  const RegionTerms* terms = limits.terms;
+  uint64_t used = 0, dp_used = 0;
+  // The best triangulation per signature, by dynamic programming: false when
+  // it needs more than `budget` partial fills.
+  auto by_dp = [&](Region& region, uint32_t r, uint64_t budget) {
+    auto fills = best_fills(dt, cand, *terms, r, budget, limits.progress, &dp_used);
+    if (!fills) return false;
+    std::stable_sort(fills->begin(), fills->end(),
+                     [&](const BestFill& a, const BestFill& b) { return terms->better(a.value, b.value); });
+    region.states.resize(1);
+    region.complete = true;
+    for (BestFill& f : *fills) {
+      if (f.triangles == region.states[0]) continue;
+      if (region.states.size() >= limits.max_states_per_region) {  // too many interfaces: the best ones
+        region.complete = false;
+        break;
+      }
+      region.states.push_back(std::move(f.triangles));
+    }
+    return true;
+  };
+  // Every triangulation, within `budget` search nodes; with terms, the best per signature.
   auto enumerate = [&](Region& region, uint32_t r, uint64_t budget) {
     region.states.resize(1);
     region.complete = true;
-    // With a reducer: the state kept for each signature, and its value.
-    std::map<std::vector<Tri>, std::pair<uint32_t, double>> best;
-    if (reduce) {
-      StateKey key = reduce->key(r, region.states[0]);
+    std::map<std::vector<SignatureEntry>, std::pair<uint32_t, double>> best;  // the state kept per signature
+    if (terms) {
+      StateKey key = terms->key(r, region.states[0]);
       best.emplace(std::move(key.signature), std::make_pair(0u, key.value));
     }
     try {
       region.complete = enumerate_fills(dt, cand, region.boundary, budget, [&](const std::vector<Tri>& tris) {
         std::vector<Tri> c = canonical(tris);
         if (c == region.states[0]) return;
-        if (reduce) {
-          StateKey key = reduce->key(r, c);
+        if (terms) {
+          StateKey key = terms->key(r, c);
           auto it = best.find(key.signature);
           if (it != best.end()) {
-            if (!reduce->better(key.value, it->second.second)) return;
+            if (!terms->better(key.value, it->second.second)) return;
             if (it->second.first != 0) {  // replace (states[0] stays)
               region.states[it->second.first] = std::move(c);
               it->second.second = key.value;
@@ -169,21 +190,32 @@ void enumerate_regions(const Mesh& dt, Regions& out, const RegionLimits& limits)
       region.complete = false;
     }
   };
-  const uint64_t first = std::min(limits.first_pass_nodes, limits.max_nodes_per_region);
+  std::vector<uint8_t> done(out.regions.size(), 0);
   for (uint32_t pass = 0; pass < 2; ++pass) {
-    for (size_t r = 0; r < out.regions.size(); ++r) {
+    for (size_t i = 0; i < out.regions.size(); ++i) {
+      const uint32_t r = static_cast<uint32_t>(i);
       Region& region = out.regions[r];
       if (limits.progress && (r & 63) == 0 &&
           !limits.progress(static_cast<double>(pass * out.regions.size() + r), 2.0 * out.regions.size()))
         throw Cancelled();
-      if (region.delaunay_triangles.size() == 1) continue;
+      if (done[r] || region.delaunay_triangles.size() == 1) continue;
       if (region.delaunay_triangles.size() > limits.max_region_triangles) {
         region.complete = false;
         continue;
       }
-      if (pass == 0) enumerate(region, static_cast<uint32_t>(r), first);
-      else if (!region.complete && first < limits.max_nodes_per_region && used < limits.max_total_nodes)
-        enumerate(region, static_cast<uint32_t>(r), std::min(limits.max_nodes_per_region, limits.max_total_nodes - used));
+      if (pass == 0) {
+        done[r] = terms ? by_dp(region, r, std::min(limits.first_pass_states, limits.max_states_per_region_dp))
+                        : (enumerate(region, r, std::min(limits.first_pass_nodes, limits.max_nodes_per_region)),
+                           region.complete);
+        continue;
+      }
+      if (terms && dp_used < limits.max_total_states &&
+          by_dp(region, r, std::min(limits.max_states_per_region_dp, limits.max_total_states - dp_used)))
+        continue;
+      // Too large for the budgets: some of its triangulations, for the heuristics.
+      if (used < limits.max_total_nodes)
+        enumerate(region, r, std::min(limits.max_nodes_per_region, limits.max_total_nodes - used));
+      else if (terms) region.states.resize(1), region.complete = false;
     }
   }
   out.incomplete = 0;

@@ -56,14 +56,17 @@ void simplify(StateGraph& g, const Progress& progress) {
       std::vector<uint32_t> id(dj);
       std::vector<double> slice(inner * outer);
       std::vector<uint32_t> first_of;  // new class -> an old class
+      std::vector<uint8_t> used(dj, 0);  // classes no state projects to are dropped
+      for (uint32_t c : f.project[j]) used[c] = 1;
       for (size_t c = 0; c < dj; ++c) {
+        if (!used[c]) continue;
         for (size_t o = 0; o < outer; ++o)
           for (size_t i = 0; i < inner; ++i) slice[o * inner + i] = f.table[(o * dj + c) * inner + i];
         auto [it, fresh] = ids.try_emplace(slice, static_cast<uint32_t>(first_of.size()));
         if (fresh) first_of.push_back(static_cast<uint32_t>(c));
         id[c] = it->second;
       }
-      if (first_of.size() == dj) continue;
+      if (first_of.size() == dj && dj > 1) continue;
       const size_t nd = first_of.size();
       std::vector<double> table(inner * nd * outer);
       for (size_t o = 0; o < outer; ++o)
@@ -126,6 +129,32 @@ StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
       reduced_of[x][s] = it->second;
     }
   }
+  // The graph over the kept states: variables left with one state drop out of
+  // every factor (they would only widen the bags).
+  {
+    StateGraph h;
+    h.combine = g.combine, h.sense = g.sense, h.constant = g.constant, h.term_max = g.term_max;
+    for (uint32_t x = 0; x < n; ++x) {
+      h.domain.push_back(static_cast<uint32_t>(kept[x].size()));
+      h.unary.emplace_back();
+      for (uint32_t s : kept[x]) h.unary[x].push_back(g.unary[x][s]);
+    }
+    h.unary_terms = g.unary_terms, h.partial = g.partial;
+    for (StateFactor& f : g.factors) {
+      for (size_t j = 0; j < f.scope.size(); ++j) {
+        std::vector<uint32_t> p;
+        for (uint32_t s : kept[f.scope[j]]) p.push_back(f.project[j][s]);
+        f.project[j].swap(p);
+      }
+      h.factors.push_back(std::move(f));
+    }
+    simplify(h, limits.progress);
+    g = std::move(h);
+  }
+  const std::vector<std::vector<uint32_t>> original = std::move(kept);  // kept state -> state
+  kept.assign(n, {});
+  for (uint32_t x = 0; x < n; ++x)
+    for (uint32_t s = 0; s < g.domain[x]; ++s) kept[x].push_back(s);
   // Per factor and variable: reduced state -> class.
   std::vector<std::vector<std::vector<uint32_t>>> proj(g.factors.size());
   for (uint32_t i = 0; i < g.factors.size(); ++i) {
@@ -166,7 +195,9 @@ StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
                        " joint states over " + std::to_string(adj[v].size() + 1) +
                        " regions; the memory cap is " + std::to_string(static_cast<uint64_t>(limits.max_table)));
     gone[v] = 1;
-    r.width = std::max(r.width, static_cast<uint32_t>(adj[v].size()));
+    // (Width counts the neighbours with a choice left: one-state ones cost nothing.)
+    r.width = std::max(r.width, static_cast<uint32_t>(std::count_if(adj[v].begin(), adj[v].end(),
+                                                                    [&](uint32_t w) { return dom[w] > 1; })));
     r.largest_table = std::max(r.largest_table, size);
     std::vector<uint32_t> bag = {v};
     bag.insert(bag.end(), adj[v].begin(), adj[v].end());
@@ -284,7 +315,7 @@ StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
     reduced[v] = best_state[v][idx];
   }
   r.state.resize(n);
-  for (uint32_t x = 0; x < n; ++x) r.state[x] = kept[x][reduced[x]];
+  for (uint32_t x = 0; x < n; ++x) r.state[x] = original[x][kept[x][reduced[x]]];
   r.value = constant;
   return r;
 }

@@ -63,7 +63,18 @@ struct ObjectiveTerms {
   // when the measure is at most cut (a max that already holds cut loses nothing,
   // and most pairs then need no accurate measure). cut = -INFINITY: the measure.
   double (*pair)(const Mesh& points, const Tri& s, const Tri& t, double cut) = nullptr;
+  // Optional, for vertex terms that read only which classes the neighbours fall
+  // in (above, below or level with the vertex): the class of neighbour w of v
+  // (< 32), and the term from the set of classes present, as a bit mask. A fan is
+  // then summarised by one mask, and fans with equal masks are interchangeable.
+  uint32_t (*neighbor_class)(const Mesh& points, uint32_t v, uint32_t w) = nullptr;
+  double (*term_of_classes)(uint32_t mask) = nullptr;
+  // Edge terms: whether they read the apexes at all (a length does not).
+  bool edge_reads_apexes = true;
 };
+
+// The classes of v's neighbours in nb, as a bit mask (neighbor_class set).
+uint32_t neighbor_classes(const ObjectiveTerms& d, const Mesh& points, uint32_t v, const std::vector<uint32_t>& nb);
 
 const ObjectiveTerms& objective_terms(Objective o);
 

@@ -25,12 +25,6 @@ struct RegionModelLimits {
   double max_factor = 1 << 20;  // entries of one vertex factor; larger ones are relaxed
 };
 
-// The objective's reducer for enumerate_regions: a region's signature is its fans
-// at the vertices it shares with other regions that have a choice; its value, the
-// terms it alone decides (its triangles, its inside edges, edges to fixed
-// triangles, vertices it does not share). `skeleton` must outlive it.
-StateReducer objective_reducer(const Mesh& delaunay, const Regions& skeleton, Objective o);
-
 RegionModel region_model(const Mesh& delaunay, const Regions& regions, Objective o,
                          const RegionModelLimits& limits = {}, const Progress& progress = {});
 

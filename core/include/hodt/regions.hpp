@@ -39,22 +39,18 @@ struct Regions {
   Mesh triangulation(const Mesh& delaunay, const std::vector<uint32_t>& state) const;
 };
 
-// Optional, per objective: what the objective sees of a region's triangulation
-// from outside it (its signature), and the combined value of the terms the region
-// alone decides. Triangulations with equal signatures are interchangeable for
-// every other term, so of those only the best needs keeping (the Delaunay one,
-// states[0], is kept too). This keeps regions with millions of triangulations
-// down to their distinct interfaces.
-struct StateKey {
-  std::vector<Tri> signature;
-  double value;
-};
-struct StateReducer {
-  std::function<StateKey(uint32_t region, const std::vector<Tri>& triangulation)> key;
-  std::function<bool(double, double)> better;  // is a strictly better than b?
-};
+class RegionTerms;  // region_terms.hpp
 
 struct RegionLimits {
+  // With an objective's terms, each region keeps only the best triangulation per
+  // signature (region_terms.hpp), found by dynamic programming over partial fills
+  // (fill_dp.hpp) within these many kept partial fills; a region over them is
+  // enumerated instead, within the node budgets below.
+  const RegionTerms* terms = nullptr;
+  // (A kept partial fill costs about 1 to 10 microseconds and 100 to 500 bytes.)
+  uint64_t first_pass_states = 20'000;
+  uint64_t max_states_per_region_dp = 200'000;
+  uint64_t max_total_states = 1'000'000;
   // Enumeration search nodes: every region first gets a small budget, then the
   // regions that need more get up to max_nodes_per_region each while the total
   // stays within max_total_nodes (time is about a microsecond per node).
@@ -66,7 +62,6 @@ struct RegionLimits {
   // costs its size, and their triangulations are astronomically many).
   uint32_t max_region_triangles = 64;
   Progress progress;
-  const StateReducer* reduce = nullptr;
 };
 
 // Fixed edges and regions, each with its Delaunay triangulation only.

@@ -1,0 +1,36 @@
+// The best k-OD triangulation of a region for each signature (region_terms.hpp),
+// by dynamic programming over partial fills instead of listing them all.
+//
+// A fill grows triangle by triangle from its frontier: the directed edges with
+// the uncovered part on their left (at first the region's boundary). Which
+// triangles can still be placed depends on the frontier alone, and what the
+// terms will still read of the covered part is little: the neighbours (or fan)
+// of each vertex on the frontier, the apex behind each frontier edge, and the
+// signature entries of the shared vertices and edges already complete. Partial
+// fills that agree on these are interchangeable for every completion, so each
+// layer (fills of t triangles) keeps only the best of each; every vertex and edge
+// adds its term the moment it completes. A region of millions of triangulations
+// usually has a few thousand such states.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "hodt/fill_enumerator.hpp"
+#include "hodt/region_terms.hpp"
+
+namespace hodt {
+
+struct BestFill {
+  std::vector<Tri> triangles;  // counterclockwise, canonical, sorted
+  double value;                // the terms region r alone decides
+};
+
+// One best fill per signature, or nothing when more than max_states partial
+// fills would be kept in all (*states_used counts them either way).
+std::optional<std::vector<BestFill>> best_fills(const Mesh& delaunay, const Candidates& candidates,
+                                                const RegionTerms& terms, uint32_t region, uint64_t max_states,
+                                                const Progress& progress = {}, uint64_t* states_used = nullptr);
+
+}  // namespace hodt

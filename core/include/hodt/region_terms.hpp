@@ -1,0 +1,79 @@
+// What one objective's terms (objective_terms.hpp) see of one region's
+// triangulation. The terms the region alone decides (its triangles, the edges
+// inside it or to fixed triangles, the vertices it shares with no other region
+// that has a choice) combine into its value; what the regions beside it see (its
+// fan at a shared vertex, its apex on an edge to another region with a choice)
+// is its signature. Triangulations of a region with equal signatures are
+// interchangeable for every other term, so only the best of each needs keeping:
+// this keeps regions with millions of triangulations down to their interfaces.
+//
+// The same pieces serve a whole triangulation (key) and a fill built triangle by
+// triangle (fill_dp.hpp), which meets each vertex and edge as it completes.
+#pragma once
+#include <unordered_map>
+#include <vector>
+
+#include "hodt/measures.hpp"
+#include "hodt/objective_terms.hpp"
+#include "hodt/regions.hpp"
+
+namespace hodt {
+
+// A signature is a sorted list of entries, each a header (what it is about)
+// followed by what the neighbours see.
+using SignatureEntry = std::vector<Tri>;
+
+struct StateKey {
+  std::vector<SignatureEntry> signature;  // sorted
+  double value = 0;
+};
+
+class RegionTerms {
+ public:
+  // `regions` must outlive this.
+  RegionTerms(const Mesh& delaunay, const Regions& regions, Objective o);
+
+  const ObjectiveTerms& terms() const { return d_; }
+  const Regions& regions() const { return R_; }
+  bool better(double a, double b) const { return hodt::better(sense_, a, b); }
+  double add(double value, double term) const { return combine(d_.combine, value, term); }
+  // Which pieces of a triangulation the terms read.
+  bool reads_vertices() const { return vertex_site(d_.site); }
+  bool reads_fans() const { return d_.site == TermSite::VertexPair; }  // else neighbours suffice
+  bool reads_edges() const { return edge_site(d_.site); }
+  bool reads_apexes() const { return reads_edges() && d_.edge_reads_apexes; }
+  bool reads_triangles() const { return d_.site == TermSite::Triangle; }
+  // Vertex terms that read only the classes of the neighbours: a fan is its mask.
+  bool reads_classes() const { return d_.neighbor_class != nullptr; }
+  uint32_t neighbor_class(uint32_t v, uint32_t w) const { return d_.neighbor_class(dt_, v, w); }
+
+  // Vertex v's fan in region r is complete: nb its neighbours there (sorted),
+  // fan its triangles there (read only when reads_fans()). Returns its term (0 if
+  // none), or sets `entry` (else left empty) when other regions see the fan.
+  double vertex_done(uint32_t r, uint32_t v, const std::vector<uint32_t>& nb, const std::vector<Tri>& fan,
+                     SignatureEntry& entry) const;
+  // The same for a fan summarised by the classes of its neighbours (reads_classes()).
+  double vertex_done(uint32_t r, uint32_t v, uint32_t classes, SignatureEntry& entry) const;
+  // Boundary edge u -> v of region r (r on its left) is covered by triangle u v w.
+  double boundary_edge(uint32_t r, uint32_t u, uint32_t v, uint32_t w, SignatureEntry& entry) const;
+  // Edge u -> v inside a region: w the apex on its left, x on its right.
+  double inside_edge(uint32_t u, uint32_t v, uint32_t w, uint32_t x) const;
+  double triangle(const Tri& t) const { return d_.triangle(dt_, t); }
+
+  // A whole triangulation of region r (counterclockwise triangles).
+  StateKey key(uint32_t r, const std::vector<Tri>& triangulation) const;
+
+ private:
+  const Mesh& dt_;
+  const Regions& R_;
+  const ObjectiveTerms& d_;
+  Sense sense_;
+  std::vector<uint8_t> shared_;  // per vertex: in two regions that may have a choice
+  std::vector<uint8_t> on_hull_;
+  Stars stars_;
+  std::unordered_map<uint64_t, uint32_t> boundary_;  // fixed or hull halfedges by (origin, target)
+  mutable std::vector<Tri> star_;
+  mutable std::vector<uint32_t> nb_;
+};
+
+}  // namespace hodt

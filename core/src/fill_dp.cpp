@@ -1,0 +1,269 @@
+#include "hodt/fill_dp.hpp"
+
+#include <algorithm>
+#include <unordered_map>
+
+#include "hodt/error.hpp"
+#include "hodt/predicates.hpp"
+
+namespace hodt {
+
+namespace {
+
+constexpr uint32_t kOutside = UINT32_MAX;  // behind a boundary edge not yet covered: the outside
+
+// A partial fill, reduced to what its completions can tell apart.
+struct Partial {
+  std::vector<uint64_t> open;     // the frontier, sorted
+  std::vector<uint32_t> behind;   // per open edge, the apex of the covered triangle on its right (edge terms)
+  std::vector<uint32_t> around;   // per frontier vertex: v, n, then n items (class mask, neighbours or fan triangles), by v
+  std::vector<SignatureEntry> signature;  // sorted
+  double value = 0;
+  uint32_t node = UINT32_MAX;  // how it was reached (Node)
+};
+
+struct Node {
+  uint32_t parent;
+  Tri triangle;
+};
+
+struct KeyHash {
+  size_t operator()(const std::vector<uint32_t>& k) const {
+    uint64_t h = 1469598103934665603ull;
+    for (uint32_t x : k) h = (h ^ x) * 1099511628211ull;
+    return static_cast<size_t>(h ^ (h >> 29));
+  }
+};
+
+bool crosses(const Mesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+  if (a == c || a == d || b == c || b == d) return false;
+  const int o1 = orient2d(m.point(a), m.point(b), m.point(c)), o2 = orient2d(m.point(a), m.point(b), m.point(d));
+  if (o1 * o2 >= 0) return false;
+  return orient2d(m.point(c), m.point(d), m.point(a)) * orient2d(m.point(c), m.point(d), m.point(b)) < 0;
+}
+
+uint32_t from(uint64_t e) { return static_cast<uint32_t>(e >> 32); }
+uint32_t to(uint64_t e) { return static_cast<uint32_t>(e); }
+
+class FillDp {
+ public:
+  FillDp(const Mesh& dt, const Candidates& cand, const RegionTerms& terms, uint32_t r)
+      : dt_(dt), cand_(cand), T_(terms), r_(r) {}
+
+  std::optional<std::vector<BestFill>> run(uint64_t max_states, const Progress& progress, uint64_t* used) {
+    Partial start;
+    for (auto [a, b] : T_.regions().regions[r_].boundary) start.open.push_back(edge_key(a, b));
+    std::sort(start.open.begin(), start.open.end());
+    if (T_.reads_apexes()) start.behind.assign(start.open.size(), kOutside);
+    std::vector<Partial> layer;
+    layer.push_back(std::move(start));
+    std::vector<BestFill> out;
+    uint64_t states = 1;
+    while (!layer.empty()) {
+      std::vector<Partial> next;
+      std::unordered_map<std::vector<uint32_t>, uint32_t, KeyHash> index;
+      for (Partial& p : layer) {
+        if (p.open.empty()) {
+          out.push_back({triangles_of(p.node), p.value});
+          continue;
+        }
+        expand(p, [&](Partial&& child) {
+          auto [it, fresh] = index.try_emplace(key_of(child), static_cast<uint32_t>(next.size()));
+          if (fresh) next.push_back(std::move(child));
+          else if (T_.better(child.value, next[it->second].value)) next[it->second] = std::move(child);
+        });
+      }
+      states += next.size();
+      if (used) *used += next.size();
+      if (states > max_states) return std::nullopt;
+      if (progress && !progress(static_cast<double>(states), static_cast<double>(max_states))) throw Cancelled();
+      // Record how each kept state was reached.
+      for (Partial& p : next) {
+        nodes_.push_back(pending_[p.node]);
+        p.node = static_cast<uint32_t>(nodes_.size() - 1);
+      }
+      pending_.clear();
+      layer = std::move(next);
+    }
+    return out;
+  }
+
+ private:
+  const Mesh& dt_;
+  const Candidates& cand_;
+  const RegionTerms& T_;
+  uint32_t r_;
+  std::vector<Node> nodes_;    // kept states' (parent, last triangle)
+  std::vector<Node> pending_;  // this layer's children, before merging
+  SignatureEntry entry_;
+  std::vector<uint32_t> nb_, key_;
+  std::vector<Tri> fan_;
+
+  std::vector<Tri> triangles_of(uint32_t node) const {
+    std::vector<Tri> tris;
+    for (; node != UINT32_MAX; node = nodes_[node].parent) tris.push_back(canonical_triangle(nodes_[node].triangle));
+    std::sort(tris.begin(), tris.end());
+    return tris;
+  }
+
+  size_t candidates(uint64_t e) const {
+    const auto it = cand_.find(e);
+    return it == cand_.end() ? 0 : it->second.size();
+  }
+
+  std::vector<uint32_t> key_of(const Partial& p) const {
+    std::vector<uint32_t> k;
+    k.reserve(2 * p.open.size() + p.behind.size() + p.around.size() + 4 * p.signature.size() + 2);
+    for (uint64_t e : p.open) k.push_back(from(e)), k.push_back(to(e));
+    k.insert(k.end(), p.behind.begin(), p.behind.end());
+    k.push_back(kOutside);
+    k.insert(k.end(), p.around.begin(), p.around.end());
+    for (const SignatureEntry& s : p.signature) {
+      k.push_back(kOutside);
+      for (const Tri& t : s) k.insert(k.end(), t.begin(), t.end());
+    }
+    return k;
+  }
+
+  bool on_frontier(const Partial& p, uint32_t v) const {
+    for (uint64_t e : p.open)
+      if (from(e) == v || to(e) == v) return true;
+    return false;
+  }
+
+  void take(Partial& p, double term) {
+    p.value = T_.add(p.value, term);
+    if (entry_.empty()) return;
+    p.signature.insert(std::upper_bound(p.signature.begin(), p.signature.end(), entry_), entry_);
+  }
+
+  // Edge a -> b gets its triangle on the left (apex c); `behind` is what lies right.
+  void edge_complete(Partial& p, uint32_t a, uint32_t b, uint32_t c, uint32_t behind) {
+    if (behind == kOutside) take(p, T_.boundary_edge(r_, a, b, c, entry_));
+    else entry_.clear(), take(p, T_.inside_edge(a, b, c, behind));
+  }
+
+  // Adds triangle t to the fans of its corners; completes the corners that left the frontier.
+  void add_to_fans(Partial& p, const Tri& t) {
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t v = t[i];
+      // Find v's block (blocks sorted by vertex).
+      size_t pos = 0;
+      while (pos < p.around.size() && p.around[pos] < v) pos += 2 + p.around[pos + 1];
+      if (pos == p.around.size() || p.around[pos] != v) {
+        p.around.insert(p.around.begin() + static_cast<std::ptrdiff_t>(pos), {v, 0});
+      }
+      std::vector<uint32_t> items(p.around.begin() + static_cast<std::ptrdiff_t>(pos + 2),
+                                  p.around.begin() + static_cast<std::ptrdiff_t>(pos + 2 + p.around[pos + 1]));
+      if (T_.reads_classes()) {  // one item: the neighbours' classes
+        if (items.empty()) items.push_back(0);
+        for (uint32_t w : {t[(i + 1) % 3], t[(i + 2) % 3]}) items[0] |= 1u << T_.neighbor_class(v, w);
+      } else if (T_.reads_fans()) {  // items are whole triangles, sorted
+        const Tri c = canonical_triangle(t);
+        size_t j = 0;
+        while (j < items.size() && Tri{items[j], items[j + 1], items[j + 2]} < c) j += 3;
+        items.insert(items.begin() + static_cast<std::ptrdiff_t>(j), c.begin(), c.end());
+      } else {
+        for (uint32_t w : {t[(i + 1) % 3], t[(i + 2) % 3]}) {
+          auto it = std::lower_bound(items.begin(), items.end(), w);
+          if (it == items.end() || *it != w) items.insert(it, w);
+        }
+      }
+      p.around.erase(p.around.begin() + static_cast<std::ptrdiff_t>(pos),
+                     p.around.begin() + static_cast<std::ptrdiff_t>(pos + 2 + p.around[pos + 1]));
+      if (!on_frontier(p, v)) {  // complete: its term, or its signature entry
+        if (T_.reads_classes()) {
+          take(p, T_.vertex_done(r_, v, items[0], entry_));
+          continue;
+        }
+        fan_.clear();
+        if (T_.reads_fans()) {
+          for (size_t j = 0; j < items.size(); j += 3) fan_.push_back({items[j], items[j + 1], items[j + 2]});
+          star_neighbors(v, fan_, nb_);
+        } else {
+          nb_ = items;
+        }
+        take(p, T_.vertex_done(r_, v, nb_, fan_, entry_));
+        continue;
+      }
+      std::vector<uint32_t> block{v, static_cast<uint32_t>(items.size())};
+      block.insert(block.end(), items.begin(), items.end());
+      p.around.insert(p.around.begin() + static_cast<std::ptrdiff_t>(pos), block.begin(), block.end());
+    }
+  }
+
+  template <class Emit>
+  void expand(const Partial& p, Emit&& emit) {
+    // The open edge with the fewest candidate triangles (ties: smallest key):
+    // a function of the frontier, so equal frontiers expand alike.
+    size_t at = 0, fewest = SIZE_MAX;
+    for (size_t i = 0; i < p.open.size(); ++i) {
+      const size_t c = candidates(p.open[i]);
+      if (c < fewest) fewest = c, at = i;
+    }
+    if (fewest == 0) return;  // a dead end
+    const uint32_t u = from(p.open[at]), v = to(p.open[at]);
+    for (uint32_t w : cand_.find(p.open[at])->second) {
+      // Sides v -> w and w -> u: each closes an open edge in the same direction,
+      // or opens its reverse, if it crosses no frontier edge.
+      const uint32_t side[2][2] = {{v, w}, {w, u}};
+      int close[2] = {-1, -1};
+      bool ok = true;
+      for (int s = 0; s < 2 && ok; ++s) {
+        const uint32_t a = side[s][0], b = side[s][1];
+        const auto it = std::lower_bound(p.open.begin(), p.open.end(), edge_key(a, b));
+        if (it != p.open.end() && *it == edge_key(a, b)) {
+          close[s] = static_cast<int>(it - p.open.begin());
+          continue;
+        }
+        if (std::binary_search(p.open.begin(), p.open.end(), edge_key(b, a))) ok = false;  // its far side is covered
+        for (size_t j = 0; j < p.open.size() && ok; ++j)
+          if (crosses(dt_, a, b, from(p.open[j]), to(p.open[j]))) ok = false;
+      }
+      if (!ok) continue;
+      Partial c;
+      c.value = p.value;
+      c.signature = p.signature;
+      const bool edges = T_.reads_apexes();
+      // The new frontier: without u -> v and the closed edges, with the opened ones.
+      std::vector<std::pair<uint64_t, uint32_t>> open;
+      for (size_t j = 0; j < p.open.size(); ++j)
+        if (j != at && static_cast<int>(j) != close[0] && static_cast<int>(j) != close[1])
+          open.push_back({p.open[j], edges ? p.behind[j] : 0});
+      for (int s = 0; s < 2; ++s)
+        if (close[s] < 0) open.push_back({edge_key(side[s][1], side[s][0]), s == 0 ? u : v});
+      std::sort(open.begin(), open.end());
+      for (auto [e, b] : open) {
+        c.open.push_back(e);
+        if (edges) c.behind.push_back(b);
+      }
+      c.around = p.around;
+      if (T_.reads_edges() && !edges) {  // terms of the edges alone: as each appears
+        entry_.clear();
+        for (int s = 0; s < 2; ++s)
+          if (close[s] < 0) take(c, T_.inside_edge(side[s][0], side[s][1], kNoApex, kNoApex));
+      }
+      if (edges) {
+        edge_complete(c, u, v, w, p.behind[at]);
+        if (close[0] >= 0) edge_complete(c, v, w, u, p.behind[static_cast<size_t>(close[0])]);
+        if (close[1] >= 0) edge_complete(c, w, u, v, p.behind[static_cast<size_t>(close[1])]);
+      }
+      if (T_.reads_triangles()) entry_.clear(), take(c, T_.triangle({u, v, w}));
+      if (T_.reads_vertices()) add_to_fans(c, {u, v, w});
+      pending_.push_back({p.node, {u, v, w}});
+      c.node = static_cast<uint32_t>(pending_.size() - 1);
+      emit(std::move(c));
+    }
+  }
+};
+
+}  // namespace
+
+std::optional<std::vector<BestFill>> best_fills(const Mesh& dt, const Candidates& candidates, const RegionTerms& terms,
+                                                uint32_t region, uint64_t max_states, const Progress& progress,
+                                                uint64_t* states_used) {
+  FillDp dp(dt, candidates, terms, region);
+  return dp.run(max_states, progress, states_used);
+}
+
+}  // namespace hodt

@@ -1,0 +1,137 @@
+#include "hodt/region_terms.hpp"
+
+#include <algorithm>
+#include <unordered_map>
+
+#include "hodt/fill_enumerator.hpp"
+
+namespace hodt {
+
+namespace {
+// Entry headers: a vertex's fan (triangles or neighbours), an edge's apex.
+constexpr uint32_t kVertexEntry = UINT32_MAX, kEdgeEntry = UINT32_MAX - 1;
+}  // namespace
+
+RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o)
+    : dt_(dt), R_(R), d_(objective_terms(o)), sense_(info(o).sense) {
+  const uint32_t n = dt.num_vertices();
+  std::vector<uint32_t> count(n, 0), seen(n, UINT32_MAX);
+  for (uint32_t r = 0; r < R.regions.size(); ++r) {
+    if (R.regions[r].delaunay_triangles.size() < 2) continue;
+    for (uint32_t t : R.regions[r].delaunay_triangles)
+      for (uint32_t e = 3 * t; e < 3 * t + 3; ++e)
+        if (seen[dt.triangles[e]] != r) seen[dt.triangles[e]] = r, ++count[dt.triangles[e]];
+  }
+  shared_.resize(n);
+  for (uint32_t v = 0; v < n; ++v) shared_[v] = count[v] >= 2;
+  on_hull_.assign(n, 0);
+  for (uint32_t v : dt.hull) on_hull_[v] = 1;
+  stars_ = build_stars(dt);
+  if (reads_edges())
+    for (uint32_t e = 0; e < dt.halfedges.size(); ++e)
+      if (dt.halfedges[e] < 0 || R.fixed[e]) boundary_.emplace(edge_key(dt.origin(e), dt.target(e)), e);
+}
+
+double RegionTerms::vertex_done(uint32_t r, uint32_t v, const std::vector<uint32_t>& nb, const std::vector<Tri>& fan,
+                                SignatureEntry& entry) const {
+  entry.clear();
+  if (!reads_vertices()) return 0;
+  if (reads_classes()) return vertex_done(r, v, neighbor_classes(d_, dt_, v, nb), entry);
+  if (shared_[v]) {  // the regions beside see the triangles (vertex pairs) or the neighbours
+    entry.push_back({kVertexEntry, v, reads_fans() ? 0u : 1u});
+    if (reads_fans()) entry.insert(entry.end(), fan.begin(), fan.end());
+    else
+      for (uint32_t w : nb) entry.push_back({w, 0, 0});
+    return 0;
+  }
+  if (interior_only(d_.site) && on_hull_[v]) return 0;
+  // Its other triangles are fixed: the Delaunay ones outside this region.
+  star_.clear();
+  if (reads_fans()) star_ = fan;
+  for (uint32_t j = stars_.tri_offset[v]; j < stars_.tri_offset[v + 1]; ++j)
+    if (R_.region_of_triangle[stars_.triangle[j]] != r) star_.push_back(base_triangle(dt_, stars_.triangle[j]));
+  star_neighbors(v, star_, nb_);
+  if (!reads_fans()) {  // add the region's neighbours
+    nb_.insert(nb_.end(), nb.begin(), nb.end());
+    std::sort(nb_.begin(), nb_.end());
+    nb_.erase(std::unique(nb_.begin(), nb_.end()), nb_.end());
+  }
+  return vertex_term(d_, dt_, Star(v, nb_, star_));
+}
+
+double RegionTerms::vertex_done(uint32_t r, uint32_t v, uint32_t classes, SignatureEntry& entry) const {
+  entry.clear();
+  if (shared_[v]) {  // the regions beside see the classes
+    entry = {{kVertexEntry, v, 2}, {classes, 0, 0}};
+    return 0;
+  }
+  if (interior_only(d_.site) && on_hull_[v]) return 0;
+  for (uint32_t j = stars_.tri_offset[v]; j < stars_.tri_offset[v + 1]; ++j)
+    if (R_.region_of_triangle[stars_.triangle[j]] != r)
+      for (uint32_t w : base_triangle(dt_, stars_.triangle[j]))
+        if (w != v) classes |= 1u << neighbor_class(v, w);
+  return d_.term_of_classes(classes);
+}
+
+double RegionTerms::boundary_edge(uint32_t r, uint32_t u, uint32_t v, uint32_t w, SignatureEntry& entry) const {
+  entry.clear();
+  if (!reads_edges()) return 0;
+  // The Delaunay halfedge u -> v on region r's boundary, and what lies beyond it.
+  const auto it = boundary_.find(edge_key(u, v));
+  if (it == boundary_.end() || R_.region_of_triangle[it->second / 3] != r) return 0;
+  const int32_t f = dt_.halfedges[it->second];
+  if (f < 0) return interior_only(d_.site) ? 0 : edge_term(d_, dt_, u, v, w, kNoApex);
+  const uint32_t other = R_.region_of_triangle[static_cast<uint32_t>(f) / 3];
+  if (R_.regions[other].delaunay_triangles.size() > 1 && reads_apexes()) {  // seen from the other side: the apex
+    entry = {{kEdgeEntry, u, v}, {w, 0, 0}};
+    return 0;
+  }
+  return edge_term(d_, dt_, u, v, w, dt_.apex(static_cast<uint32_t>(f)));
+}
+
+double RegionTerms::inside_edge(uint32_t u, uint32_t v, uint32_t w, uint32_t x) const {
+  if (!reads_edges()) return 0;
+  return u < v ? edge_term(d_, dt_, u, v, w, x) : edge_term(d_, dt_, v, u, x, w);
+}
+
+StateKey RegionTerms::key(uint32_t r, const std::vector<Tri>& tris) const {
+  StateKey key;
+  SignatureEntry entry;
+  auto take = [&](double term) {
+    key.value = add(key.value, term);
+    if (!entry.empty()) key.signature.push_back(std::move(entry)), entry.clear();
+  };
+  if (reads_vertices()) {
+    std::vector<std::pair<uint32_t, uint32_t>> at;  // (vertex, triangle index)
+    for (uint32_t i = 0; i < tris.size(); ++i)
+      for (uint32_t v : tris[i]) at.push_back({v, i});
+    std::sort(at.begin(), at.end());
+    std::vector<Tri> fan;
+    std::vector<uint32_t> nb;
+    for (size_t i = 0; i < at.size();) {
+      const uint32_t v = at[i].first;
+      fan.clear();
+      for (; i < at.size() && at[i].first == v; ++i) fan.push_back(tris[at[i].second]);
+      star_neighbors(v, fan, nb);
+      take(vertex_done(r, v, nb, fan, entry));
+    }
+  }
+  if (reads_edges()) {
+    std::unordered_map<uint64_t, uint32_t> apex;  // directed edge -> apex on its left
+    for (const Tri& t : tris)
+      for (int i = 0; i < 3; ++i) apex[edge_key(t[i], t[(i + 1) % 3])] = t[(i + 2) % 3];
+    for (const Tri& t : tris)  // (in the triangles' order: sums come out the same everywhere)
+      for (int i = 0; i < 3; ++i) {
+        const uint32_t u = t[i], v = t[(i + 1) % 3], w = t[(i + 2) % 3];
+        const auto it = apex.find(edge_key(v, u));
+        if (it == apex.end()) take(boundary_edge(r, u, v, w, entry));
+        else if (u < v) take(inside_edge(u, v, w, it->second));
+      }
+  }
+  if (reads_triangles())
+    for (const Tri& t : tris) take(triangle(t));
+  std::sort(key.signature.begin(), key.signature.end());
+  return key;
+}
+
+}  // namespace hodt
