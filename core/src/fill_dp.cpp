@@ -54,6 +54,7 @@ class FillDp {
     Partial start;
     for (auto [a, b] : T_.regions().regions[r_].boundary) start.open.push_back(edge_key(a, b));
     std::sort(start.open.begin(), start.open.end());
+    boundary_ = start.open;
     if (T_.reads_apexes()) start.behind.assign(start.open.size(), kOutside);
     std::vector<Partial> layer;
     layer.push_back(std::move(start));
@@ -93,6 +94,7 @@ class FillDp {
   const Candidates& cand_;
   const RegionTerms& T_;
   uint32_t r_;
+  std::vector<uint64_t> boundary_;  // the region's boundary edges, sorted
   std::vector<Node> nodes_;    // kept states' (parent, last triangle)
   std::vector<Node> pending_;  // this layer's children, before merging
   SignatureEntry entry_;
@@ -242,6 +244,10 @@ class FillDp {
         entry_.clear();
         for (int s = 0; s < 2; ++s)
           if (close[s] < 0) take(c, T_.inside_edge(side[s][0], side[s][1], kNoApex, kNoApex));
+        const uint32_t covered[3][3] = {{u, v, w}, {v, w, u}, {w, u, v}};
+        for (int s = 0; s < 3; ++s)
+          if ((s == 0 || close[s - 1] >= 0) && std::binary_search(boundary_.begin(), boundary_.end(), edge_key(covered[s][0], covered[s][1])))
+            take(c, T_.boundary_edge(r_, covered[s][0], covered[s][1], covered[s][2], entry_));
       }
       if (edges) {
         edge_complete(c, u, v, w, p.behind[at]);

@@ -39,8 +39,10 @@ double RegionTerms::vertex_done(uint32_t r, uint32_t v, const std::vector<uint32
   if (reads_classes()) return vertex_done(r, v, neighbor_classes(d_, dt_, v, nb), entry);
   if (shared_[v]) {  // the regions beside see the triangles (vertex pairs) or the neighbours
     entry.push_back({kVertexEntry, v, reads_fans() ? 0u : 1u});
-    if (reads_fans()) entry.insert(entry.end(), fan.begin(), fan.end());
-    else
+    if (reads_fans()) {  // canonical triangles, sorted
+      for (const Tri& t : fan) entry.push_back(canonical_triangle(t));
+      std::sort(entry.begin() + 1, entry.end());
+    } else
       for (uint32_t w : nb) entry.push_back({w, 0, 0});
     return 0;
   }
@@ -123,9 +125,8 @@ StateKey RegionTerms::key(uint32_t r, const std::vector<Tri>& tris) const {
     for (const Tri& t : tris)  // (in the triangles' order: sums come out the same everywhere)
       for (int i = 0; i < 3; ++i) {
         const uint32_t u = t[i], v = t[(i + 1) % 3], w = t[(i + 2) % 3];
-        const auto it = apex.find(edge_key(v, u));
-        if (it == apex.end()) take(boundary_edge(r, u, v, w, entry));
-        else if (u < v) take(inside_edge(u, v, w, it->second));
+        if (boundary_.count(edge_key(u, v))) take(boundary_edge(r, u, v, w, entry));  // (even with r beyond it)
+        else if (u < v) take(inside_edge(u, v, w, apex.at(edge_key(v, u))));
       }
   }
   if (reads_triangles())

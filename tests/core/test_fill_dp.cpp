@@ -1,0 +1,119 @@
+// The dynamic program over partial fills (fill_dp.hpp) against plain
+// enumeration of each region's triangulations: the same signatures, each with
+// the same best value; and the neighbour-class summaries against the terms.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "generators.hpp"
+#include "hodt/delaunay.hpp"
+#include "hodt/fill_dp.hpp"
+#include "hodt/fill_enumerator.hpp"
+#include "hodt/measures.hpp"
+#include "hodt/points.hpp"
+#include "hodt/region_terms.hpp"
+#include "hodt/regions.hpp"
+
+using namespace hodt;
+using namespace hodt::test;
+
+namespace {
+
+// Instances with regions of a few dozen triangulations and more at k = 3, 4.
+std::vector<double> medium_instance(uint64_t seed) {
+  Rng r(seed);
+  switch (seed % 4) {
+    case 0: return uniform_points(12 + r.below(10), seed);
+    case 1: return dem_points(12 + r.below(10), seed);
+    case 2: return grid_points(4, 4, seed, true);
+    default: return cocircular_points(8 + r.below(6), seed);
+  }
+}
+
+bool close(double a, double b) { return a == b || std::abs(a - b) <= 1e-12 * std::max(std::abs(a), std::abs(b)); }
+
+}  // namespace
+
+TEST_CASE("fill DP: the best triangulation of every signature, as enumeration finds it") {
+  uint64_t regions_checked = 0;
+  for (uint64_t seed = 1; seed <= 40; ++seed) {
+    const Mesh dt = first_order(delaunay(validate_points(medium_instance(seed)).xyz)).base;
+    for (uint32_t k : {2u, 3u, 4u}) {
+      const Regions R = k_order_skeleton(dt, k);
+      const Candidates cand = k_order_candidates(dt, k, R.useful);
+      for (const auto& oi : objectives()) {
+        const RegionTerms T(dt, R, oi.objective);
+        for (uint32_t r = 0; r < R.regions.size(); ++r) {
+          if (R.regions[r].delaunay_triangles.size() < 2) continue;
+          std::map<std::vector<SignatureEntry>, double> listed;
+          const bool complete = enumerate_fills(dt, cand, R.regions[r].boundary, 200'000, [&](const std::vector<Tri>& tris) {
+            const StateKey key = T.key(r, tris);
+            auto [it, fresh] = listed.try_emplace(key.signature, key.value);
+            if (!fresh && T.better(key.value, it->second)) it->second = key.value;
+          });
+          if (!complete) continue;
+          const auto fills = best_fills(dt, cand, T, r, 2'000'000);
+          REQUIRE(fills);
+          CAPTURE(seed);
+          CAPTURE(k);
+          CAPTURE(std::string(oi.id));
+          CAPTURE(r);
+          std::map<std::vector<SignatureEntry>, double> found;
+          for (const BestFill& f : *fills) {
+            const StateKey key = T.key(r, f.triangles);
+            CHECK(close(key.value, f.value));  // the DP's running value is the triangulation's
+            CHECK(found.emplace(key.signature, key.value).second);  // one fill per signature
+          }
+          if (found != listed) {
+            auto dump = [](const char* what, const std::map<std::vector<SignatureEntry>, double>& m) {
+              printf("%s\n", what);
+              for (auto& [sig, v] : m) {
+                printf("  %g:", v);
+                for (auto& e : sig) { printf(" ["); for (auto& t : e) printf("(%u %u %u)", t[0], t[1], t[2]); printf("]"); }
+                printf("\n");
+              }
+            };
+            dump("listed", listed), dump("found", found);
+          }
+          REQUIRE(found.size() == listed.size());
+          for (const auto& [signature, value] : listed) {
+            const auto it = found.find(signature);
+            REQUIRE(it != found.end());
+            CHECK(close(it->second, value));
+          }
+          ++regions_checked;
+        }
+      }
+    }
+  }
+  CHECK(regions_checked > 1000);
+}
+
+TEST_CASE("fill DP: a budget too small is reported, not answered") {
+  const Mesh dt = first_order(delaunay(validate_points(uniform_points(60, 7)).xyz)).base;
+  const Regions R = k_order_skeleton(dt, 4);
+  const Candidates cand = k_order_candidates(dt, 4, R.useful);
+  const RegionTerms T(dt, R, Objective::MinmaxEdgeAreaRatio);
+  bool refused = false;
+  for (uint32_t r = 0; r < R.regions.size(); ++r)
+    if (R.regions[r].delaunay_triangles.size() > 6) refused = refused || !best_fills(dt, cand, T, r, 10);
+  CHECK(refused);
+}
+
+TEST_CASE("neighbour classes give the same vertex terms as the stars they summarise") {
+  for (uint64_t seed = 1; seed <= 30; ++seed) {
+    const Mesh m = delaunay(validate_points(seed % 2 ? dem_points(80, seed) : grid_points(7, 7, seed, true)).xyz);
+    const Stars st = build_stars(m);
+    for (const auto& oi : objectives()) {
+      const ObjectiveTerms& d = objective_terms(oi.objective);
+      if (!d.neighbor_class) continue;
+      for (uint32_t v = 0; v < m.num_vertices(); ++v) {
+        std::vector<uint32_t> nb(st.neighbor.begin() + st.offset[v], st.neighbor.begin() + st.offset[v + 1]);
+        const std::vector<Tri> none;
+        CHECK(d.term_of_classes(neighbor_classes(d, m, v, nb)) == vertex_term(d, m, Star(v, nb, none)));
+      }
+    }
+  }
+}
