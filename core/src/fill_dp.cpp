@@ -233,7 +233,10 @@ class FillDp {
         if (j != at && static_cast<int>(j) != close[0] && static_cast<int>(j) != close[1])
           open.push_back({p.open[j], edges ? p.behind[j] : 0});
       for (int s = 0; s < 2; ++s)
-        if (close[s] < 0) open.push_back({edge_key(side[s][1], side[s][0]), s == 0 ? u : v});
+        if (close[s] < 0) {
+          const uint32_t a = side[s][1], b = side[s][0], behind = s == 0 ? u : v;
+          open.push_back({edge_key(a, b), edges ? T_.apex_kind(a, b, behind) : 0});
+        }
       std::sort(open.begin(), open.end());
       for (auto [e, b] : open) {
         c.open.push_back(e);

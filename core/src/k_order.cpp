@@ -144,8 +144,10 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     return brute_force_k_order(dt, o, k, max_nodes, options.progress);
   }
   Regions R = k_order_skeleton(dt, k, options.progress);
-  const RegionTerms terms(dt, R, o);
+  const Candidates cand = k_order_candidates(dt, k, R.useful, options.progress);
+  const RegionTerms terms(dt, R, o, &cand);
   RegionLimits rl;
+  rl.candidates = &cand;
   rl.max_nodes_per_region = max_nodes;
   rl.progress = options.progress;
   rl.terms = &terms;

@@ -1,6 +1,7 @@
 #include "hodt/region_terms.hpp"
 
 #include <algorithm>
+#include <map>
 #include <unordered_map>
 
 #include "hodt/fill_enumerator.hpp"
@@ -12,8 +13,8 @@ namespace {
 constexpr uint32_t kVertexEntry = UINT32_MAX, kEdgeEntry = UINT32_MAX - 1;
 }  // namespace
 
-RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o)
-    : dt_(dt), R_(R), d_(objective_terms(o)), sense_(info(o).sense) {
+RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o, const Candidates* candidates)
+    : dt_(dt), R_(R), cand_(candidates), d_(objective_terms(o)), sense_(info(o).sense) {
   const uint32_t n = dt.num_vertices();
   std::vector<uint32_t> count(n, 0), seen(n, UINT32_MAX);
   for (uint32_t r = 0; r < R.regions.size(); ++r) {
@@ -30,6 +31,59 @@ RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o)
   if (reads_edges())
     for (uint32_t e = 0; e < dt.halfedges.size(); ++e)
       if (dt.halfedges[e] < 0 || R.fixed[e]) boundary_.emplace(edge_key(dt.origin(e), dt.target(e)), e);
+  if (d_.combine == TermCombine::Max) floor_ = fixed_terms_max();
+}
+
+double RegionTerms::fixed_terms_max() const {
+  auto fixed = [&](uint32_t t) { return R_.regions[R_.region_of_triangle[t]].delaunay_triangles.size() == 1; };
+  double m = 0;
+  if (reads_triangles()) {
+    for (uint32_t t = 0; t < dt_.num_triangles(); ++t)
+      if (fixed(t)) m = std::max(m, d_.triangle(dt_, base_triangle(dt_, t)));
+  } else if (reads_edges()) {
+    for (uint32_t e = 0; e < dt_.halfedges.size(); ++e) {
+      const int32_t f = dt_.halfedges[e];
+      if (!fixed(e / 3) || (f >= 0 && (static_cast<uint32_t>(f) < e || !fixed(static_cast<uint32_t>(f) / 3)))) continue;
+      if (f < 0 && interior_only(d_.site)) continue;
+      m = std::max(m, edge_term(d_, dt_, dt_.origin(e), dt_.target(e), dt_.apex(e), f < 0 ? kNoApex : dt_.apex(static_cast<uint32_t>(f)), m));
+    }
+  } else {
+    for (uint32_t v = 0; v < dt_.num_vertices(); ++v) {
+      if (interior_only(d_.site) && on_hull_[v]) continue;
+      bool all = true;
+      for (uint32_t j = stars_.tri_offset[v]; j < stars_.tri_offset[v + 1] && all; ++j) all = fixed(stars_.triangle[j]);
+      if (!all) continue;
+      star_.clear();
+      for (uint32_t j = stars_.tri_offset[v]; j < stars_.tri_offset[v + 1]; ++j) star_.push_back(base_triangle(dt_, stars_.triangle[j]));
+      star_neighbors(v, star_, nb_);
+      m = std::max(m, vertex_term(d_, dt_, Star(v, nb_, star_), m));
+    }
+  }
+  return m;
+}
+
+uint32_t RegionTerms::apex_kind(uint32_t a, uint32_t b, uint32_t w) const {
+  if (!cand_) return w;
+  auto [it, fresh] = kinds_.try_emplace(edge_key(a, b));
+  auto& kinds = it->second;
+  if (fresh) {
+    const auto front = cand_->find(edge_key(a, b)), behind = cand_->find(edge_key(b, a));
+    if (front != cand_->end() && behind != cand_->end()) {
+      std::map<std::vector<double>, uint32_t> first;  // the terms for every front apex -> smallest apex
+      std::vector<std::vector<double>> terms_of;
+      for (uint32_t x : behind->second) {
+        std::vector<double> terms;
+        for (uint32_t f : front->second) terms.push_back(inside_edge(a, b, f, x));
+        auto [k, fresh_kind] = first.try_emplace(terms, x);
+        if (!fresh_kind) k->second = std::min(k->second, x);
+        terms_of.push_back(std::move(terms));
+      }
+      for (size_t i = 0; i < behind->second.size(); ++i) kinds.push_back({behind->second[i], first[terms_of[i]]});
+      std::sort(kinds.begin(), kinds.end());
+    }
+  }
+  const auto k = std::lower_bound(kinds.begin(), kinds.end(), std::make_pair(w, 0u));
+  return k != kinds.end() && k->first == w ? k->second : w;
 }
 
 double RegionTerms::vertex_done(uint32_t r, uint32_t v, const std::vector<uint32_t>& nb, const std::vector<Tri>& fan,
@@ -58,7 +112,7 @@ double RegionTerms::vertex_done(uint32_t r, uint32_t v, const std::vector<uint32
     std::sort(nb_.begin(), nb_.end());
     nb_.erase(std::unique(nb_.begin(), nb_.end()), nb_.end());
   }
-  return vertex_term(d_, dt_, Star(v, nb_, star_));
+  return clip(vertex_term(d_, dt_, Star(v, nb_, star_)));
 }
 
 double RegionTerms::vertex_done(uint32_t r, uint32_t v, uint32_t classes, SignatureEntry& entry) const {
@@ -72,7 +126,7 @@ double RegionTerms::vertex_done(uint32_t r, uint32_t v, uint32_t classes, Signat
     if (R_.region_of_triangle[stars_.triangle[j]] != r)
       for (uint32_t w : base_triangle(dt_, stars_.triangle[j]))
         if (w != v) classes |= 1u << neighbor_class(v, w);
-  return d_.term_of_classes(classes);
+  return clip(d_.term_of_classes(classes));
 }
 
 double RegionTerms::boundary_edge(uint32_t r, uint32_t u, uint32_t v, uint32_t w, SignatureEntry& entry) const {
@@ -82,18 +136,18 @@ double RegionTerms::boundary_edge(uint32_t r, uint32_t u, uint32_t v, uint32_t w
   const auto it = boundary_.find(edge_key(u, v));
   if (it == boundary_.end() || R_.region_of_triangle[it->second / 3] != r) return 0;
   const int32_t f = dt_.halfedges[it->second];
-  if (f < 0) return interior_only(d_.site) ? 0 : edge_term(d_, dt_, u, v, w, kNoApex);
+  if (f < 0) return interior_only(d_.site) ? 0 : clip(edge_term(d_, dt_, u, v, w, kNoApex));
   const uint32_t other = R_.region_of_triangle[static_cast<uint32_t>(f) / 3];
-  if (R_.regions[other].delaunay_triangles.size() > 1 && reads_apexes()) {  // seen from the other side: the apex
-    entry = {{kEdgeEntry, u, v}, {w, 0, 0}};
+  if (R_.regions[other].delaunay_triangles.size() > 1 && reads_apexes()) {  // seen from the other side: the apex's kind
+    entry = {{kEdgeEntry, u, v}, {apex_kind(v, u, w), 0, 0}};
     return 0;
   }
-  return edge_term(d_, dt_, u, v, w, dt_.apex(static_cast<uint32_t>(f)));
+  return clip(edge_term(d_, dt_, u, v, w, dt_.apex(static_cast<uint32_t>(f))));
 }
 
 double RegionTerms::inside_edge(uint32_t u, uint32_t v, uint32_t w, uint32_t x) const {
   if (!reads_edges()) return 0;
-  return u < v ? edge_term(d_, dt_, u, v, w, x) : edge_term(d_, dt_, v, u, x, w);
+  return clip(u < v ? edge_term(d_, dt_, u, v, w, x) : edge_term(d_, dt_, v, u, x, w));
 }
 
 StateKey RegionTerms::key(uint32_t r, const std::vector<Tri>& tris) const {

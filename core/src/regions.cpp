@@ -133,13 +133,14 @@ Regions k_order_skeleton(const Mesh& dt, uint32_t k, const Progress& progress) {
 
 void enumerate_regions(const Mesh& dt, Regions& out, const RegionLimits& limits) {
   const bool any_free = std::find(out.fixed.begin(), out.fixed.end(), 0) != out.fixed.end();
-  const Candidates cand = any_free ? k_order_candidates(dt, out.order, out.useful, limits.progress) : Candidates{};
+  const Candidates cand = limits.candidates || !any_free ? Candidates{} : k_order_candidates(dt, out.order, out.useful, limits.progress);
+  const Candidates& candidates = limits.candidates ? *limits.candidates : cand;
   const RegionTerms* terms = limits.terms;
   uint64_t used = 0, dp_used = 0;
   // The best triangulation per signature, by dynamic programming: false when
   // it needs more than `budget` partial fills.
   auto by_dp = [&](Region& region, uint32_t r, uint64_t budget) {
-    auto fills = best_fills(dt, cand, *terms, r, budget, limits.progress, &dp_used);
+    auto fills = best_fills(dt, candidates, *terms, r, budget, limits.progress, &dp_used);
     if (!fills) return false;
     std::stable_sort(fills->begin(), fills->end(),
                      [&](const BestFill& a, const BestFill& b) { return terms->better(a.value, b.value); });
@@ -165,7 +166,7 @@ void enumerate_regions(const Mesh& dt, Regions& out, const RegionLimits& limits)
       best.emplace(std::move(key.signature), std::make_pair(0u, key.value));
     }
     try {
-      region.complete = enumerate_fills(dt, cand, region.boundary, budget, [&](const std::vector<Tri>& tris) {
+      region.complete = enumerate_fills(dt, candidates, region.boundary, budget, [&](const std::vector<Tri>& tris) {
         std::vector<Tri> c = canonical(tris);
         if (c == region.states[0]) return;
         if (terms) {

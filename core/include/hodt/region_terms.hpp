@@ -13,6 +13,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "hodt/fill_enumerator.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/objective_terms.hpp"
 #include "hodt/regions.hpp"
@@ -30,8 +31,8 @@ struct StateKey {
 
 class RegionTerms {
  public:
-  // `regions` must outlive this.
-  RegionTerms(const Mesh& delaunay, const Regions& regions, Objective o);
+  // `regions` and `candidates` (k_order_candidates, for apex kinds) must outlive this.
+  RegionTerms(const Mesh& delaunay, const Regions& regions, Objective o, const Candidates* candidates = nullptr);
 
   const ObjectiveTerms& terms() const { return d_; }
   const Regions& regions() const { return R_; }
@@ -58,14 +59,28 @@ class RegionTerms {
   double boundary_edge(uint32_t r, uint32_t u, uint32_t v, uint32_t w, SignatureEntry& entry) const;
   // Edge u -> v inside a region: w the apex on its left, x on its right.
   double inside_edge(uint32_t u, uint32_t v, uint32_t w, uint32_t x) const;
-  double triangle(const Tri& t) const { return d_.triangle(dt_, t); }
+  double triangle(const Tri& t) const { return clip(d_.triangle(dt_, t)); }
+  // With apexes: the apex that stands for w behind edge a -> b (on its right).
+  // Apexes whose edge terms agree for every candidate apex in front of a -> b
+  // are interchangeable; each kind is named by its smallest apex.
+  uint32_t apex_kind(uint32_t a, uint32_t b, uint32_t w) const;
+  // Min-max objectives: the largest term that no region can change. The optimum
+  // is at least this, so every term is read as at least this (clip): the same
+  // optima, and far fewer apexes and signatures to tell apart.
+  double floor() const { return floor_; }
 
   // A whole triangulation of region r (counterclockwise triangles).
   StateKey key(uint32_t r, const std::vector<Tri>& triangulation) const;
 
  private:
+  double clip(double term) const { return d_.combine == TermCombine::Max && term < floor_ ? floor_ : term; }
+  double fixed_terms_max() const;
+
   const Mesh& dt_;
   const Regions& R_;
+  const Candidates* cand_;
+  double floor_ = 0;
+  mutable std::unordered_map<uint64_t, std::vector<std::pair<uint32_t, uint32_t>>> kinds_;  // edge -> (apex, kind)
   const ObjectiveTerms& d_;
   Sense sense_;
   std::vector<uint8_t> shared_;  // per vertex: in two regions that may have a choice
