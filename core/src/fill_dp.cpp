@@ -59,7 +59,7 @@ class FillDp {
     std::vector<Partial> layer;
     layer.push_back(std::move(start));
     std::vector<BestFill> out;
-    uint64_t states = 1;
+    uint64_t states = 1, generated = 0;
     while (!layer.empty()) {
       std::vector<Partial> next;
       std::unordered_map<std::vector<uint32_t>, uint32_t, KeyHash> index;
@@ -68,7 +68,10 @@ class FillDp {
           out.push_back({triangles_of(p.node), p.value});
           continue;
         }
+        // (Children cost their keys even when merged: they count too, a quarter each.)
+        if ((states + generated / 4) > max_states) return std::nullopt;
         expand(p, [&](Partial&& child) {
+          ++generated;
           auto [it, fresh] = index.try_emplace(key_of(child), static_cast<uint32_t>(next.size()));
           if (fresh) next.push_back(std::move(child));
           else if (T_.better(child.value, next[it->second].value)) next[it->second] = std::move(child);

@@ -181,12 +181,15 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   Mesh start = first_order.get();
   double start_value = first_order.value;
   bool added = add_states_of(R, dt, start);
-  // A ladder: every (k/2)-OD triangulation is k-OD, so the result at order k/2
-  // gives each region one more listed triangulation (and a start no worse).
-  if (k >= 4) {
-    SolveOptions half = options;
-    half.method = Method::Auto;
-    KOrderResult lower = solve_regions(fo, o, k / 2, half, max_nodes, first_order);
+  // A ladder: every j-OD triangulation (j < k) is k-OD, so the result at a lower
+  // order gives each region one more listed triangulation (and a start no
+  // worse). Order 4 is where the exact engine usually still answers; above 8,
+  // half of k.
+  if (k >= 3) {
+    SolveOptions lower_options = options;
+    lower_options.method = Method::Auto;
+    const uint32_t j = k <= 4 ? k - 1 : k <= 8 ? 4 : k / 2;
+    KOrderResult lower = solve_regions(fo, o, j, lower_options, max_nodes, first_order);
     added = add_states_of(R, dt, lower.triangulation) || added;
     if (better(info(o).sense, lower.value, start_value)) start = std::move(lower.triangulation), start_value = lower.value;
   }

@@ -52,13 +52,13 @@ struct RegionLimits {
   // (A kept partial fill costs about 1 to 10 microseconds and 100 to 500 bytes.)
   uint64_t first_pass_states = 20'000;
   uint64_t max_states_per_region_dp = 200'000;
-  uint64_t max_total_states = 1'000'000;
+  uint64_t max_total_states = 500'000;
   // Enumeration search nodes: every region first gets a small budget, then the
   // regions that need more get up to max_nodes_per_region each while the total
   // stays within max_total_nodes (time is about a microsecond per node).
   uint64_t first_pass_nodes = 5'000;
   uint64_t max_nodes_per_region = 300'000;
-  uint64_t max_total_nodes = 4'000'000;
+  uint64_t max_total_nodes = 1'500'000;
   uint64_t max_states_per_region = 2'000;  // triangulations kept per region
   // Regions of more Delaunay triangles are not enumerated at all (each fill
   // costs its size, and their triangulations are astronomically many).
