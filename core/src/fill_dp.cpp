@@ -4,7 +4,6 @@
 #include <unordered_map>
 
 #include "hodt/error.hpp"
-#include "hodt/predicates.hpp"
 
 namespace hodt {
 
@@ -34,13 +33,6 @@ struct KeyHash {
     return static_cast<size_t>(h ^ (h >> 29));
   }
 };
-
-bool crosses(const Mesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
-  if (a == c || a == d || b == c || b == d) return false;
-  const int o1 = orient2d(m.point(a), m.point(b), m.point(c)), o2 = orient2d(m.point(a), m.point(b), m.point(d));
-  if (o1 * o2 >= 0) return false;
-  return orient2d(m.point(c), m.point(d), m.point(a)) * orient2d(m.point(c), m.point(d), m.point(b)) < 0;
-}
 
 uint32_t from(uint64_t e) { return static_cast<uint32_t>(e >> 32); }
 uint32_t to(uint64_t e) { return static_cast<uint32_t>(e); }
@@ -223,7 +215,7 @@ class FillDp {
         }
         if (std::binary_search(p.open.begin(), p.open.end(), edge_key(b, a))) ok = false;  // its far side is covered
         for (size_t j = 0; j < p.open.size() && ok; ++j)
-          if (crosses(dt_, a, b, from(p.open[j]), to(p.open[j]))) ok = false;
+          if (segments_cross(dt_, a, b, from(p.open[j]), to(p.open[j]))) ok = false;
       }
       if (!ok) continue;
       Partial c;

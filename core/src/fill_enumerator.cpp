@@ -29,14 +29,13 @@ Candidates k_order_candidates(const Mesh& dt, uint32_t k, const std::vector<std:
   return out;
 }
 
-namespace {
-
-bool crosses(const Mesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+bool segments_cross(const Mesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
   if (a == c || a == d || b == c || b == d) return false;
-  const int o1 = orient2d(m.point(a), m.point(b), m.point(c)), o2 = orient2d(m.point(a), m.point(b), m.point(d));
-  const int o3 = orient2d(m.point(c), m.point(d), m.point(a)), o4 = orient2d(m.point(c), m.point(d), m.point(b));
-  return o1 * o2 < 0 && o3 * o4 < 0;
+  if (orient2d(m.point(a), m.point(b), m.point(c)) * orient2d(m.point(a), m.point(b), m.point(d)) >= 0) return false;
+  return orient2d(m.point(c), m.point(d), m.point(a)) * orient2d(m.point(c), m.point(d), m.point(b)) < 0;
 }
+
+namespace {
 
 struct Enumerator {
   const Mesh& dt;
@@ -90,7 +89,7 @@ struct Enumerator {
         if (close[s]) continue;
         if (open.count(edge_key(b, a))) { ok = false; break; }  // its far side is covered already
         for (auto [c, d] : edges)
-          if ((c == a && d == b) || (c == b && d == a) || crosses(dt, a, b, c, d)) { ok = false; break; }
+          if ((c == a && d == b) || (c == b && d == a) || segments_cross(dt, a, b, c, d)) { ok = false; break; }
       }
       if (!ok) continue;
       open.erase(best);

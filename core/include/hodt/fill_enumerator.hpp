@@ -24,6 +24,10 @@ Candidates k_order_candidates(const Mesh& delaunay, uint32_t k,
                               const std::vector<std::pair<uint32_t, uint32_t>>& useful_edges,
                               const Progress& progress = {});
 
+// Do segments a b and c d cross at a point inside both (exact; sharing an
+// endpoint is not crossing)?
+bool segments_cross(const Mesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t d);
+
 // Calls visit for every triangulation of the polygon bounded by `boundary`
 // (directed edges with the inside on their left) by candidate triangles. Returns
 // false if it stopped because `max_nodes` search nodes were used. progress (if
