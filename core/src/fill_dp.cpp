@@ -9,12 +9,12 @@ namespace hodt {
 
 namespace {
 
-constexpr uint32_t kOutside = UINT32_MAX;  // behind a boundary edge not yet covered: the outside
+constexpr uint32_t kSeparator = UINT32_MAX;  // between the parts of a key
 
 // A partial fill, reduced to what its completions can tell apart.
 struct Partial {
   std::vector<uint64_t> open;     // the frontier, sorted
-  std::vector<uint32_t> behind;   // per open edge, the apex of the covered triangle on its right (edge terms)
+  std::vector<uint32_t> behind;   // per open edge, the kind of apex of the covered triangle on its right (apex terms)
   std::vector<uint32_t> around;   // per frontier vertex: v, n, then n items (class mask, neighbours or fan triangles), by v
   std::vector<SignatureEntry> signature;  // sorted
   double value = 0;
@@ -46,8 +46,7 @@ class FillDp {
     Partial start;
     for (auto [a, b] : T_.regions().regions[r_].boundary) start.open.push_back(edge_key(a, b));
     std::sort(start.open.begin(), start.open.end());
-    boundary_ = start.open;
-    if (T_.reads_apexes()) start.behind.assign(start.open.size(), kOutside);
+    if (T_.reads_apexes()) start.behind.assign(start.open.size(), kNoApex);  // (the outside: never read)
     std::vector<Partial> layer;
     layer.push_back(std::move(start));
     std::vector<BestFill> out;
@@ -89,11 +88,10 @@ class FillDp {
   const Candidates& cand_;
   const RegionTerms& T_;
   uint32_t r_;
-  std::vector<uint64_t> boundary_;  // the region's boundary edges, sorted
   std::vector<Node> nodes_;    // kept states' (parent, last triangle)
   std::vector<Node> pending_;  // this layer's children, before merging
   SignatureEntry entry_;
-  std::vector<uint32_t> nb_, key_;
+  std::vector<uint32_t> nb_;
   std::vector<Tri> fan_;
 
   std::vector<Tri> triangles_of(uint32_t node) const {
@@ -113,10 +111,10 @@ class FillDp {
     k.reserve(2 * p.open.size() + p.behind.size() + p.around.size() + 4 * p.signature.size() + 2);
     for (uint64_t e : p.open) k.push_back(from(e)), k.push_back(to(e));
     k.insert(k.end(), p.behind.begin(), p.behind.end());
-    k.push_back(kOutside);
+    k.push_back(kSeparator);
     k.insert(k.end(), p.around.begin(), p.around.end());
     for (const SignatureEntry& s : p.signature) {
-      k.push_back(kOutside);
+      k.push_back(kSeparator);
       for (const Tri& t : s) k.insert(k.end(), t.begin(), t.end());
     }
     return k;
@@ -134,9 +132,10 @@ class FillDp {
     p.signature.insert(std::upper_bound(p.signature.begin(), p.signature.end(), entry_), entry_);
   }
 
-  // Edge a -> b gets its triangle on the left (apex c); `behind` is what lies right.
+  // Edge a -> b gets its triangle on the left (apex c); `behind` is the apex on
+  // its right (inside the region; kNoApex when the terms read none).
   void edge_complete(Partial& p, uint32_t a, uint32_t b, uint32_t c, uint32_t behind) {
-    if (behind == kOutside) take(p, T_.boundary_edge(r_, a, b, c, entry_));
+    if (T_.on_boundary(r_, a, b)) take(p, T_.boundary_edge(r_, a, b, c, entry_));
     else entry_.clear(), take(p, T_.inside_edge(a, b, c, behind));
   }
 
@@ -238,19 +237,11 @@ class FillDp {
         if (edges) c.behind.push_back(b);
       }
       c.around = p.around;
-      if (T_.reads_edges() && !edges) {  // terms of the edges alone: as each appears
-        entry_.clear();
-        for (int s = 0; s < 2; ++s)
-          if (close[s] < 0) take(c, T_.inside_edge(side[s][0], side[s][1], kNoApex, kNoApex));
-        const uint32_t covered[3][3] = {{u, v, w}, {v, w, u}, {w, u, v}};
-        for (int s = 0; s < 3; ++s)
-          if ((s == 0 || close[s - 1] >= 0) && std::binary_search(boundary_.begin(), boundary_.end(), edge_key(covered[s][0], covered[s][1])))
-            take(c, T_.boundary_edge(r_, covered[s][0], covered[s][1], covered[s][2], entry_));
-      }
-      if (edges) {
-        edge_complete(c, u, v, w, p.behind[at]);
-        if (close[0] >= 0) edge_complete(c, v, w, u, p.behind[static_cast<size_t>(close[0])]);
-        if (close[1] >= 0) edge_complete(c, w, u, v, p.behind[static_cast<size_t>(close[1])]);
+      if (T_.reads_edges()) {  // the edges this triangle completes: u -> v and the sides it closes
+        auto behind = [&](int j) { return edges ? p.behind[static_cast<size_t>(j)] : kNoApex; };
+        edge_complete(c, u, v, w, behind(static_cast<int>(at)));
+        if (close[0] >= 0) edge_complete(c, v, w, u, behind(close[0]));
+        if (close[1] >= 0) edge_complete(c, w, u, v, behind(close[1]));
       }
       if (T_.reads_triangles()) entry_.clear(), take(c, T_.triangle({u, v, w}));
       if (T_.reads_vertices()) add_to_fans(c, {u, v, w});

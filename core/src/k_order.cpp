@@ -137,8 +137,10 @@ std::string region_summary(const Regions& R) {
   return std::to_string(choice) + " regions with a choice (up to " + std::to_string(largest) + " triangulations each)";
 }
 
+// bounded: whether a heuristic answer needs its bound (the ladder's lower
+// orders serve only as starts).
 KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes,
-                           FirstOrderStart& first_order) {
+                           FirstOrderStart& first_order, bool bounded = true) {
   const Mesh& dt = fo.base;
   if (options.method == Method::BruteForce) {
     return brute_force_k_order(dt, o, k, max_nodes, options.progress);
@@ -189,7 +191,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     SolveOptions lower_options = options;
     lower_options.method = Method::Auto;
     const uint32_t j = k <= 4 ? k - 1 : k <= 8 ? 4 : k / 2;
-    KOrderResult lower = solve_regions(fo, o, j, lower_options, max_nodes, first_order);
+    KOrderResult lower = solve_regions(fo, o, j, lower_options, max_nodes, first_order, false);
     added = add_states_of(R, dt, lower.triangulation) || added;
     if (better(info(o).sense, lower.value, start_value)) start = std::move(lower.triangulation), start_value = lower.value;
   }
@@ -218,11 +220,12 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     const double v = evaluate(o, flipped);
     if (better(info(o).sense, v, r.value)) r.triangulation = std::move(flipped), r.value = v, how += ", then k-OD flips";
   }
+  r.method = "heuristic";
+  if (!bounded) return r;  // (not optimal: nothing proven)
   const double bound = relaxation_bound(model.graph, dl);
   r.bound = info(o).sense == Sense::Min ? std::min(bound, r.value) : std::max(bound, r.value);
   r.optimal = *r.bound == r.value;
   if (r.optimal) r.bound.reset();
-  r.method = "heuristic";
   r.details = region_summary(R) + "; " + how + " (" +
               (refused.empty() ? std::string("approx asked") : "exact refused: " + refused) + ")";
   return r;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <functional>
 #include <map>
-#include <memory>
 
 #include "hodt/error.hpp"
 #include "hodt/measures.hpp"
@@ -129,12 +128,6 @@ struct Builder {
       const int32_t f = dt.halfedges[e];
       const uint32_t u = dt.origin(e), v = dt.target(e), r1 = R.region_of_triangle[e / 3];
       const auto& s1 = R.regions[r1].states;
-      if (!d.edge_reads_apexes) {  // a fixed edge's term is a constant
-        const bool once = f < 0 ? !interior_only(d.site)
-                                : f > static_cast<int32_t>(e) && R.region_of_triangle[static_cast<uint32_t>(f) / 3] != r1;
-        if (once) add_constant(edge_term(d, dt, u, v, kNoApex, kNoApex));
-        continue;
-      }
       if (f < 0) {
         if (interior_only(d.site)) continue;
         for (uint32_t s = 0; s < s1.size(); ++s) add_unary(r1, s, edge_term(d, dt, u, v, apex_of(s1[s], u, v), kNoApex), s == 0);

@@ -104,8 +104,7 @@ double RegionTerms::vertex_done(uint32_t r, uint32_t v, const std::vector<uint32
   // Its other triangles are fixed: the Delaunay ones outside this region.
   star_.clear();
   if (reads_fans()) star_ = fan;
-  for (uint32_t j = stars_.tri_offset[v]; j < stars_.tri_offset[v + 1]; ++j)
-    if (R_.region_of_triangle[stars_.triangle[j]] != r) star_.push_back(base_triangle(dt_, stars_.triangle[j]));
+  add_outside(r, v, star_);
   star_neighbors(v, star_, nb_);
   if (!reads_fans()) {  // add the region's neighbours
     nb_.insert(nb_.end(), nb.begin(), nb.end());
@@ -122,20 +121,28 @@ double RegionTerms::vertex_done(uint32_t r, uint32_t v, uint32_t classes, Signat
     return 0;
   }
   if (interior_only(d_.site) && on_hull_[v]) return 0;
+  star_.clear();
+  add_outside(r, v, star_);
+  star_neighbors(v, star_, nb_);
+  return clip(d_.term_of_classes(classes | neighbor_classes(d_, dt_, v, nb_)));
+}
+
+void RegionTerms::add_outside(uint32_t r, uint32_t v, std::vector<Tri>& star) const {
   for (uint32_t j = stars_.tri_offset[v]; j < stars_.tri_offset[v + 1]; ++j)
-    if (R_.region_of_triangle[stars_.triangle[j]] != r)
-      for (uint32_t w : base_triangle(dt_, stars_.triangle[j]))
-        if (w != v) classes |= 1u << neighbor_class(v, w);
-  return clip(d_.term_of_classes(classes));
+    if (R_.region_of_triangle[stars_.triangle[j]] != r) star.push_back(base_triangle(dt_, stars_.triangle[j]));
+}
+
+bool RegionTerms::on_boundary(uint32_t r, uint32_t u, uint32_t v) const {
+  const auto it = boundary_.find(edge_key(u, v));
+  return it != boundary_.end() && R_.region_of_triangle[it->second / 3] == r;
 }
 
 double RegionTerms::boundary_edge(uint32_t r, uint32_t u, uint32_t v, uint32_t w, SignatureEntry& entry) const {
   entry.clear();
   if (!reads_edges()) return 0;
   // The Delaunay halfedge u -> v on region r's boundary, and what lies beyond it.
-  const auto it = boundary_.find(edge_key(u, v));
-  if (it == boundary_.end() || R_.region_of_triangle[it->second / 3] != r) return 0;
-  const int32_t f = dt_.halfedges[it->second];
+  if (!on_boundary(r, u, v)) return 0;
+  const int32_t f = dt_.halfedges[boundary_.at(edge_key(u, v))];
   if (f < 0) return interior_only(d_.site) ? 0 : clip(edge_term(d_, dt_, u, v, w, kNoApex));
   const uint32_t other = R_.region_of_triangle[static_cast<uint32_t>(f) / 3];
   if (R_.regions[other].delaunay_triangles.size() > 1 && reads_apexes()) {  // seen from the other side: the apex's kind
@@ -179,7 +186,7 @@ StateKey RegionTerms::key(uint32_t r, const std::vector<Tri>& tris) const {
     for (const Tri& t : tris)  // (in the triangles' order: sums come out the same everywhere)
       for (int i = 0; i < 3; ++i) {
         const uint32_t u = t[i], v = t[(i + 1) % 3], w = t[(i + 2) % 3];
-        if (boundary_.count(edge_key(u, v))) take(boundary_edge(r, u, v, w, entry));  // (even with r beyond it)
+        if (on_boundary(r, u, v)) take(boundary_edge(r, u, v, w, entry));  // (even with r beyond it)
         else if (u < v) take(inside_edge(u, v, w, apex.at(edge_key(v, u))));
       }
   }

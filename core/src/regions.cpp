@@ -213,10 +213,12 @@ void enumerate_regions(const Mesh& dt, Regions& out, const RegionLimits& limits)
       if (terms && dp_used < limits.max_total_states &&
           by_dp(region, r, std::min(limits.max_states_per_region_dp, limits.max_total_states - dp_used)))
         continue;
-      // Too large for the budgets: some of its triangulations, for the heuristics.
-      if (used < limits.max_total_nodes)
+      // Too large for the budgets: some of its triangulations, for the heuristics
+      // (unless pass 0 enumerated it with the whole budget already).
+      const bool enumerated = !terms && limits.first_pass_nodes >= limits.max_nodes_per_region;
+      if (!enumerated && used < limits.max_total_nodes)
         enumerate(region, r, std::min(limits.max_nodes_per_region, limits.max_total_nodes - used));
-      else if (terms) region.states.resize(1), region.complete = false;
+      else if (terms) region.complete = false;  // (the DP left it untouched)
     }
   }
   out.incomplete = 0;

@@ -104,21 +104,21 @@ double evaluate_states(const StateGraph& g, const std::vector<uint32_t>& state) 
 
 namespace {
 
-// Variable elimination over a min-degree-like order (fewest joint states first).
-StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
-  simplify(g, limits.progress);
+// Merges the states of each variable that every factor sees alike, keeping the
+// one of best unary value: returns the graph over the kept states (variables
+// left with one state drop out of every factor: they would only widen the bags)
+// and, per variable, which state each kept one is.
+StateGraph merge_states(StateGraph g, std::vector<std::vector<uint32_t>>& kept, const Progress& progress) {
+  simplify(g, progress);
   const Ops ops{g.combine, g.sense};
   const uint32_t n = static_cast<uint32_t>(g.domain.size());
-  // Merge the states that every factor sees alike: keep the one of best unary value.
   std::vector<std::vector<std::pair<uint32_t, uint32_t>>> seen_by(n);  // (factor, position)
   for (uint32_t i = 0; i < g.factors.size(); ++i)
     for (uint32_t j = 0; j < g.factors[i].scope.size(); ++j) seen_by[g.factors[i].scope[j]].push_back({i, j});
-  std::vector<std::vector<uint32_t>> kept(n);        // reduced state -> state
-  std::vector<std::vector<uint32_t>> reduced_of(n);  // state -> reduced state
+  kept.assign(n, {});
   for (uint32_t x = 0; x < n; ++x) {
-    if (limits.progress && (x & 255) == 0 && !limits.progress(x, n)) throw Cancelled();
+    if (progress && (x & 255) == 0 && !progress(x, n)) throw Cancelled();
     std::map<std::vector<uint32_t>, uint32_t> by_signature;
-    reduced_of[x].resize(g.domain[x]);
     for (uint32_t s = 0; s < g.domain[x]; ++s) {
       std::vector<uint32_t> sig;
       sig.reserve(seen_by[x].size());
@@ -126,46 +126,36 @@ StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
       auto [it, fresh] = by_signature.try_emplace(std::move(sig), static_cast<uint32_t>(kept[x].size()));
       if (fresh) kept[x].push_back(s);
       else if (ops.better(g.unary[x][s], g.unary[x][kept[x][it->second]])) kept[x][it->second] = s;
-      reduced_of[x][s] = it->second;
     }
   }
-  // The graph over the kept states: variables left with one state drop out of
-  // every factor (they would only widen the bags).
-  {
-    StateGraph h;
-    h.combine = g.combine, h.sense = g.sense, h.constant = g.constant, h.term_max = g.term_max;
-    for (uint32_t x = 0; x < n; ++x) {
-      h.domain.push_back(static_cast<uint32_t>(kept[x].size()));
-      h.unary.emplace_back();
-      for (uint32_t s : kept[x]) h.unary[x].push_back(g.unary[x][s]);
-    }
-    h.unary_terms = g.unary_terms, h.partial = g.partial;
-    for (StateFactor& f : g.factors) {
-      for (size_t j = 0; j < f.scope.size(); ++j) {
-        std::vector<uint32_t> p;
-        for (uint32_t s : kept[f.scope[j]]) p.push_back(f.project[j][s]);
-        f.project[j].swap(p);
-      }
-      h.factors.push_back(std::move(f));
-    }
-    simplify(h, limits.progress);
-    g = std::move(h);
+  StateGraph h;
+  h.combine = g.combine, h.sense = g.sense, h.constant = g.constant, h.term_max = g.term_max;
+  h.unary_terms = g.unary_terms, h.partial = g.partial;
+  for (uint32_t x = 0; x < n; ++x) {
+    h.domain.push_back(static_cast<uint32_t>(kept[x].size()));
+    h.unary.emplace_back();
+    for (uint32_t s : kept[x]) h.unary[x].push_back(g.unary[x][s]);
   }
-  const std::vector<std::vector<uint32_t>> original = std::move(kept);  // kept state -> state
-  kept.assign(n, {});
-  for (uint32_t x = 0; x < n; ++x)
-    for (uint32_t s = 0; s < g.domain[x]; ++s) kept[x].push_back(s);
-  // Per factor and variable: reduced state -> class.
-  std::vector<std::vector<std::vector<uint32_t>>> proj(g.factors.size());
-  for (uint32_t i = 0; i < g.factors.size(); ++i) {
-    const StateFactor& f = g.factors[i];
-    proj[i].resize(f.scope.size());
-    for (size_t j = 0; j < f.scope.size(); ++j)
-      for (uint32_t s : kept[f.scope[j]]) proj[i][j].push_back(f.project[j][s]);
+  for (StateFactor& f : g.factors) {
+    for (size_t j = 0; j < f.scope.size(); ++j) {
+      std::vector<uint32_t> p;
+      for (uint32_t s : kept[f.scope[j]]) p.push_back(f.project[j][s]);
+      f.project[j].swap(p);
+    }
+    h.factors.push_back(std::move(f));
   }
-  std::vector<std::vector<uint32_t>> unary_map(n);  // identity maps for the unary tables
+  simplify(h, progress);
+  return h;
+}
+
+// Variable elimination over a min-degree-like order (fewest joint states first).
+StateDpResult eliminate(const StateGraph& input, const StateDpLimits& limits) {
+  std::vector<std::vector<uint32_t>> original;  // per variable: kept state -> state
+  const StateGraph g = merge_states(input, original, limits.progress);
+  const Ops ops{g.combine, g.sense};
+  const uint32_t n = static_cast<uint32_t>(g.domain.size());
   std::vector<double> dom(n);
-  for (uint32_t x = 0; x < n; ++x) dom[x] = static_cast<double>(kept[x].size());
+  for (uint32_t x = 0; x < n; ++x) dom[x] = g.domain[x];
 
   // Elimination order: greedily the variable whose bag has the fewest joint states.
   std::vector<std::vector<uint32_t>> adj(n);
@@ -195,9 +185,7 @@ StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
                        " joint states over " + std::to_string(adj[v].size() + 1) +
                        " regions; the memory cap is " + std::to_string(static_cast<uint64_t>(limits.max_table)));
     gone[v] = 1;
-    // (Width counts the neighbours with a choice left: one-state ones cost nothing.)
-    r.width = std::max(r.width, static_cast<uint32_t>(std::count_if(adj[v].begin(), adj[v].end(),
-                                                                    [&](uint32_t w) { return dom[w] > 1; })));
+    r.width = std::max(r.width, static_cast<uint32_t>(adj[v].size()));
     r.largest_table = std::max(r.largest_table, size);
     std::vector<uint32_t> bag = {v};
     bag.insert(bag.end(), adj[v].begin(), adj[v].end());
@@ -227,13 +215,12 @@ StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
     bucket[first].push_back(std::move(t));
   };
   for (uint32_t x = 0; x < n; ++x) {
-    Table t{{x}, {nullptr}, {static_cast<uint32_t>(kept[x].size())}, {}};
-    for (uint32_t s : kept[x]) t.values.push_back(g.unary[x][s]);
+    Table t{{x}, {nullptr}, {g.domain[x]}, g.unary[x]};
     place(std::move(t));
   }
   for (uint32_t i = 0; i < g.factors.size(); ++i) {
     Table t{g.factors[i].scope, {}, g.factors[i].dims, g.factors[i].table};
-    for (auto& p : proj[i]) t.map.push_back(&p);
+    for (auto& p : g.factors[i].project) t.map.push_back(&p);
     place(std::move(t));
   }
 
@@ -252,7 +239,7 @@ StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
     std::sort(bag.begin() + 1, bag.end(), [&](uint32_t a, uint32_t b) { return position[a] < position[b]; });
     const size_t k = bag.size();
     size_t total = 1;
-    for (uint32_t b : bag) total *= kept[b].size();
+    for (uint32_t b : bag) total *= g.domain[b];
     std::vector<double> combined(total, ops.zero());
     for (const Table& t : bucket[v]) {
       // Per bag position: the table's stride times the digit's class (0 if absent).
@@ -261,7 +248,7 @@ StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
       for (size_t j = 0; j < t.vars.size(); ++j) {
         const size_t pos = static_cast<size_t>(std::find(bag.begin(), bag.end(), t.vars[j]) - bag.begin());
         auto& c = contrib[pos];
-        c.resize(kept[t.vars[j]].size());
+        c.resize(g.domain[t.vars[j]]);
         for (size_t s = 0; s < c.size(); ++s) c[s] = stride * (t.map[j] ? (*t.map[j])[s] : s);
         stride *= t.dims[j];
       }
@@ -276,7 +263,7 @@ StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
         for (size_t p = 0; p < k; ++p) {
           const bool has = !contrib[p].empty();
           if (has) ti -= contrib[p][digit[p]];
-          if (++digit[p] < kept[bag[p]].size()) {
+          if (++digit[p] < g.domain[bag[p]]) {
             if (has) ti += contrib[p][digit[p]];
             break;
           }
@@ -290,9 +277,9 @@ StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
     bucket[v].clear();
     bucket[v].shrink_to_fit();
     // Optimise v (the fastest digit) out.
-    const size_t dv = kept[v].size(), rest = total / dv;
+    const size_t dv = g.domain[v], rest = total / dv;
     Table message{std::vector<uint32_t>(bag.begin() + 1, bag.end()), {}, {}, std::vector<double>(rest)};
-    for (uint32_t w : message.vars) message.map.push_back(nullptr), message.dims.push_back(static_cast<uint32_t>(kept[w].size()));
+    for (uint32_t w : message.vars) message.map.push_back(nullptr), message.dims.push_back(g.domain[w]);
     best_state[v].resize(rest);
     for (size_t j = 0; j < rest; ++j) {
       if (limits.progress && (j & 0xFFFF) == 0xFFFF && !limits.progress(work, total_work)) throw Cancelled();
@@ -311,11 +298,11 @@ StateDpResult eliminate(StateGraph g, const StateDpLimits& limits) {
   for (uint32_t i = n; i-- > 0;) {
     const uint32_t v = order[i];
     size_t idx = 0, stride = 1;
-    for (uint32_t w : later[v]) idx += stride * reduced[w], stride *= kept[w].size();
+    for (uint32_t w : later[v]) idx += stride * reduced[w], stride *= g.domain[w];
     reduced[v] = best_state[v][idx];
   }
   r.state.resize(n);
-  for (uint32_t x = 0; x < n; ++x) r.state[x] = original[x][kept[x][reduced[x]]];
+  for (uint32_t x = 0; x < n; ++x) r.state[x] = original[x][reduced[x]];
   r.value = constant;
   return r;
 }

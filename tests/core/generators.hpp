@@ -157,4 +157,18 @@ inline std::vector<double> near_collinear_points(int n, uint64_t seed) {
   return p;
 }
 
+// Instances of every kind the order-k engine must handle: random, DEM-like,
+// integer grids with equal heights (cocircular, flat), cocircular rings. Scale 1
+// stays small enough for whole-instance brute force; scale 2 gives regions of a
+// few dozen triangulations and more at k = 3, 4.
+inline std::vector<double> mixed_instance(uint64_t seed, int scale) {
+  Rng r(seed);
+  switch (seed % 4) {
+    case 0: return uniform_points(6 * scale + r.below(4 * scale), seed);
+    case 1: return dem_points(6 * scale + r.below(4 * scale), seed);
+    case 2: return grid_points(2 + scale + r.below(2), 2 + scale, seed, true);
+    default: return cocircular_points(2 + 3 * scale + r.below(6), seed);
+  }
+}
+
 }  // namespace hodt::test

@@ -20,17 +20,6 @@ using namespace hodt::test;
 
 namespace {
 
-// Instances with regions of a few dozen triangulations and more at k = 3, 4.
-std::vector<double> medium_instance(uint64_t seed) {
-  Rng r(seed);
-  switch (seed % 4) {
-    case 0: return uniform_points(12 + r.below(10), seed);
-    case 1: return dem_points(12 + r.below(10), seed);
-    case 2: return grid_points(4, 4, seed, true);
-    default: return cocircular_points(8 + r.below(6), seed);
-  }
-}
-
 bool close(double a, double b) { return a == b || std::abs(a - b) <= 1e-12 * std::max(std::abs(a), std::abs(b)); }
 
 }  // namespace
@@ -38,7 +27,7 @@ bool close(double a, double b) { return a == b || std::abs(a - b) <= 1e-12 * std
 TEST_CASE("fill DP: the best triangulation of every signature, as enumeration finds it") {
   uint64_t regions_checked = 0;
   for (uint64_t seed = 1; seed <= 40; ++seed) {
-    const Mesh dt = first_order(delaunay(validate_points(medium_instance(seed)).xyz)).base;
+    const Mesh dt = first_order(delaunay(validate_points(mixed_instance(seed, 2)).xyz)).base;
     for (uint32_t k : {2u, 3u, 4u}) {
       const Regions R = k_order_skeleton(dt, k);
       const Candidates cand = k_order_candidates(dt, k, R.useful);

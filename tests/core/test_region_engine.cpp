@@ -20,29 +20,13 @@ using namespace hodt::test;
 
 namespace {
 
-// Small instances of every kind the engine must handle: random, DEM-like,
-// integer grids with equal heights (cocircular, flat), cocircular rings.
-std::vector<double> small_instance(uint64_t seed) {
-  Rng r(seed);
-  switch (seed % 5) {
-    case 0: return uniform_points(6 + r.below(4), seed);
-    case 1: return dem_points(6 + r.below(4), seed);
-    case 2: return grid_points(3, 3, seed, true);
-    case 3: {
-      std::vector<double> p = grid_points(3 + r.below(2), 3, seed, true);
-      return p;
-    }
-    default: return cocircular_points(5 + r.below(6), seed);
-  }
-}
-
 bool close(double a, double b) { return a == b || std::abs(a - b) <= 1e-12 * std::max(std::abs(a), std::abs(b)); }
 
 }  // namespace
 
 TEST_CASE("every objective's terms evaluate to the objective on any triangulation") {
   for (uint64_t seed = 1; seed <= 60; ++seed) {
-    const FirstOrder fo = first_order(delaunay(validate_points(small_instance(seed)).xyz));
+    const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed, 1)).xyz));
     for (uint32_t k : {1u, 3u}) {
       int seen = 0;
       enumerate_k_order(fo.base, k, 100'000, [&](const std::vector<Tri>& tris) {
@@ -75,7 +59,7 @@ TEST_CASE("regions of order 1 are the flippable quads") {
 
 TEST_CASE("regions: the product of the regions' triangulations is every k-OD triangulation") {
   for (uint64_t seed = 1; seed <= 60; ++seed) {
-    const FirstOrder fo = first_order(delaunay(validate_points(small_instance(seed)).xyz));
+    const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed, 1)).xyz));
     for (uint32_t k : {1u, 2u, 3u, 4u}) {
       uint64_t all = 0;
       REQUIRE(enumerate_k_order(fo.base, k, 10'000'000, [&](const std::vector<Tri>&) { ++all; }));
@@ -93,7 +77,7 @@ TEST_CASE("regions: the product of the regions' triangulations is every k-OD tri
 TEST_CASE("exact at order k equals brute force for every objective (k = 2, 3, 4)") {
   for (uint32_t k : {2u, 3u, 4u}) {
     for (uint64_t seed = 1; seed <= 300; ++seed) {
-      const FirstOrder fo = first_order(delaunay(validate_points(small_instance(seed * 7 + k)).xyz));
+      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 7 + k, 1)).xyz));
       for (const auto& oi : objectives()) {
         SolveOptions bf;
         bf.method = Method::BruteForce;

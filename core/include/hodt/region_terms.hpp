@@ -55,6 +55,8 @@ class RegionTerms {
                      SignatureEntry& entry) const;
   // The same for a fan summarised by the classes of its neighbours (reads_classes()).
   double vertex_done(uint32_t r, uint32_t v, uint32_t classes, SignatureEntry& entry) const;
+  // Is u -> v a boundary edge of region r (r on its left)? (Edge terms only.)
+  bool on_boundary(uint32_t r, uint32_t u, uint32_t v) const;
   // Boundary edge u -> v of region r (r on its left) is covered by triangle u v w.
   double boundary_edge(uint32_t r, uint32_t u, uint32_t v, uint32_t w, SignatureEntry& entry) const;
   // Edge u -> v inside a region: w the apex on its left, x on its right.
@@ -75,6 +77,8 @@ class RegionTerms {
  private:
   double clip(double term) const { return d_.combine == TermCombine::Max && term < floor_ ? floor_ : term; }
   double fixed_terms_max() const;
+  // Appends v's Delaunay triangles outside region r (fixed, when v is not shared).
+  void add_outside(uint32_t r, uint32_t v, std::vector<Tri>& star) const;
 
   const Mesh& dt_;
   const Regions& R_;

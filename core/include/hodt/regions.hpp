@@ -8,12 +8,12 @@
 #pragma once
 #include <cstdint>
 #include <functional>
-#include <unordered_map>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "hodt/factor_graph.hpp"
+#include "hodt/fill_enumerator.hpp"
 #include "hodt/mesh.hpp"
 #include "hodt/skeleton.hpp"
 
@@ -48,7 +48,7 @@ struct RegionLimits {
   // (fill_dp.hpp) within these many kept partial fills; a region over them is
   // enumerated instead, within the node budgets below.
   const RegionTerms* terms = nullptr;
-  const std::unordered_map<uint64_t, std::vector<uint32_t>>* candidates = nullptr;  // (computed when not given)
+  const Candidates* candidates = nullptr;  // k_order_candidates (computed when not given)
   // (A kept partial fill costs about 1 to 10 microseconds and 100 to 500 bytes.)
   uint64_t first_pass_states = 20'000;
   uint64_t max_states_per_region_dp = 200'000;
