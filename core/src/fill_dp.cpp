@@ -1,6 +1,7 @@
 #include "hodt/fill_dp.hpp"
 
 #include <algorithm>
+#include <array>
 #include <unordered_map>
 
 #include "hodt/error.hpp"
@@ -139,8 +140,9 @@ class FillDp {
     else entry_.clear(), take(p, T_.inside_edge(a, b, c, behind));
   }
 
-  // Adds triangle t to the fans of its corners; completes the corners that left the frontier.
-  void add_to_fans(Partial& p, const Tri& t) {
+  // Adds triangle t to the fans of its corners; completes the corners that left
+  // the frontier. fresh: per corner, how many of its sides t draws first.
+  void add_to_fans(Partial& p, const Tri& t, const std::array<uint32_t, 3>& fresh) {
     for (int i = 0; i < 3; ++i) {
       const uint32_t v = t[i];
       // Find v's block (blocks sorted by vertex).
@@ -154,21 +156,27 @@ class FillDp {
       if (T_.reads_classes()) {  // one item: the neighbours' classes
         if (items.empty()) items.push_back(0);
         for (uint32_t w : {t[(i + 1) % 3], t[(i + 2) % 3]}) items[0] |= 1u << T_.neighbor_class(v, w);
-      } else if (T_.reads_fans()) {  // items are whole triangles, sorted
+      } else if (T_.reads_degree()) {  // one item: the new neighbours (a side drawn first is not fixed)
+        if (items.empty()) items.push_back(0);
+        if (T_.degree_matters(v)) items[0] += fresh[i];
+      } else if (T_.reads_fans()) {  // items are whole triangles, sorted (those that matter)
         const Tri c = canonical_triangle(t);
-        size_t j = 0;
-        while (j < items.size() && Tri{items[j], items[j + 1], items[j + 2]} < c) j += 3;
-        items.insert(items.begin() + static_cast<std::ptrdiff_t>(j), c.begin(), c.end());
+        if (!T_.harmless(v, c)) {
+          size_t j = 0;
+          while (j < items.size() && Tri{items[j], items[j + 1], items[j + 2]} < c) j += 3;
+          items.insert(items.begin() + static_cast<std::ptrdiff_t>(j), c.begin(), c.end());
+        }
       } else {
         for (uint32_t w : {t[(i + 1) % 3], t[(i + 2) % 3]}) {
           auto it = std::lower_bound(items.begin(), items.end(), w);
           if (it == items.end() || *it != w) items.insert(it, w);
         }
+        T_.reduce_neighbors(v, items);
       }
       p.around.erase(p.around.begin() + static_cast<std::ptrdiff_t>(pos),
                      p.around.begin() + static_cast<std::ptrdiff_t>(pos + 2 + p.around[pos + 1]));
       if (!on_frontier(p, v)) {  // complete: its term, or its signature entry
-        if (T_.reads_classes()) {
+        if (T_.reads_classes() || T_.reads_degree()) {
           take(p, T_.vertex_done(r_, v, items[0], entry_));
           continue;
         }
@@ -244,7 +252,10 @@ class FillDp {
         if (close[1] >= 0) edge_complete(c, w, u, v, behind(close[1]));
       }
       if (T_.reads_triangles()) entry_.clear(), take(c, T_.triangle({u, v, w}));
-      if (T_.reads_vertices()) add_to_fans(c, {u, v, w});
+      if (T_.reads_vertices()) {  // (the sides v -> w and w -> u are new unless they closed an open edge)
+        const uint32_t vw = close[0] < 0, wu = close[1] < 0;
+        add_to_fans(c, {u, v, w}, {wu, vw, vw + wu});
+      }
       pending_.push_back({p.node, {u, v, w}});
       c.node = static_cast<uint32_t>(pending_.size() - 1);
       emit(std::move(c));

@@ -15,7 +15,7 @@ EdgeShape edge_shape(const double* u, const double* v, const double* w, const do
   return o < 0 ? kConvexEdge : o > 0 ? kReflexEdge : kFlatEdge;
 }
 
-VertexClass vertex_class(const double* p, const double* const* nb, uint32_t d) {
+VertexClass vertex_class(const double* p, const double* const* nb, uint32_t d, bool below_known, bool above_known) {
   // orient2d(p, nb[i], nb[j]) for all pairs, reused by every triple below.
   std::vector<int8_t> o(size_t(d) * d);
   for (uint32_t i = 0; i < d; ++i)
@@ -29,14 +29,15 @@ VertexClass vertex_class(const double* p, const double* const* nb, uint32_t d) {
   for (uint32_t i = 0; i < d && fi == d; ++i)
     for (uint32_t j = i + 1; j < d; ++j)
       if (o[i * d + j] != 0) { fi = i, fj = j; break; }
-  if (fi == d) return kFlat;  // cannot happen for an interior vertex
-  bool flat = true;
+  const bool known = below_known || above_known;  // (then not flat)
+  if (fi == d && !known) return kFlat;  // cannot happen for an interior vertex
+  bool flat = !known;
   for (uint32_t k = 0; k < d && flat; ++k)  // (k = fi, fj are on the plane: skip the exact zero)
     flat = k == fi || k == fj || orient3d(p, nb[fi], nb[fj], nb[k]) == 0;
   if (flat) return kFlat;
   // p is strictly below (above) the upper (lower) hull of its neighbours iff some
   // triangle of neighbours contains p in the plane and has p strictly below (above) it.
-  bool below = false, above = false;
+  bool below = below_known, above = above_known;
   for (uint32_t i = 0; i < d && !(below && above); ++i)
     for (uint32_t j = i + 1; j < d && !(below && above); ++j)
       for (uint32_t k = j + 1; k < d; ++k) {

@@ -7,6 +7,7 @@
 
 #include "hodt/measures.hpp"
 #include "hodt/pair_measures.hpp"
+#include "hodt/star_cone.hpp"
 
 namespace hodt {
 
@@ -28,12 +29,27 @@ struct NeighborPoints {
 };
 
 double is_class(const Mesh& m, const Star& s, VertexClass c) {
-  const NeighborPoints nb(m, s);
-  return vertex_class(m.point(s.center), nb.p.data(), nb.size()) == c;
+  // A region engine's reduced star (drop_neighbors) ends with marks for sides known empty.
+  uint32_t d = s.degree;
+  bool no_plane_below = false, no_plane_above = false;
+  for (; d > 0 && s.neighbors[d - 1] >= kNoPlaneAbove; --d)
+    (s.neighbors[d - 1] == kNoPlaneBelow ? no_plane_below : no_plane_above) = true;
+  const NeighborPoints nb(m, Star(s.center, s.neighbors, d, s.triangles, s.num_triangles));
+  return vertex_class(m.point(s.center), nb.p.data(), nb.size(), no_plane_below, no_plane_above) == c;
 }
 
 double convex_vertex(const Mesh& m, const Star& s) { return is_class(m, s, kConvex); }
 double mixed_vertex(const Mesh& m, const Star& s) { return is_class(m, s, kMixed); }
+// The class depends on the planes through v with every neighbour below, and
+// with every neighbour above (star_cone.hpp): keep what defines them. A vertex
+// with no plane below is not convex, whatever comes.
+void convex_drop_neighbors(const Mesh& m, uint32_t v, const std::vector<uint32_t>& fixed, std::vector<uint32_t>& nb) {
+  if (side_empty(m, v, fixed, nb, StarSide::Below)) return nb.assign(1, kNoPlaneBelow);
+  drop_implied_neighbors(m, v, fixed, nb, {StarSide::Below, StarSide::Above});
+}
+void mixed_drop_neighbors(const Mesh& m, uint32_t v, const std::vector<uint32_t>& fixed, std::vector<uint32_t>& nb) {
+  drop_implied_neighbors(m, v, fixed, nb, {StarSide::Below, StarSide::Above});
+}
 double local_minimum(const Mesh& m, const Star& s) {
   const NeighborPoints nb(m, s);
   return extremum(m.point(s.center), nb.p.data(), nb.size()) == kLocalMinimum;
@@ -51,6 +67,7 @@ double minimum_of_classes(uint32_t mask) { return mask == 1; }
 double extremum_of_classes(uint32_t mask) { return mask == 1 || mask == 2; }
 
 double degree(const Mesh&, const Star& s) { return static_cast<double>(s.degree); }
+double degree_term(uint32_t d) { return static_cast<double>(d); }
 
 double convex_edge(const Mesh& m, uint32_t u, uint32_t v, uint32_t w, uint32_t x) {
   return edge_shape(m.point(u), m.point(v), m.point(w), m.point(x)) == kConvexEdge;
@@ -72,15 +89,21 @@ std::array<ObjectiveTerms, kNumObjectives> make_table() {
   using C = TermCombine;
   std::array<ObjectiveTerms, kNumObjectives> t{};
   auto set = [&](Objective o, ObjectiveTerms d) { t[static_cast<size_t>(o)] = d; };
-  set(Objective::MaxConvexVertices, {S::InteriorVertex, C::Sum, kCount, convex_vertex});
-  set(Objective::MinMixedVertices, {S::InteriorVertex, C::Sum, kCount, mixed_vertex});
+  ObjectiveTerms convex{S::InteriorVertex, C::Sum, kCount, convex_vertex};
+  convex.drop_neighbors = convex_drop_neighbors;
+  set(Objective::MaxConvexVertices, convex);
+  ObjectiveTerms mixed{S::InteriorVertex, C::Sum, kCount, mixed_vertex};
+  mixed.drop_neighbors = mixed_drop_neighbors;
+  set(Objective::MinMixedVertices, mixed);
   ObjectiveTerms minima{S::InteriorVertex, C::Sum, kCount, local_minimum};
   minima.neighbor_class = height_class, minima.term_of_classes = minimum_of_classes;
   set(Objective::MinLocalMinima, minima);
   ObjectiveTerms extrema{S::InteriorVertex, C::Sum, kCount, local_extremum};
   extrema.neighbor_class = height_class, extrema.term_of_classes = extremum_of_classes;
   set(Objective::MinLocalExtrema, extrema);
-  set(Objective::MinmaxDegree, {S::Vertex, C::Max, kUnbounded, degree});
+  ObjectiveTerms max_degree{S::Vertex, C::Max, kUnbounded, degree};
+  max_degree.term_of_degree = degree_term;
+  set(Objective::MinmaxDegree, max_degree);
   set(Objective::MaxConvexEdges, {S::InteriorEdge, C::Sum, kCount, nullptr, convex_edge});
   ObjectiveTerms total_length{S::Edge, C::Sum, kUnbounded, nullptr, length};
   total_length.edge_reads_apexes = false;

@@ -60,6 +60,7 @@ Fans fans_of(const Mesh& dt, const ObjectiveTerms& d, const Region& r, const std
         star_neighbors(f.vertices[i], around[i], nb);
         key.clear();
         if (d.neighbor_class) key.push_back({neighbor_classes(d, dt, f.vertices[i], nb), 0, 0});
+        else if (d.term_of_degree) key.push_back({static_cast<uint32_t>(nb.size()), 0, 0});  // (the region's fixed ones are the same in every state)
         else
           for (uint32_t w : nb) key.push_back({w, 0, 0});
       }

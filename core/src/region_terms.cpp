@@ -14,7 +14,7 @@ constexpr uint32_t kVertexEntry = UINT32_MAX, kEdgeEntry = UINT32_MAX - 1;
 }  // namespace
 
 RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o, const Candidates* candidates)
-    : dt_(dt), R_(R), cand_(candidates), d_(objective_terms(o)), sense_(info(o).sense) {
+    : dt_(dt), R_(R), cand_(candidates), d_(objective_terms(o)), sense_(info(o).sense), filter_(dt, R, d_) {
   const uint32_t n = dt.num_vertices();
   std::vector<uint32_t> count(n, 0), seen(n, UINT32_MAX);
   for (uint32_t r = 0; r < R.regions.size(); ++r) {
@@ -32,6 +32,37 @@ RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o, const Ca
     for (uint32_t e = 0; e < dt.halfedges.size(); ++e)
       if (dt.halfedges[e] < 0 || R.fixed[e]) boundary_.emplace(edge_key(dt.origin(e), dt.target(e)), e);
   if (d_.combine == TermCombine::Max) floor_ = fixed_terms_max();
+  if (reads_degree() && floor_ > 0) {
+    useful_degree_.assign(n, 0);
+    for (const auto& [a, b] : R.useful) ++useful_degree_[a], ++useful_degree_[b];
+  }
+  if (reads_fans() && cand_ && floor_ > 0) {
+    candidate_fan_.resize(n);
+    for (const auto& [a, b] : R.useful)
+      for (const auto& [u, w] : {std::pair{a, b}, std::pair{b, a}}) {
+        const auto it = cand_->find(edge_key(u, w));
+        if (it == cand_->end()) continue;
+        for (uint32_t x : it->second)
+          for (uint32_t c : {u, w, x}) candidate_fan_[c].push_back(canonical_triangle({u, w, x}));
+      }
+    for (auto& f : candidate_fan_) {
+      std::sort(f.begin(), f.end());
+      f.erase(std::unique(f.begin(), f.end()), f.end());
+    }
+  }
+}
+
+bool RegionTerms::harmless(uint32_t v, const Tri& t) const {
+  if (candidate_fan_.empty()) return false;
+  const Tri c = canonical_triangle(t);
+  const auto [it, fresh] = harmless_.try_emplace({v, c[0], c[1], c[2]}, true);
+  if (fresh)
+    for (const Tri& other : candidate_fan_[v])
+      if (other != c && d_.pair(dt_, c, other, floor_) > floor_) {
+        it->second = false;
+        break;
+      }
+  return it->second;
 }
 
 double RegionTerms::fixed_terms_max() const {
@@ -48,14 +79,19 @@ double RegionTerms::fixed_terms_max() const {
       m = std::max(m, edge_term(d_, dt_, dt_.origin(e), dt_.target(e), dt_.apex(e), f < 0 ? kNoApex : dt_.apex(static_cast<uint32_t>(f)), m));
     }
   } else {
+    // Max vertex terms (degree, vertex pairs) never decrease as a star grows, and
+    // every star has its vertex's fixed triangles and the ends of its fixed edges.
+    std::vector<std::vector<uint32_t>> always(dt_.num_vertices());
+    for (uint32_t e = 0; e < dt_.halfedges.size(); ++e)
+      if (dt_.halfedges[e] < 0 || R_.fixed[e]) always[dt_.origin(e)].push_back(dt_.target(e)), always[dt_.target(e)].push_back(dt_.origin(e));
     for (uint32_t v = 0; v < dt_.num_vertices(); ++v) {
       if (interior_only(d_.site) && on_hull_[v]) continue;
-      bool all = true;
-      for (uint32_t j = stars_.tri_offset[v]; j < stars_.tri_offset[v + 1] && all; ++j) all = fixed(stars_.triangle[j]);
-      if (!all) continue;
       star_.clear();
-      for (uint32_t j = stars_.tri_offset[v]; j < stars_.tri_offset[v + 1]; ++j) star_.push_back(base_triangle(dt_, stars_.triangle[j]));
-      star_neighbors(v, star_, nb_);
+      for (uint32_t j = stars_.tri_offset[v]; j < stars_.tri_offset[v + 1]; ++j)
+        if (fixed(stars_.triangle[j])) star_.push_back(base_triangle(dt_, stars_.triangle[j]));
+      nb_ = always[v];
+      std::sort(nb_.begin(), nb_.end());
+      nb_.erase(std::unique(nb_.begin(), nb_.end()), nb_.end());
       m = std::max(m, vertex_term(d_, dt_, Star(v, nb_, star_), m));
     }
   }
@@ -91,13 +127,22 @@ double RegionTerms::vertex_done(uint32_t r, uint32_t v, const std::vector<uint32
   entry.clear();
   if (!reads_vertices()) return 0;
   if (reads_classes()) return vertex_done(r, v, neighbor_classes(d_, dt_, v, nb), entry);
+  if (reads_degree()) {
+    const auto& f = filter_.fixed(v);
+    const auto fixed = std::count_if(nb.begin(), nb.end(), [&](uint32_t w) { return std::binary_search(f.begin(), f.end(), w); });
+    return vertex_done(r, v, degree_matters(v) ? static_cast<uint32_t>(nb.size() - static_cast<size_t>(fixed)) : 0, entry);
+  }
   if (shared_[v]) {  // the regions beside see the triangles (vertex pairs) or the neighbours
     entry.push_back({kVertexEntry, v, reads_fans() ? 0u : 1u});
     if (reads_fans()) {  // canonical triangles, sorted
-      for (const Tri& t : fan) entry.push_back(canonical_triangle(t));
+      for (const Tri& t : fan)
+        if (!harmless(v, t)) entry.push_back(canonical_triangle(t));
       std::sort(entry.begin() + 1, entry.end());
-    } else
-      for (uint32_t w : nb) entry.push_back({w, 0, 0});
+    } else {
+      nb_ = nb;
+      filter_.reduce(v, nb_);
+      for (uint32_t w : nb_) entry.push_back({w, 0, 0});
+    }
     return 0;
   }
   if (interior_only(d_.site) && on_hull_[v]) return 0;
@@ -106,25 +151,31 @@ double RegionTerms::vertex_done(uint32_t r, uint32_t v, const std::vector<uint32
   if (reads_fans()) star_ = fan;
   add_outside(r, v, star_);
   star_neighbors(v, star_, nb_);
-  if (!reads_fans()) {  // add the region's neighbours
+  if (!reads_fans()) {  // add the region's neighbours (reduced: and the fixed ones, which they may leave out)
     nb_.insert(nb_.end(), nb.begin(), nb.end());
+    if (filter_.active()) nb_.insert(nb_.end(), filter_.fixed(v).begin(), filter_.fixed(v).end());
     std::sort(nb_.begin(), nb_.end());
     nb_.erase(std::unique(nb_.begin(), nb_.end()), nb_.end());
   }
   return clip(vertex_term(d_, dt_, Star(v, nb_, star_)));
 }
 
-double RegionTerms::vertex_done(uint32_t r, uint32_t v, uint32_t classes, SignatureEntry& entry) const {
+double RegionTerms::vertex_done(uint32_t r, uint32_t v, uint32_t summary, SignatureEntry& entry) const {
   entry.clear();
-  if (shared_[v]) {  // the regions beside see the classes
-    entry = {{kVertexEntry, v, 2}, {classes, 0, 0}};
+  if (shared_[v]) {  // the regions beside see the summary
+    entry = {{kVertexEntry, v, 2}, {summary, 0, 0}};
     return 0;
   }
   if (interior_only(d_.site) && on_hull_[v]) return 0;
   star_.clear();
   add_outside(r, v, star_);
   star_neighbors(v, star_, nb_);
-  return clip(d_.term_of_classes(classes | neighbor_classes(d_, dt_, v, nb_)));
+  if (reads_classes()) return clip(d_.term_of_classes(summary | neighbor_classes(d_, dt_, v, nb_)));
+  // The fixed neighbours and those of the triangles outside, then the region's new ones.
+  nb_.insert(nb_.end(), filter_.fixed(v).begin(), filter_.fixed(v).end());
+  std::sort(nb_.begin(), nb_.end());
+  nb_.erase(std::unique(nb_.begin(), nb_.end()), nb_.end());
+  return clip(d_.term_of_degree(static_cast<uint32_t>(nb_.size()) + summary));
 }
 
 void RegionTerms::add_outside(uint32_t r, uint32_t v, std::vector<Tri>& star) const {

@@ -32,7 +32,7 @@ TEST_CASE("fill DP: the best triangulation of every signature, as enumeration fi
       const Regions R = k_order_skeleton(dt, k);
       const Candidates cand = k_order_candidates(dt, k, R.useful);
       for (const auto& oi : objectives()) {
-        const RegionTerms T(dt, R, oi.objective);
+        const RegionTerms T(dt, R, oi.objective, &cand);  // (apex kinds, harmless triangles)
         for (uint32_t r = 0; r < R.regions.size(); ++r) {
           if (R.regions[r].delaunay_triangles.size() < 2) continue;
           std::map<std::vector<SignatureEntry>, double> listed;

@@ -24,7 +24,10 @@ EdgeShape edge_shape(const double* u, const double* v, const double* w, const do
 // Class of an interior vertex p with neighbours nb (any order). Exact:
 // convex iff p is on or above the upper hull of its neighbours over p's (x, y)
 // and they are not all coplanar with p; concave symmetrically; flat if coplanar.
-VertexClass vertex_class(const double* p, const double* const* nb, uint32_t count);
+// below_known / above_known: neighbours left out are known to put p strictly
+// below the upper hull / above the lower hull (star_cone.hpp's marks).
+VertexClass vertex_class(const double* p, const double* const* nb, uint32_t count, bool below_known = false,
+                         bool above_known = false);
 Extremum extremum(const double* p, const double* const* nb, uint32_t count);
 
 // Plane (xy) area of a counterclockwise triangle, positive: within 4 ulps of the

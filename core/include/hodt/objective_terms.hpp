@@ -69,6 +69,16 @@ struct ObjectiveTerms {
   // then summarised by one mask, and fans with equal masks are interchangeable.
   uint32_t (*neighbor_class)(const Mesh& points, uint32_t v, uint32_t w) = nullptr;
   double (*term_of_classes)(uint32_t mask) = nullptr;
+  // Optional, for vertex terms over neighbour sets: drops from nb (v's
+  // neighbours so far, sorted) those that cannot change v's term, whatever
+  // neighbours come next, as long as every vertex of `fixed` (the ends of v's
+  // fixed edges, at order k) is among them. Region engines keep what is left.
+  void (*drop_neighbors)(const Mesh& points, uint32_t v, const std::vector<uint32_t>& fixed,
+                         std::vector<uint32_t>& nb) = nullptr;
+  // Optional, for vertex terms that read only how many neighbours v has: the
+  // term of that number. A region's fan is then its count of new neighbours
+  // (regions share only fixed edges, so counts add up).
+  double (*term_of_degree)(uint32_t degree) = nullptr;
   // Edge terms: whether they read the apexes at all (a length does not).
   bool edge_reads_apexes = true;
 };

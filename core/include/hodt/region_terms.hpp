@@ -10,11 +10,13 @@
 // The same pieces serve a whole triangulation (key) and a fill built triangle by
 // triangle (fill_dp.hpp), which meets each vertex and edge as it completes.
 #pragma once
+#include <array>
 #include <unordered_map>
 #include <vector>
 
 #include "hodt/fill_enumerator.hpp"
 #include "hodt/measures.hpp"
+#include "hodt/neighbor_filter.hpp"
 #include "hodt/objective_terms.hpp"
 #include "hodt/regions.hpp"
 
@@ -47,14 +49,23 @@ class RegionTerms {
   // Vertex terms that read only the classes of the neighbours: a fan is its mask.
   bool reads_classes() const { return d_.neighbor_class != nullptr; }
   uint32_t neighbor_class(uint32_t v, uint32_t w) const { return d_.neighbor_class(dt_, v, w); }
+  // Vertex terms that read only the degree: a fan is its number of neighbours
+  // over edges that are not fixed.
+  bool reads_degree() const { return d_.term_of_degree != nullptr; }
+  // ... and whether v's term can exceed the floor at all (else its count is not kept).
+  bool degree_matters(uint32_t v) const { return useful_degree_.empty() || d_.term_of_degree(useful_degree_[v]) > floor_; }
+  // Neighbour-set terms: keeps of v's neighbours what can change its term
+  // (neighbor_filter.hpp), in fills, signatures and vertex_done alike.
+  void reduce_neighbors(uint32_t v, std::vector<uint32_t>& nb) const { filter_.reduce(v, nb); }
 
   // Vertex v's fan in region r is complete: nb its neighbours there (sorted),
   // fan its triangles there (read only when reads_fans()). Returns its term (0 if
   // none), or sets `entry` (else left empty) when other regions see the fan.
   double vertex_done(uint32_t r, uint32_t v, const std::vector<uint32_t>& nb, const std::vector<Tri>& fan,
                      SignatureEntry& entry) const;
-  // The same for a fan summarised by the classes of its neighbours (reads_classes()).
-  double vertex_done(uint32_t r, uint32_t v, uint32_t classes, SignatureEntry& entry) const;
+  // The same for a fan summarised by one number: the classes of its neighbours
+  // (reads_classes()) or how many of them are not fixed (reads_degree()).
+  double vertex_done(uint32_t r, uint32_t v, uint32_t summary, SignatureEntry& entry) const;
   // Is u -> v a boundary edge of region r (r on its left)? (Edge terms only.)
   bool on_boundary(uint32_t r, uint32_t u, uint32_t v) const;
   // Boundary edge u -> v of region r (r on its left) is covered by triangle u v w.
@@ -66,6 +77,10 @@ class RegionTerms {
   // Apexes whose edge terms agree for every candidate apex in front of a -> b
   // are interchangeable; each kind is named by its smallest apex.
   uint32_t apex_kind(uint32_t a, uint32_t b, uint32_t w) const;
+  // Vertex-pair terms: does every pair of t (at v) with another k-OD triangle at
+  // v measure at most floor()? Then no term reads t above the floor, and fans
+  // need not keep it (in fills, signatures and vertex_done alike).
+  bool harmless(uint32_t v, const Tri& t) const;
   // Min-max objectives: the largest term that no region can change. The optimum
   // is at least this, so every term is read as at least this (clip): the same
   // optima, and far fewer apexes and signatures to tell apart.
@@ -91,6 +106,17 @@ class RegionTerms {
   std::vector<uint8_t> on_hull_;
   Stars stars_;
   std::unordered_map<uint64_t, uint32_t> boundary_;  // fixed or hull halfedges by (origin, target)
+  NeighborFilter filter_;
+  std::vector<uint32_t> useful_degree_;  // per vertex: its useful edges, the most neighbours it can have
+  std::vector<std::vector<Tri>> candidate_fan_;  // per vertex: its k-OD triangles (vertex pairs, with a floor)
+  struct TriAtHash {
+    size_t operator()(const std::array<uint32_t, 4>& k) const {
+      uint64_t h = 1469598103934665603ull;
+      for (uint32_t x : k) h = (h ^ x) * 1099511628211ull;
+      return static_cast<size_t>(h);
+    }
+  };
+  mutable std::unordered_map<std::array<uint32_t, 4>, bool, TriAtHash> harmless_;
   mutable std::vector<Tri> star_;
   mutable std::vector<uint32_t> nb_;
 };
