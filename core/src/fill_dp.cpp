@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "hodt/error.hpp"
+#include "hodt/words_hash.hpp"
 
 namespace hodt {
 
@@ -16,7 +17,7 @@ constexpr uint32_t kSeparator = UINT32_MAX;  // between the parts of a key
 struct Partial {
   std::vector<uint64_t> open;     // the frontier, sorted
   std::vector<uint32_t> behind;   // per open edge, the kind of apex of the covered triangle on its right (apex terms)
-  std::vector<uint32_t> around;   // per frontier vertex: v, n, then n items (class mask, neighbours or fan triangles), by v
+  std::vector<uint32_t> around;   // per frontier vertex, by v: v, n, then its fan in n words (RegionTerms::extend_fan)
   std::vector<SignatureEntry> signature;  // sorted
   double value = 0;
   uint32_t node = UINT32_MAX;  // how it was reached (Node)
@@ -25,14 +26,6 @@ struct Partial {
 struct Node {
   uint32_t parent;
   Tri triangle;
-};
-
-struct KeyHash {
-  size_t operator()(const std::vector<uint32_t>& k) const {
-    uint64_t h = 1469598103934665603ull;
-    for (uint32_t x : k) h = (h ^ x) * 1099511628211ull;
-    return static_cast<size_t>(h ^ (h >> 29));
-  }
 };
 
 uint32_t from(uint64_t e) { return static_cast<uint32_t>(e >> 32); }
@@ -54,7 +47,7 @@ class FillDp {
     uint64_t states = 1, generated = 0;
     while (!layer.empty()) {
       std::vector<Partial> next;
-      std::unordered_map<std::vector<uint32_t>, uint32_t, KeyHash> index;
+      std::unordered_map<std::vector<uint32_t>, uint32_t, WordsHash> index;
       for (Partial& p : layer) {
         if (p.open.empty()) {
           out.push_back({triangles_of(p.node), p.value});
@@ -92,8 +85,7 @@ class FillDp {
   std::vector<Node> nodes_;    // kept states' (parent, last triangle)
   std::vector<Node> pending_;  // this layer's children, before merging
   SignatureEntry entry_;
-  std::vector<uint32_t> nb_;
-  std::vector<Tri> fan_;
+  std::vector<uint32_t> fan_;  // the fan being extended
 
   std::vector<Tri> triangles_of(uint32_t node) const {
     std::vector<Tri> tris;
@@ -145,53 +137,21 @@ class FillDp {
   void add_to_fans(Partial& p, const Tri& t, const std::array<uint32_t, 3>& fresh) {
     for (int i = 0; i < 3; ++i) {
       const uint32_t v = t[i];
-      // Find v's block (blocks sorted by vertex).
+      // v's block (blocks sorted by vertex): v, n, then its fan in n words.
       size_t pos = 0;
       while (pos < p.around.size() && p.around[pos] < v) pos += 2 + p.around[pos + 1];
-      if (pos == p.around.size() || p.around[pos] != v) {
-        p.around.insert(p.around.begin() + static_cast<std::ptrdiff_t>(pos), {v, 0});
-      }
-      std::vector<uint32_t> items(p.around.begin() + static_cast<std::ptrdiff_t>(pos + 2),
-                                  p.around.begin() + static_cast<std::ptrdiff_t>(pos + 2 + p.around[pos + 1]));
-      if (T_.reads_classes()) {  // one item: the neighbours' classes
-        if (items.empty()) items.push_back(0);
-        for (uint32_t w : {t[(i + 1) % 3], t[(i + 2) % 3]}) items[0] |= 1u << T_.neighbor_class(v, w);
-      } else if (T_.reads_degree()) {  // one item: the new neighbours (a side drawn first is not fixed)
-        if (items.empty()) items.push_back(0);
-        if (T_.degree_matters(v)) items[0] += fresh[i];
-      } else if (T_.reads_fans()) {  // items are whole triangles, sorted (those that matter)
-        const Tri c = canonical_triangle(t);
-        if (!T_.harmless(v, c)) {
-          size_t j = 0;
-          while (j < items.size() && Tri{items[j], items[j + 1], items[j + 2]} < c) j += 3;
-          items.insert(items.begin() + static_cast<std::ptrdiff_t>(j), c.begin(), c.end());
-        }
-      } else {
-        for (uint32_t w : {t[(i + 1) % 3], t[(i + 2) % 3]}) {
-          auto it = std::lower_bound(items.begin(), items.end(), w);
-          if (it == items.end() || *it != w) items.insert(it, w);
-        }
-        T_.reduce_neighbors(v, items);
-      }
-      p.around.erase(p.around.begin() + static_cast<std::ptrdiff_t>(pos),
-                     p.around.begin() + static_cast<std::ptrdiff_t>(pos + 2 + p.around[pos + 1]));
+      const bool had = pos < p.around.size() && p.around[pos] == v;
+      const size_t words = had ? p.around[pos + 1] : 0;
+      const auto first = p.around.begin() + static_cast<std::ptrdiff_t>(pos);
+      fan_.assign(first + (had ? 2 : 0), first + (had ? 2 + static_cast<std::ptrdiff_t>(words) : 0));
+      T_.extend_fan(v, t, fresh[i], fan_);
+      if (had) p.around.erase(first, first + 2 + static_cast<std::ptrdiff_t>(words));
       if (!on_frontier(p, v)) {  // complete: its term, or its signature entry
-        if (T_.reads_classes() || T_.reads_degree()) {
-          take(p, T_.vertex_done(r_, v, items[0], entry_));
-          continue;
-        }
-        fan_.clear();
-        if (T_.reads_fans()) {
-          for (size_t j = 0; j < items.size(); j += 3) fan_.push_back({items[j], items[j + 1], items[j + 2]});
-          star_neighbors(v, fan_, nb_);
-        } else {
-          nb_ = items;
-        }
-        take(p, T_.vertex_done(r_, v, nb_, fan_, entry_));
+        take(p, T_.fan_done(r_, v, fan_, entry_));
         continue;
       }
-      std::vector<uint32_t> block{v, static_cast<uint32_t>(items.size())};
-      block.insert(block.end(), items.begin(), items.end());
+      std::vector<uint32_t> block{v, static_cast<uint32_t>(fan_.size())};
+      block.insert(block.end(), fan_.begin(), fan_.end());
       p.around.insert(p.around.begin() + static_cast<std::ptrdiff_t>(pos), block.begin(), block.end());
     }
   }

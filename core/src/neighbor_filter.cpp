@@ -5,7 +5,6 @@
 namespace hodt {
 
 NeighborFilter::NeighborFilter(const Mesh& dt, const Regions& R, const ObjectiveTerms& d) : dt_(dt), d_(d) {
-  if (!active() && !d.term_of_degree) return;
   fixed_.resize(dt.num_vertices());
   for (uint32_t e = 0; e < dt.halfedges.size(); ++e)
     if (dt.halfedges[e] < 0 || R.fixed[e]) {

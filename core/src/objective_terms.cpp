@@ -42,10 +42,10 @@ double convex_vertex(const Mesh& m, const Star& s) { return is_class(m, s, kConv
 double mixed_vertex(const Mesh& m, const Star& s) { return is_class(m, s, kMixed); }
 // The class depends on the planes through v with every neighbour below, and
 // with every neighbour above (star_cone.hpp): keep what defines them. A vertex
-// with no plane below is not convex, whatever comes.
+// with no plane below is not convex, whatever comes: its mark is all it keeps.
 void convex_drop_neighbors(const Mesh& m, uint32_t v, const std::vector<uint32_t>& fixed, std::vector<uint32_t>& nb) {
-  if (side_empty(m, v, fixed, nb, StarSide::Below)) return nb.assign(1, kNoPlaneBelow);
-  drop_implied_neighbors(m, v, fixed, nb, {StarSide::Below, StarSide::Above});
+  if (nb.empty() || nb.back() != kNoPlaneBelow) drop_implied_neighbors(m, v, fixed, nb, {StarSide::Below, StarSide::Above});
+  if (!nb.empty() && nb.back() == kNoPlaneBelow) nb.assign(1, kNoPlaneBelow);
 }
 void mixed_drop_neighbors(const Mesh& m, uint32_t v, const std::vector<uint32_t>& fixed, std::vector<uint32_t>& nb) {
   drop_implied_neighbors(m, v, fixed, nb, {StarSide::Below, StarSide::Above});

@@ -38,12 +38,10 @@ RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o, const Ca
   }
   if (reads_fans() && cand_ && floor_ > 0) {
     candidate_fan_.resize(n);
-    for (const auto& [a, b] : R.useful)
-      for (const auto& [u, w] : {std::pair{a, b}, std::pair{b, a}}) {
-        const auto it = cand_->find(edge_key(u, w));
-        if (it == cand_->end()) continue;
-        for (uint32_t x : it->second)
-          for (uint32_t c : {u, w, x}) candidate_fan_[c].push_back(canonical_triangle({u, w, x}));
+    for (const auto& [e, apexes] : *cand_)
+      for (uint32_t x : apexes) {
+        const Tri t = canonical_triangle({static_cast<uint32_t>(e >> 32), static_cast<uint32_t>(e), x});
+        for (uint32_t c : t) candidate_fan_[c].push_back(t);
       }
     for (auto& f : candidate_fan_) {
       std::sort(f.begin(), f.end());
@@ -81,18 +79,12 @@ double RegionTerms::fixed_terms_max() const {
   } else {
     // Max vertex terms (degree, vertex pairs) never decrease as a star grows, and
     // every star has its vertex's fixed triangles and the ends of its fixed edges.
-    std::vector<std::vector<uint32_t>> always(dt_.num_vertices());
-    for (uint32_t e = 0; e < dt_.halfedges.size(); ++e)
-      if (dt_.halfedges[e] < 0 || R_.fixed[e]) always[dt_.origin(e)].push_back(dt_.target(e)), always[dt_.target(e)].push_back(dt_.origin(e));
     for (uint32_t v = 0; v < dt_.num_vertices(); ++v) {
       if (interior_only(d_.site) && on_hull_[v]) continue;
       star_.clear();
       for (uint32_t j = stars_.tri_offset[v]; j < stars_.tri_offset[v + 1]; ++j)
         if (fixed(stars_.triangle[j])) star_.push_back(base_triangle(dt_, stars_.triangle[j]));
-      nb_ = always[v];
-      std::sort(nb_.begin(), nb_.end());
-      nb_.erase(std::unique(nb_.begin(), nb_.end()), nb_.end());
-      m = std::max(m, vertex_term(d_, dt_, Star(v, nb_, star_), m));
+      m = std::max(m, vertex_term(d_, dt_, Star(v, filter_.fixed(v), star_), m));
     }
   }
   return m;
@@ -120,6 +112,39 @@ uint32_t RegionTerms::apex_kind(uint32_t a, uint32_t b, uint32_t w) const {
   }
   const auto k = std::lower_bound(kinds.begin(), kinds.end(), std::make_pair(w, 0u));
   return k != kinds.end() && k->first == w ? k->second : w;
+}
+
+void RegionTerms::extend_fan(uint32_t v, const Tri& t, uint32_t fresh, std::vector<uint32_t>& fan) const {
+  const int i = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+  const uint32_t others[2] = {t[(i + 1) % 3], t[(i + 2) % 3]};
+  if (reads_classes() || reads_degree()) {  // one word
+    if (fan.empty()) fan.push_back(0);
+    if (reads_classes())
+      for (uint32_t w : others) fan[0] |= 1u << neighbor_class(v, w);
+    else if (degree_matters(v))
+      fan[0] += fresh;
+  } else if (reads_fans()) {  // triangles, three words each, sorted
+    const Tri c = canonical_triangle(t);
+    if (harmless(v, c)) return;
+    size_t j = 0;
+    while (j < fan.size() && Tri{fan[j], fan[j + 1], fan[j + 2]} < c) j += 3;
+    fan.insert(fan.begin() + static_cast<std::ptrdiff_t>(j), c.begin(), c.end());
+  } else {  // neighbours, sorted
+    for (uint32_t w : others) {
+      const auto it = std::lower_bound(fan.begin(), fan.end(), w);
+      if (it == fan.end() || *it != w) fan.insert(it, w);
+    }
+    filter_.reduce(v, fan);
+  }
+}
+
+double RegionTerms::fan_done(uint32_t r, uint32_t v, const std::vector<uint32_t>& fan, SignatureEntry& entry) const {
+  if (reads_classes() || reads_degree()) return vertex_done(r, v, fan[0], entry);
+  fan_.clear();
+  if (!reads_fans()) return vertex_done(r, v, fan, fan_, entry);
+  for (size_t j = 0; j < fan.size(); j += 3) fan_.push_back({fan[j], fan[j + 1], fan[j + 2]});
+  star_neighbors(v, fan_, fan_nb_);
+  return vertex_done(r, v, fan_nb_, fan_, entry);
 }
 
 double RegionTerms::vertex_done(uint32_t r, uint32_t v, const std::vector<uint32_t>& nb, const std::vector<Tri>& fan,

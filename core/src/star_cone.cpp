@@ -30,18 +30,16 @@ int det_sign(const Mesh& m, uint32_t v, uint32_t a, uint32_t b, uint32_t c) {
 // each computed once.
 class Generators {
  public:
+  // (fixed and nb disjoint: a repeated vertex would cost exact zero tests)
   Generators(const Mesh& m, uint32_t v, const std::vector<uint32_t>& fixed, const std::vector<uint32_t>& nb)
       : m_(m), v_(v), id_(fixed) {
-    for (uint32_t w : nb)  // (fixed ones once: a repeated vertex would cost exact zero tests)
-      if (w < kNoPlaneAbove && !std::binary_search(fixed.begin(), fixed.end(), w)) id_.push_back(w);
+    id_.insert(id_.end(), nb.begin(), nb.end());
     id_.push_back(kUpZ), id_.push_back(kDownZ);
     n_ = id_.size();
     sign_.assign(n_ * n_ * n_, kUnknown);
   }
-  size_t size() const { return n_; }
   size_t up() const { return n_ - 2; }
   size_t down() const { return n_ - 1; }
-  uint32_t id(size_t i) const { return id_[i]; }
 
   int det(size_t i, size_t j, size_t k) {
     int8_t& s = sign_[(i * n_ + j) * n_ + k];
@@ -79,20 +77,7 @@ class Generators {
   std::vector<int8_t> sign_;
 };
 
-bool empty_side(Generators& g, size_t fixed_count, size_t nb_count, StarSide side) {
-  std::vector<size_t> gen(fixed_count + nb_count);
-  for (size_t i = 0; i < gen.size(); ++i) gen[i] = i;
-  return g.in_cone(gen, side == StarSide::Below ? g.up() : g.down());
-}
-
 }  // namespace
-
-bool side_empty(const Mesh& m, uint32_t v, const std::vector<uint32_t>& fixed, const std::vector<uint32_t>& nb,
-                StarSide side) {
-  if (std::find(nb.begin(), nb.end(), side == StarSide::Below ? kNoPlaneBelow : kNoPlaneAbove) != nb.end()) return true;
-  Generators g(m, v, fixed, nb);
-  return empty_side(g, fixed.size(), g.size() - 2 - fixed.size(), side);
-}
 
 void drop_implied_neighbors(const Mesh& m, uint32_t v, const std::vector<uint32_t>& fixed, std::vector<uint32_t>& nb,
                             std::initializer_list<StarSide> sides) {
@@ -104,26 +89,28 @@ void drop_implied_neighbors(const Mesh& m, uint32_t v, const std::vector<uint32_
            nb.end());
   Generators g(m, v, fixed, nb);
   const size_t f = fixed.size(), n = nb.size();  // generator f + i is nb[i]
+  std::vector<size_t> all(f + n);
+  for (size_t i = 0; i < all.size(); ++i) all[i] = i;
   std::vector<uint8_t> keep(n, 0), needed(n);
   std::vector<size_t> gen, essential;
   for (const StarSide side : sides) {
     if (std::find(marks.begin(), marks.end(), mark(side)) != marks.end()) continue;
-    if (empty_side(g, f, n, side)) {
+    // No plane on this side (e_z, or -e_z, in the cone of the neighbours): its mark.
+    if (g.in_cone(all, side == StarSide::Below ? g.up() : g.down())) {
       marks.push_back(mark(side));
       continue;
     }
-    // The essential ones: implied by none of the others. Dropping all the rest
-    // at once is sound when the essential ones imply each dropped one (always
-    // for a polygon with an interior); else the side keeps them all.
+    // The essential ones: implied by none of the others (with the fixed ones and
+    // the vertical away from the side). Dropping all the rest at once is sound
+    // when the essential ones imply each dropped one (always for a polygon with
+    // an interior); else the side keeps them all.
     const size_t away = side == StarSide::Below ? g.down() : g.up();
-    essential.clear();
-    for (size_t i = 0; i < f; ++i) essential.push_back(i);
+    essential.assign(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(f));
     essential.push_back(away);
     for (size_t i = 0; i < n; ++i) {
-      gen = essential;
-      gen.resize(f + 1);
-      for (size_t j = 0; j < n; ++j)
-        if (j != i) gen.push_back(f + j);
+      gen = all;
+      gen.erase(gen.begin() + static_cast<std::ptrdiff_t>(f + i));
+      gen.push_back(away);
       needed[i] = !g.in_cone(gen, f + i);
       if (needed[i]) essential.push_back(f + i);
     }

@@ -19,6 +19,7 @@
 #include "hodt/neighbor_filter.hpp"
 #include "hodt/objective_terms.hpp"
 #include "hodt/regions.hpp"
+#include "hodt/words_hash.hpp"
 
 namespace hodt {
 
@@ -54,9 +55,15 @@ class RegionTerms {
   bool reads_degree() const { return d_.term_of_degree != nullptr; }
   // ... and whether v's term can exceed the floor at all (else its count is not kept).
   bool degree_matters(uint32_t v) const { return useful_degree_.empty() || d_.term_of_degree(useful_degree_[v]) > floor_; }
-  // Neighbour-set terms: keeps of v's neighbours what can change its term
-  // (neighbor_filter.hpp), in fills, signatures and vertex_done alike.
-  void reduce_neighbors(uint32_t v, std::vector<uint32_t>& nb) const { filter_.reduce(v, nb); }
+
+  // A vertex's fan as a growing fill keeps it (fill_dp.hpp), in words: its
+  // neighbours' class mask, its count of new neighbours, the neighbours or the
+  // triangles that can change its term. t joins v's fan, drawing `fresh` of v's
+  // two sides in t first (the others closed a side already drawn).
+  void extend_fan(uint32_t v, const Tri& t, uint32_t fresh, std::vector<uint32_t>& fan) const;
+  // v's fan (as extend_fan keeps it) in region r is complete: its term, or its
+  // signature entry, as vertex_done below.
+  double fan_done(uint32_t r, uint32_t v, const std::vector<uint32_t>& fan, SignatureEntry& entry) const;
 
   // Vertex v's fan in region r is complete: nb its neighbours there (sorted),
   // fan its triangles there (read only when reads_fans()). Returns its term (0 if
@@ -109,16 +116,9 @@ class RegionTerms {
   NeighborFilter filter_;
   std::vector<uint32_t> useful_degree_;  // per vertex: its useful edges, the most neighbours it can have
   std::vector<std::vector<Tri>> candidate_fan_;  // per vertex: its k-OD triangles (vertex pairs, with a floor)
-  struct TriAtHash {
-    size_t operator()(const std::array<uint32_t, 4>& k) const {
-      uint64_t h = 1469598103934665603ull;
-      for (uint32_t x : k) h = (h ^ x) * 1099511628211ull;
-      return static_cast<size_t>(h);
-    }
-  };
-  mutable std::unordered_map<std::array<uint32_t, 4>, bool, TriAtHash> harmless_;
-  mutable std::vector<Tri> star_;
-  mutable std::vector<uint32_t> nb_;
+  mutable std::unordered_map<std::array<uint32_t, 4>, bool, WordsHash> harmless_;  // (v, triangle) -> harmless
+  mutable std::vector<Tri> star_, fan_;
+  mutable std::vector<uint32_t> nb_, fan_nb_;
 };
 
 }  // namespace hodt

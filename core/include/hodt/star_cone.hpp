@@ -22,10 +22,6 @@ namespace hodt {
 
 enum class StarSide : int8_t { Below = 1, Above = -1 };  // neighbours on or below / on or above a plane
 
-// Is there certainly no plane through v with `fixed` and nb all on `side`?
-bool side_empty(const Mesh& m, uint32_t v, const std::vector<uint32_t>& fixed, const std::vector<uint32_t>& nb,
-                StarSide side);
-
 // Marks, after the vertices in a reduced neighbour list: the side is empty.
 constexpr uint32_t kNoPlaneAbove = UINT32_MAX - 3, kNoPlaneBelow = UINT32_MAX - 2;
 
