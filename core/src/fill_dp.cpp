@@ -33,8 +33,8 @@ uint32_t to(uint64_t e) { return static_cast<uint32_t>(e); }
 
 class FillDp {
  public:
-  FillDp(const Mesh& dt, const Candidates& cand, const RegionTerms& terms, uint32_t r)
-      : dt_(dt), cand_(cand), T_(terms), r_(r) {}
+  FillDp(const Mesh& dt, const Candidates& cand, const RegionTerms& terms, uint32_t r, const std::vector<Tri>* keep)
+      : dt_(dt), cand_(cand), T_(terms), r_(r), keep_(keep) {}
 
   std::optional<std::vector<BestFill>> run(uint64_t max_states, const Progress& progress, uint64_t* used) {
     Partial start;
@@ -82,6 +82,7 @@ class FillDp {
   const Candidates& cand_;
   const RegionTerms& T_;
   uint32_t r_;
+  const std::vector<Tri>* keep_;  // sorted items whose entries are kept (all if null)
   std::vector<Node> nodes_;    // kept states' (parent, last triangle)
   std::vector<Node> pending_;  // this layer's children, before merging
   SignatureEntry entry_;
@@ -122,6 +123,7 @@ class FillDp {
   void take(Partial& p, double term) {
     p.value = T_.add(p.value, term);
     if (entry_.empty()) return;
+    if (keep_ && !std::binary_search(keep_->begin(), keep_->end(), RegionTerms::item_of(entry_))) return;
     p.signature.insert(std::upper_bound(p.signature.begin(), p.signature.end(), entry_), entry_);
   }
 
@@ -227,8 +229,8 @@ class FillDp {
 
 std::optional<std::vector<BestFill>> best_fills(const Mesh& dt, const Candidates& candidates, const RegionTerms& terms,
                                                 uint32_t region, uint64_t max_states, const Progress& progress,
-                                                uint64_t* states_used) {
-  FillDp dp(dt, candidates, terms, region);
+                                                uint64_t* states_used, const std::vector<Tri>* keep_items) {
+  FillDp dp(dt, candidates, terms, region, keep_items);
   return dp.run(max_states, progress, states_used);
 }
 

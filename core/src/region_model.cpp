@@ -3,15 +3,18 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <unordered_set>
 
 #include "hodt/error.hpp"
 #include "hodt/measures.hpp"
+#include "hodt/region_terms.hpp"
 
 namespace hodt {
 
 std::vector<uint32_t> RegionModel::region_states(const std::vector<uint32_t>& variable_state) const {
   std::vector<uint32_t> s(variable_of_region.size(), 0);
-  for (size_t x = 0; x < region_of_variable.size(); ++x) s[region_of_variable[x]] = variable_state[x];
+  for (size_t r = 0; r < s.size(); ++r)
+    if (variable_of_region[r] >= 0) s[r] = variable_state[static_cast<size_t>(variable_of_region[r])];
   return s;
 }
 
@@ -36,23 +39,24 @@ struct Fans {
 
 // States with the same neighbours at a vertex (or the same neighbour classes)
 // share a class: what vertex terms see; for vertex-pair terms, the same triangles.
-Fans fans_of(const Mesh& dt, const ObjectiveTerms& d, const Region& r, const std::function<void()>& tick) {
+Fans fans_of(const Mesh& dt, const ObjectiveTerms& d, const std::vector<std::vector<Tri>>& states,
+             const std::function<void()>& tick) {
   const bool by_neighbors = d.site != TermSite::VertexPair;
   Fans f;
-  for (const Tri& t : r.states[0]) f.vertices.insert(f.vertices.end(), t.begin(), t.end());
+  for (const Tri& t : states[0]) f.vertices.insert(f.vertices.end(), t.begin(), t.end());
   std::sort(f.vertices.begin(), f.vertices.end());
   f.vertices.erase(std::unique(f.vertices.begin(), f.vertices.end()), f.vertices.end());
   const size_t nv = f.vertices.size();
-  f.class_of.assign(nv, std::vector<uint32_t>(r.states.size()));
+  f.class_of.assign(nv, std::vector<uint32_t>(states.size()));
   f.fan.assign(nv, {});
   std::vector<std::map<std::vector<Tri>, uint32_t>> ids(nv);
   std::vector<std::vector<Tri>> around(nv);
   std::vector<Tri> key;
   std::vector<uint32_t> nb;
-  for (size_t s = 0; s < r.states.size(); ++s) {
+  for (size_t s = 0; s < states.size(); ++s) {
     tick();
     for (auto& a : around) a.clear();
-    for (const Tri& t : r.states[s])
+    for (const Tri& t : states[s])
       for (uint32_t v : t) around[f.local(v)].push_back(t);
     for (size_t i = 0; i < nv; ++i) {
       key = around[i];
@@ -80,6 +84,14 @@ uint32_t apex_of(const std::vector<Tri>& tris, uint32_t u, uint32_t v) {
   return kNoApex;
 }
 
+// What the model reads a region through: its list of triangulations, or in a
+// relaxation one of its views (region_views.hpp), which speaks for some items.
+struct Source {
+  uint32_t region;
+  const std::vector<std::vector<Tri>>* states;
+  const std::vector<Tri>* items;  // null: the region itself, every item
+};
+
 struct Builder {
   const Mesh& dt;
   const Regions& R;
@@ -87,40 +99,60 @@ struct Builder {
   RegionModel& M;
   StateGraph& g;
   const Progress& progress;
+  std::vector<Source> src;
+  std::vector<uint32_t> first_src;    // per region: its first source (its own terms)
+  std::vector<int32_t> var_of_src;    // -1 for a source with one state
   uint64_t work = 0;
   // Reports every few thousand terms (a term may cost a vertex class test).
   void tick(double done, double total) {
     if (progress && (++work & 2047) == 0 && !progress(done, total)) throw Cancelled();
   }
 
-  int32_t var(uint32_t r) const { return M.variable_of_region[r]; }
+  // The source that speaks for `item` of region r (its first one, by default).
+  uint32_t source(uint32_t r, const Tri& item) const {
+    for (uint32_t i = first_src[r]; i < src.size() && src[i].region == r && src[i].items; ++i)
+      if (std::binary_search(src[i].items->begin(), src[i].items->end(), item)) return i;
+    return first_src[r];
+  }
+  const std::vector<std::vector<Tri>>& states(uint32_t i) const { return *src[i].states; }
+  int32_t var(uint32_t i) const { return var_of_src[i]; }
   void add_constant(double v) { g.constant = combine(d.combine, g.constant, v); }
-  // A term of region r that depends on its state only.
-  void add_unary(uint32_t r, uint32_t s, double v, bool count) {
-    const int32_t x = var(r);
+  // A term of source i that depends on its state only.
+  void add_unary(uint32_t i, uint32_t s, double v, bool count) {
+    const int32_t x = var(i);
     if (x < 0) return add_constant(v);
     g.unary[x][s] = combine(d.combine, g.unary[x][s], v);
     g.unary_terms[x] += count;
   }
 
   void triangle_terms() {
-    for (uint32_t r = 0; r < R.regions.size(); ++r)
-      for (uint32_t s = 0; s < R.regions[r].states.size(); ++s)
-        for (const Tri& t : R.regions[r].states[s]) add_unary(r, s, d.triangle(dt, t), s == 0);
+    for (uint32_t r = 0; r < R.regions.size(); ++r) {
+      const uint32_t i = first_src[r];
+      for (uint32_t s = 0; s < states(i).size(); ++s)
+        for (const Tri& t : states(i)[s]) add_unary(i, s, d.triangle(dt, t), s == 0);
+    }
   }
 
   void edge_terms() {
+    // Fixed edges with one region on both sides: with the other fixed edges below
+    // (their sides may be read through different views).
+    std::unordered_set<uint64_t> self_fixed;
+    for (uint32_t e = 0; e < dt.halfedges.size(); ++e) {
+      const int32_t f = dt.halfedges[e];
+      if (f >= 0 && R.fixed[e] && R.region_of_triangle[e / 3] == R.region_of_triangle[static_cast<uint32_t>(f) / 3])
+        self_fixed.insert(edge_key(std::min(dt.origin(e), dt.target(e)), std::max(dt.origin(e), dt.target(e))));
+    }
     // Edges inside a region: both triangles are the region's.
     for (uint32_t r = 0; r < R.regions.size(); ++r)
-      for (uint32_t s = 0; s < R.regions[r].states.size(); ++s) {
+      for (uint32_t s = 0, i = first_src[r]; s < states(i).size(); ++s) {
         tick(r, static_cast<double>(R.regions.size()));
-        const auto& tris = R.regions[r].states[s];
+        const auto& tris = states(i)[s];
         for (const Tri& t : tris)
           for (int i = 0; i < 3; ++i) {
             const uint32_t u = t[i], v = t[(i + 1) % 3];
-            if (u > v) continue;
+            if (u > v || (!self_fixed.empty() && self_fixed.count(edge_key(u, v)))) continue;
             const uint32_t x = apex_of(tris, v, u);
-            if (x != kNoApex) add_unary(r, s, edge_term(d, dt, u, v, t[(i + 2) % 3], x), s == 0);
+            if (x != kNoApex) add_unary(first_src[r], s, edge_term(d, dt, u, v, t[(i + 2) % 3], x), s == 0);
           }
       }
     // Fixed edges between regions, and hull edges.
@@ -128,15 +160,22 @@ struct Builder {
       tick(e, static_cast<double>(dt.halfedges.size()));
       const int32_t f = dt.halfedges[e];
       const uint32_t u = dt.origin(e), v = dt.target(e), r1 = R.region_of_triangle[e / 3];
-      const auto& s1 = R.regions[r1].states;
       if (f < 0) {
         if (interior_only(d.site)) continue;
-        for (uint32_t s = 0; s < s1.size(); ++s) add_unary(r1, s, edge_term(d, dt, u, v, apex_of(s1[s], u, v), kNoApex), s == 0);
+        const auto& s1 = states(first_src[r1]);
+        for (uint32_t s = 0; s < s1.size(); ++s)
+          add_unary(first_src[r1], s, edge_term(d, dt, u, v, apex_of(s1[s], u, v), kNoApex), s == 0);
         continue;
       }
       const uint32_t r2 = R.region_of_triangle[static_cast<uint32_t>(f) / 3];
-      if (f < static_cast<int32_t>(e) || r1 == r2) continue;  // once; inside a region: done above
-      const auto& s2 = R.regions[r2].states;
+      if (f < static_cast<int32_t>(e) || (r1 == r2 && !R.fixed[e])) continue;  // once; inside a region: done above
+      const uint32_t i1 = source(r1, RegionTerms::edge_item(u, v)), i2 = source(r2, RegionTerms::edge_item(v, u));
+      const auto &s1 = states(i1), &s2 = states(i2);
+      if (i1 == i2) {  // both sides read from the same states
+        for (uint32_t s = 0; s < s1.size(); ++s)
+          add_unary(i1, s, edge_term(d, dt, u, v, apex_of(s1[s], u, v), apex_of(s1[s], v, u)), s == 0);
+        continue;
+      }
       // Apex classes on each side.
       auto classes = [&](const std::vector<std::vector<Tri>>& states, uint32_t a, uint32_t b, std::vector<uint32_t>& apex) {
         std::vector<uint32_t> cls(states.size());
@@ -150,12 +189,12 @@ struct Builder {
       };
       std::vector<uint32_t> a1, a2;
       std::vector<uint32_t> c1 = classes(s1, u, v, a1), c2 = classes(s2, v, u, a2);
-      const int32_t x1 = var(r1), x2 = var(r2);
+      const int32_t x1 = var(i1), x2 = var(i2);
       if (x1 < 0 || x2 < 0) {  // at most one side has a choice: a unary term
         const bool left = x1 >= 0;
         const auto& cls = left ? c1 : c2;
         for (uint32_t s = 0; s < cls.size(); ++s)
-          add_unary(left ? r1 : r2, s,
+          add_unary(left ? i1 : i2, s,
                     edge_term(d, dt, u, v, a1[left ? cls[s] : 0], a2[left ? 0 : cls[s]]), s == 0);
         continue;
       }
@@ -170,11 +209,11 @@ struct Builder {
   }
 
   void vertex_terms(double max_factor) {
-    std::vector<Fans> fans(R.regions.size());
-    std::vector<uint8_t> have(R.regions.size(), 0);
-    auto fans_at = [&](uint32_t r) -> const Fans& {
-      if (!have[r]) fans[r] = fans_of(dt, d, R.regions[r], [&] { tick(r, R.regions.size()); }), have[r] = 1;
-      return fans[r];
+    std::vector<Fans> fans(src.size());
+    std::vector<uint8_t> have(src.size(), 0);
+    auto fans_at = [&](uint32_t i) -> const Fans& {
+      if (!have[i]) fans[i] = fans_of(dt, d, states(i), [&] { tick(i, src.size()); }), have[i] = 1;
+      return fans[i];
     };
     std::vector<uint8_t> on_hull(dt.num_vertices(), 0);
     for (uint32_t v : dt.hull) on_hull[v] = 1;
@@ -188,6 +227,7 @@ struct Builder {
       for (uint32_t i = st.tri_offset[v]; i < st.tri_offset[v + 1]; ++i) around.push_back(R.region_of_triangle[st.triangle[i]]);
       std::sort(around.begin(), around.end());
       around.erase(std::unique(around.begin(), around.end()), around.end());
+      for (uint32_t& r : around) r = source(r, RegionTerms::vertex_item(v));  // (regions become sources)
       // Fixed fans, and the regions with a choice with their fan classes.
       std::vector<Tri> fixed;
       std::vector<uint32_t> choice_regions, local;
@@ -225,7 +265,7 @@ struct Builder {
         const Fans& f = fans[r];
         std::vector<double> by_class(f.fan[local[0]].size());
         for (uint32_t c = 0; c < by_class.size(); ++c) by_class[c] = term({c});
-        for (uint32_t s = 0; s < R.regions[r].states.size(); ++s) add_unary(r, s, by_class[f.class_of[local[0]][s]], s == 0);
+        for (uint32_t s = 0; s < states(r).size(); ++s) add_unary(r, s, by_class[f.class_of[local[0]][s]], s == 0);
         continue;
       }
       StateFactor fac;
@@ -252,25 +292,36 @@ struct Builder {
 }  // namespace
 
 RegionModel region_model(const Mesh& dt, const Regions& R, Objective o, const RegionModelLimits& limits,
-                         const Progress& progress) {
+                         const Progress& progress, const std::vector<std::vector<RegionView>>* views) {
   const ObjectiveTerms& d = objective_terms(o);
   RegionModel M;
   StateGraph& g = M.graph;
   g.combine = d.combine;
   g.sense = info(o).sense;
   g.term_max = d.term_max;
+  Builder b{dt, R, d, M, g, progress, {}, {}, {}};
   M.variable_of_region.assign(R.regions.size(), -1);
   for (uint32_t r = 0; r < R.regions.size(); ++r) {
     const Region& region = R.regions[r];
-    if (region.states.size() < 2 && region.complete) continue;
-    M.variable_of_region[r] = static_cast<int32_t>(M.region_of_variable.size());
-    M.region_of_variable.push_back(r);
-    g.domain.push_back(static_cast<uint32_t>(region.states.size()));
-    g.unary.emplace_back(region.states.size(), 0.0);
-    g.unary_terms.push_back(0);
-    g.partial.push_back(!region.complete);
+    b.first_src.push_back(static_cast<uint32_t>(b.src.size()));
+    const bool split = views && !(*views)[r].empty();
+    if (!split) b.src.push_back({r, &region.states, nullptr});
+    else
+      for (const RegionView& view : (*views)[r]) b.src.push_back({r, &view.states, &view.items});
+    for (uint32_t i = b.first_src[r]; i < b.src.size(); ++i) {
+      const size_t n = b.states(i).size();
+      const bool partial = !split && !region.complete;
+      b.var_of_src.push_back(-1);
+      if (n < 2 && !partial) continue;
+      b.var_of_src.back() = static_cast<int32_t>(M.region_of_variable.size());
+      if (i == b.first_src[r]) M.variable_of_region[r] = b.var_of_src.back();
+      M.region_of_variable.push_back(r);
+      g.domain.push_back(static_cast<uint32_t>(n));
+      g.unary.emplace_back(n, 0.0);
+      g.unary_terms.push_back(0);
+      g.partial.push_back(partial);
+    }
   }
-  Builder b{dt, R, d, M, g, progress};
   if (vertex_site(d.site)) b.vertex_terms(limits.max_factor);
   else if (edge_site(d.site)) b.edge_terms();
   else b.triangle_terms();

@@ -233,6 +233,38 @@ double RegionTerms::inside_edge(uint32_t u, uint32_t v, uint32_t w, uint32_t x) 
   return clip(u < v ? edge_term(d_, dt_, u, v, w, x) : edge_term(d_, dt_, v, u, x, w));
 }
 
+Tri RegionTerms::vertex_item(uint32_t v) { return {kVertexEntry, v, 0}; }
+Tri RegionTerms::edge_item(uint32_t u, uint32_t v) { return {kEdgeEntry, u, v}; }
+Tri RegionTerms::item_of(const SignatureEntry& entry) {
+  const Tri& h = entry[0];
+  return h[0] == kVertexEntry ? vertex_item(h[1]) : h;
+}
+
+std::vector<Tri> RegionTerms::items(uint32_t r) const {
+  std::vector<Tri> out;
+  for (auto [u, v] : R_.regions[r].boundary) {
+    if (reads_vertices() && shared_[u]) out.push_back(vertex_item(u));
+    if (!reads_apexes()) continue;
+    const int32_t f = dt_.halfedges[boundary_.at(edge_key(u, v))];
+    if (f >= 0 && R_.regions[R_.region_of_triangle[static_cast<uint32_t>(f) / 3]].delaunay_triangles.size() > 1)
+      out.push_back(edge_item(u, v));
+  }
+  // Shared vertices inside the region (touching a fixed edge that ends inside it).
+  if (reads_vertices())
+    for (const Tri& t : R_.regions[r].states[0])
+      for (uint32_t v : t)
+        if (shared_[v]) out.push_back(vertex_item(v));
+  std::vector<Tri> seen;
+  std::vector<Tri> unique;
+  for (const Tri& i : out) {
+    const auto it = std::lower_bound(seen.begin(), seen.end(), i);
+    if (it != seen.end() && *it == i) continue;
+    seen.insert(it, i);
+    unique.push_back(i);
+  }
+  return unique;
+}
+
 StateKey RegionTerms::key(uint32_t r, const std::vector<Tri>& tris) const {
   StateKey key;
   SignatureEntry entry;

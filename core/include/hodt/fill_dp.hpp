@@ -29,8 +29,11 @@ struct BestFill {
 
 // One best fill per signature, or nothing when more than max_states partial
 // fills would be kept in all (*states_used counts them either way).
+// keep_items (sorted RegionTerms items): signatures keep only the entries about
+// these, the others' terms count as 0 (region_views.hpp); all when null.
 std::optional<std::vector<BestFill>> best_fills(const Mesh& delaunay, const Candidates& candidates,
                                                 const RegionTerms& terms, uint32_t region, uint64_t max_states,
-                                                const Progress& progress = {}, uint64_t* states_used = nullptr);
+                                                const Progress& progress = {}, uint64_t* states_used = nullptr,
+                                                const std::vector<Tri>* keep_items = nullptr);
 
 }  // namespace hodt

@@ -4,8 +4,14 @@
 // can see: a vertex term over the regions around the vertex (through the fan each
 // state puts at the vertex), an edge term on a fixed edge over the regions on its
 // two sides (through the apex), everything inside one region as its unary.
+//
+// A relaxation may read some regions through views (region_views.hpp): one
+// variable per view, each item's terms read from the view that speaks for it, the
+// region's own terms from its first view. Its optimum bounds the true one; its
+// assignments are not triangulations (region_states reads first views only).
 #pragma once
 #include "hodt/objectives.hpp"
+#include "hodt/region_views.hpp"
 #include "hodt/regions.hpp"
 #include "hodt/state_graph.hpp"
 
@@ -25,7 +31,9 @@ struct RegionModelLimits {
   double max_factor = 1 << 20;  // entries of one vertex factor; larger ones are relaxed
 };
 
+// views: per region, nothing or its views (a relaxation, as above).
 RegionModel region_model(const Mesh& delaunay, const Regions& regions, Objective o,
-                         const RegionModelLimits& limits = {}, const Progress& progress = {});
+                         const RegionModelLimits& limits = {}, const Progress& progress = {},
+                         const std::vector<std::vector<RegionView>>* views = nullptr);
 
 }  // namespace hodt

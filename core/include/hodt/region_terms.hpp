@@ -96,6 +96,15 @@ class RegionTerms {
   // A whole triangulation of region r (counterclockwise triangles).
   StateKey key(uint32_t r, const std::vector<Tri>& triangulation) const;
 
+  // The items a signature speaks of: a shared vertex, or a boundary edge (region
+  // on its left) whose apex the region beside sees. Each entry is about one item.
+  static Tri vertex_item(uint32_t v);
+  static Tri edge_item(uint32_t u, uint32_t v);
+  static Tri item_of(const SignatureEntry& entry);
+  // The items region r's signatures may have entries for, in boundary order
+  // (neighbours along the boundary stay close), sorted by nothing else.
+  std::vector<Tri> items(uint32_t r) const;
+
  private:
   double clip(double term) const { return d_.combine == TermCombine::Max && term < floor_ ? floor_ : term; }
   double fixed_terms_max() const;

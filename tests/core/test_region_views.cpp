@@ -1,0 +1,71 @@
+// Region views (region_views.hpp): a model that reads regions through views
+// bounds the optimum from the right side for every grouping of the items, and
+// equals it when each region has a single view (the whole signature).
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "generators.hpp"
+#include "hodt/delaunay.hpp"
+#include "hodt/k_order.hpp"
+#include "hodt/points.hpp"
+#include "hodt/region_model.hpp"
+#include "hodt/region_views.hpp"
+#include "hodt/regions.hpp"
+
+using namespace hodt;
+using namespace hodt::test;
+
+namespace {
+
+bool close(double a, double b) { return a == b || std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
+
+// The optimum of the model reading every region with a choice through views of
+// at most `group` items each.
+double views_optimum(const Mesh& dt, const Regions& R, const Candidates& cand, const RegionTerms& T, Objective o,
+                     uint64_t group) {
+  std::vector<std::vector<RegionView>> views(R.regions.size());
+  RegionViewLimits vl;
+  vl.max_items = group;
+  vl.max_states = 2'000'000;
+  vl.max_listed = 1'000'000;
+  for (uint32_t r = 0; r < R.regions.size(); ++r) {
+    if (R.regions[r].delaunay_triangles.size() < 2) continue;
+    auto v = region_views(dt, cand, T, r, vl);
+    REQUIRE(v);
+    views[r] = std::move(*v);
+  }
+  return solve_states(region_model(dt, R, o, {}, {}, &views).graph).value;
+}
+
+}  // namespace
+
+TEST_CASE("region views: one view per region is exact, smaller groups bound the optimum") {
+  uint64_t checked = 0, strict = 0;
+  for (uint64_t seed = 1; seed <= 150; ++seed) {
+    const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 5 + 2, 1)).xyz));
+    const Mesh& dt = fo.base;
+    for (uint32_t k : {2u, 3u, 4u}) {
+      const Regions R = k_order_skeleton(dt, k);
+      const Candidates cand = k_order_candidates(dt, k, R.useful);
+      for (const auto& oi : objectives()) {
+        SolveOptions bf;
+        bf.method = Method::BruteForce;
+        const double opt = solve_k_order(fo, oi.objective, k, bf).value;
+        const RegionTerms T(dt, R, oi.objective, &cand);
+        CAPTURE(seed);
+        CAPTURE(k);
+        CAPTURE(std::string(oi.id));
+        CHECK(close(views_optimum(dt, R, cand, T, oi.objective, UINT64_MAX), opt));
+        for (uint64_t group : {1u, 2u, 3u}) {
+          const double bound = views_optimum(dt, R, cand, T, oi.objective, group);
+          CHECK((close(bound, opt) || better(oi.sense, bound, opt)));
+          strict += !close(bound, opt);
+          ++checked;
+        }
+      }
+    }
+  }
+  MESSAGE(checked << " bounds, " << strict << " strictly weaker than the optimum");
+  CHECK(strict > 0);  // (smaller groups do relax: the test sees both sides)
+}
