@@ -11,7 +11,7 @@
 #include "hodt/higher_order.hpp"
 #include "hodt/pair_measures.hpp"
 #include "hodt/region_model.hpp"
-#include "hodt/region_views.hpp"
+#include "hodt/view_bound.hpp"
 #include "hodt/region_terms.hpp"
 #include "hodt/regions.hpp"
 #include "hodt/solve_options.hpp"
@@ -138,25 +138,6 @@ std::string region_summary(const Regions& R) {
   return std::to_string(choice) + " regions with a choice (up to " + std::to_string(largest) + " triangulations each)";
 }
 
-// A proven bound on the optimum: the relaxation of the model, and of the model
-// that reads each region too large to list through its views (region_views.hpp),
-// whichever is tighter.
-double views_bound(const Mesh& dt, const Regions& R, Objective o, const Candidates& cand, const RegionTerms& terms,
-                   const RegionModel& model, const StateDpLimits& dl, const RegionLimits& rl) {
-  double bound = relaxation_bound(model.graph, dl);
-  std::vector<std::vector<RegionView>> views(R.regions.size());
-  bool any = false;
-  RegionViewLimits vl;
-  vl.progress = rl.progress;
-  for (uint32_t r = 0; r < R.regions.size(); ++r) {
-    if (R.regions[r].complete || R.regions[r].delaunay_triangles.size() > rl.max_region_triangles) continue;
-    if (auto v = region_views(dt, cand, terms, r, vl)) views[r] = std::move(*v), any = true;
-  }
-  if (!any) return bound;
-  const double b = relaxation_bound(region_model(dt, R, o, {}, rl.progress, &views).graph, dl);
-  return better(info(o).sense, bound, b) ? b : bound;
-}
-
 // bounded: whether a heuristic answer needs its bound (the ladder's lower
 // orders serve only as starts).
 KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes,
@@ -242,7 +223,22 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   }
   r.method = "heuristic";
   if (!bounded) return r;  // (not optimal: nothing proven)
-  const double bound = views_bound(dt, R, o, cand, terms, model, dl, rl);
+  // The bound: the model's relaxation, or the tighter one that reads the regions
+  // too large to list through their views; when those views agree, a
+  // triangulation that meets it.
+  double bound = relaxation_bound(model.graph, dl);
+  ViewBoundLimits vl;
+  vl.views.progress = vl.dp.progress = options.progress;
+  const bool met = !better(info(o).sense, bound, r.value);
+  if (const auto vb = met ? std::nullopt : view_bound(dt, R, o, cand, terms, rl.max_region_triangles, r.value, vl)) {
+    if (better(info(o).sense, bound, vb->bound)) bound = vb->bound;
+    if (vb->realised && !better(info(o).sense, r.value, vb->bound)) {
+      r.triangulation = *vb->realised;
+      r.value = evaluate(o, r.triangulation);
+      how += ", then the regions' views (" + std::to_string(vb->split_regions) + " regions, " +
+             std::to_string(vb->rounds) + " rounds)";
+    }
+  }
   r.bound = info(o).sense == Sense::Min ? std::min(bound, r.value) : std::max(bound, r.value);
   r.optimal = *r.bound == r.value;
   if (r.optimal) r.bound.reset();

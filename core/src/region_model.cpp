@@ -316,6 +316,7 @@ RegionModel region_model(const Mesh& dt, const Regions& R, Objective o, const Re
       b.var_of_src.back() = static_cast<int32_t>(M.region_of_variable.size());
       if (i == b.first_src[r]) M.variable_of_region[r] = b.var_of_src.back();
       M.region_of_variable.push_back(r);
+      M.view_of_variable.push_back(i - b.first_src[r]);
       g.domain.push_back(static_cast<uint32_t>(n));
       g.unary.emplace_back(n, 0.0);
       g.unary_terms.push_back(0);

@@ -16,7 +16,7 @@ std::optional<std::vector<RegionView>> region_views(const Mesh& dt, const Candid
     view.items.assign(items.begin() + static_cast<std::ptrdiff_t>(a), items.begin() + static_cast<std::ptrdiff_t>(b));
     std::sort(view.items.begin(), view.items.end());
     std::optional<std::vector<BestFill>> fills;
-    if (b - a <= limits.max_items) fills = best_fills(dt, cand, terms, r, limits.max_states, limits.progress, nullptr, &view.items);
+    if (b - a <= limits.max_items) fills = best_fills(dt, cand, terms, r, limits.max_states, limits.progress, limits.states_used, &view.items);
     if (fills && fills->size() <= limits.max_listed) {
       for (BestFill& f : *fills) view.states.push_back(std::move(f.triangles));
       views.push_back(std::move(view));

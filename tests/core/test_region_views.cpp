@@ -11,6 +11,9 @@
 #include "hodt/points.hpp"
 #include "hodt/region_model.hpp"
 #include "hodt/region_views.hpp"
+#include "hodt/view_bound.hpp"
+#include "hodt/higher_order.hpp"
+#include "hodt/mesh.hpp"
 #include "hodt/regions.hpp"
 
 using namespace hodt;
@@ -68,4 +71,51 @@ TEST_CASE("region views: one view per region is exact, smaller groups bound the 
   }
   MESSAGE(checked << " bounds, " << strict << " strictly weaker than the optimum");
   CHECK(strict > 0);  // (smaller groups do relax: the test sees both sides)
+}
+
+TEST_CASE("view bound: regions left incomplete are bounded through views, and a realised triangulation is optimal") {
+  uint64_t bounded = 0, realised = 0;
+  for (uint64_t seed = 1; seed <= 80; ++seed) {
+    const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 11 + 3, 1)).xyz));
+    const Mesh& dt = fo.base;
+    for (uint32_t k : {3u, 4u}) {
+      const Regions skeleton = k_order_skeleton(dt, k);
+      const Candidates cand = k_order_candidates(dt, k, skeleton.useful);
+      for (const auto& oi : objectives()) {
+        Regions R = skeleton;
+        const RegionTerms T(dt, R, oi.objective, &cand);
+        RegionLimits rl;  // tiny budgets: most regions with a choice stay incomplete
+        rl.terms = &T;
+        rl.candidates = &cand;
+        rl.first_pass_states = rl.max_states_per_region_dp = 3;
+        rl.max_fills_per_region = 2;
+        rl.max_states_per_region = 2;
+        rl.max_nodes_per_region = rl.first_pass_nodes = 3;
+        enumerate_regions(dt, R, rl);
+        if (!R.incomplete) continue;
+        ViewBoundLimits vl;
+        vl.views.max_states = 400;  // small views: several rounds
+        vl.views.max_listed = 50;
+        const auto vb = view_bound(dt, R, oi.objective, cand, T, 64, {}, vl);
+        if (!vb) continue;
+        SolveOptions bf;
+        bf.method = Method::BruteForce;
+        const double opt = solve_k_order(fo, oi.objective, k, bf).value;
+        CAPTURE(seed);
+        CAPTURE(k);
+        CAPTURE(std::string(oi.id));
+        CHECK((close(vb->bound, opt) || better(oi.sense, vb->bound, opt)));
+        ++bounded;
+        if (vb->realised) {
+          ++realised;
+          CHECK(is_k_order(*vb->realised, dt, k));
+          CHECK(validate(*vb->realised) == "");
+          CHECK(close(evaluate(oi.objective, *vb->realised), opt));
+        }
+      }
+    }
+  }
+  MESSAGE(bounded << " bounds, " << realised << " realised");
+  CHECK(bounded > 100);
+  CHECK(realised > 10);
 }

@@ -21,6 +21,7 @@ struct RegionModel {
   StateGraph graph;
   std::vector<uint32_t> region_of_variable;
   std::vector<int32_t> variable_of_region;  // -1 for a region with one state
+  std::vector<uint32_t> view_of_variable;   // with views: which of its region's views (else 0)
   // Per region, its state for an assignment of the variables.
   std::vector<uint32_t> region_states(const std::vector<uint32_t>& variable_state) const;
   // The variables' states for per-region states.

@@ -25,9 +25,10 @@ struct RegionView {
 };
 
 struct RegionViewLimits {
-  uint64_t max_states = 20'000;  // partial fills of one view's DP
+  uint64_t max_states = 100'000;  // partial fills of one view's DP
   uint64_t max_listed = 2'000;   // triangulations kept per view
   uint64_t max_items = UINT64_MAX;  // items per group (tests force small groups)
+  uint64_t* states_used = nullptr;  // adds the partial fills of every DP tried
   Progress progress;
 };
 

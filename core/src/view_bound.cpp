@@ -1,0 +1,113 @@
+#include "hodt/view_bound.hpp"
+
+#include <algorithm>
+
+#include "hodt/error.hpp"
+#include "hodt/k_order.hpp"
+
+namespace hodt {
+
+namespace {
+
+// The entries of a triangulation's signature about the given (sorted) items.
+std::vector<SignatureEntry> entries_about(const RegionTerms& T, uint32_t r, const std::vector<Tri>& tris,
+                                          const std::vector<Tri>& items) {
+  std::vector<SignatureEntry> out;
+  for (SignatureEntry& e : T.key(r, tris).signature)
+    if (std::binary_search(items.begin(), items.end(), RegionTerms::item_of(e))) out.push_back(std::move(e));
+  return out;
+}
+
+size_t largest_group(const std::vector<RegionView>& views) {
+  size_t g = 1;
+  for (const RegionView& v : views) g = std::max(g, v.items.size());
+  return g;
+}
+
+}  // namespace
+
+std::optional<ViewBound> view_bound(const Mesh& dt, const Regions& R, Objective o, const Candidates& cand,
+                                    const RegionTerms& T, uint32_t max_region_triangles, std::optional<double> known,
+                                    const ViewBoundLimits& limits) {
+  const size_t n = R.regions.size();
+  std::vector<std::vector<RegionView>> views(n);
+  std::vector<RegionViewLimits> per(n, limits.views);  // each region's current limits
+  std::vector<uint8_t> refine(n, 0), retry(n, 0);  // retry: its views did not fit, try again with more
+  for (uint32_t r = 0; r < n; ++r) {
+    refine[r] = !R.regions[r].complete && R.regions[r].delaunay_triangles.size() <= max_region_triangles;
+    // (its whole signature did not fit: start from halves)
+    if (refine[r]) per[r].max_items = std::min<uint64_t>(per[r].max_items, (T.items(r).size() + 1) / 2);
+  }
+  uint64_t used = 0;
+  for (auto& p : per) p.states_used = &used;
+  std::optional<ViewBound> out;
+  for (uint32_t round = 0; round < limits.max_rounds && used < limits.max_total_states; ++round) {
+    bool any = false;
+    for (uint32_t r = 0; r < n; ++r) {
+      if ((!refine[r] && !retry[r]) || used >= limits.max_total_states) continue;  // (over budget: left as they are)
+      retry[r] = 0;
+      if (auto v = region_views(dt, cand, T, r, per[r])) views[r] = std::move(*v), any = true;
+      else retry[r] = 1, per[r].max_states *= 4, any = true;
+    }
+    if (!any) break;
+    const RegionModel M = region_model(dt, R, o, {}, limits.views.progress, &views);
+    StateDpResult sol;
+    try {
+      sol = solve_states(relaxation(M.graph), limits.dp);
+    } catch (const LimitError&) {
+      break;
+    }
+    ViewBound b;
+    // (each round's relaxation is a bound: the tightest holds)
+    b.bound = out && better(info(o).sense, sol.value, out->bound) ? out->bound : sol.value;
+    b.rounds = round + 1;
+    // Per region, the triangles the solution gives it; which regions disagree.
+    std::vector<Tri> tris;
+    bool realised = true;
+    std::fill(refine.begin(), refine.end(), 0);
+    std::vector<const std::vector<Tri>*> chosen(n, nullptr);
+    for (uint32_t r = 0; r < n; ++r) chosen[r] = &R.regions[r].states[0];
+    std::vector<std::vector<const std::vector<Tri>*>> of_view(n);
+    for (size_t x = 0; x < M.region_of_variable.size(); ++x) {
+      const uint32_t r = M.region_of_variable[x];
+      if (M.graph.partial[x]) {
+        realised = false;  // (a region neither listed nor read through views)
+        continue;
+      }
+      const auto& states = views[r].empty() ? R.regions[r].states : views[r][M.view_of_variable[x]].states;
+      const std::vector<Tri>* s = &states[sol.state[x]];
+      if (views[r].empty()) chosen[r] = s;
+      else of_view[r].resize(views[r].size(), nullptr), of_view[r][M.view_of_variable[x]] = s;
+    }
+    for (uint32_t r = 0; r < n; ++r) {
+      if (views[r].empty()) continue;
+      ++b.split_regions;
+      // (a view with one state has no variable: that state)
+      of_view[r].resize(views[r].size(), nullptr);
+      for (size_t j = 0; j < views[r].size(); ++j)
+        if (!of_view[r][j]) of_view[r][j] = &views[r][j].states[0];
+      chosen[r] = of_view[r][0];
+      for (size_t j = 1; j < views[r].size() && !refine[r]; ++j)
+        refine[r] = entries_about(T, r, *of_view[r][0], views[r][j].items) !=
+                    entries_about(T, r, *of_view[r][j], views[r][j].items);
+      if (refine[r]) {
+        realised = false;
+        per[r].max_items = 2 * largest_group(views[r]);
+        per[r].max_states *= 2;
+        per[r].max_listed *= 2;
+      }
+    }
+    if (realised) {
+      for (uint32_t r = 0; r < n; ++r) tris.insert(tris.end(), chosen[r]->begin(), chosen[r]->end());
+      Mesh m = mesh_of(dt.coords, tris);
+      // (equal up to the rounding of sums taken in another order)
+      const double v = evaluate(o, m);
+      if (!better(info(o).sense, b.bound, v)) b.bound = v, b.realised = std::move(m);
+    }
+    out = std::move(b);
+    if (out->realised || (known && !better(info(o).sense, out->bound, *known))) break;  // nothing left to prove
+  }
+  return out;
+}
+
+}  // namespace hodt
