@@ -11,10 +11,10 @@
 #include "hodt/higher_order.hpp"
 #include "hodt/pair_measures.hpp"
 #include "hodt/region_model.hpp"
-#include "hodt/view_bound.hpp"
 #include "hodt/region_terms.hpp"
 #include "hodt/regions.hpp"
 #include "hodt/solve_options.hpp"
+#include "hodt/view_bound.hpp"
 
 namespace hodt {
 
@@ -231,10 +231,10 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   vl.views.progress = vl.dp.progress = options.progress;
   const bool met = !better(info(o).sense, bound, r.value);
   if (const auto vb = met ? std::nullopt : view_bound(dt, R, o, cand, terms, rl.max_region_triangles, r.value, vl)) {
-    if (better(info(o).sense, bound, vb->bound)) bound = vb->bound;
+    bound = tighter(info(o).sense, bound, vb->bound);
     if (vb->realised && !better(info(o).sense, r.value, vb->bound)) {
       r.triangulation = *vb->realised;
-      r.value = evaluate(o, r.triangulation);
+      r.value = vb->bound;  // (its value, evaluated)
       how += ", then the regions' views (" + std::to_string(vb->split_regions) + " regions, " +
              std::to_string(vb->rounds) + " rounds)";
     }

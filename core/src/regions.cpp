@@ -148,7 +148,7 @@ void enumerate_regions(const Mesh& dt, Regions& out, const RegionLimits& limits)
     region.complete = true;
     for (BestFill& f : *fills) {
       if (f.triangles == region.states[0]) continue;
-      if (region.states.size() >= limits.max_fills_per_region) {  // too many interfaces: the best ones
+      if (region.states.size() >= limits.max_states_per_region) {  // too many interfaces: the best ones
         region.complete = false;
         break;
       }

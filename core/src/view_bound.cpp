@@ -58,38 +58,28 @@ std::optional<ViewBound> view_bound(const Mesh& dt, const Regions& R, Objective 
       break;
     }
     ViewBound b;
-    // (each round's relaxation is a bound: the tightest holds)
-    b.bound = out && better(info(o).sense, sol.value, out->bound) ? out->bound : sol.value;
+    b.bound = out ? tighter(info(o).sense, out->bound, sol.value) : sol.value;  // (every round's is a bound)
     b.rounds = round + 1;
-    // Per region, the triangles the solution gives it; which regions disagree.
-    std::vector<Tri> tris;
+    // The solution's state of each region's list, or of each of its views (0
+    // where a list or view has no variable: one state).
     bool realised = true;
-    std::fill(refine.begin(), refine.end(), 0);
-    std::vector<const std::vector<Tri>*> chosen(n, nullptr);
-    for (uint32_t r = 0; r < n; ++r) chosen[r] = &R.regions[r].states[0];
-    std::vector<std::vector<const std::vector<Tri>*>> of_view(n);
+    std::vector<std::vector<uint32_t>> pick(n);
+    for (uint32_t r = 0; r < n; ++r) pick[r].assign(std::max<size_t>(1, views[r].size()), 0);
     for (size_t x = 0; x < M.region_of_variable.size(); ++x) {
-      const uint32_t r = M.region_of_variable[x];
-      if (M.graph.partial[x]) {
-        realised = false;  // (a region neither listed nor read through views)
-        continue;
-      }
-      const auto& states = views[r].empty() ? R.regions[r].states : views[r][M.view_of_variable[x]].states;
-      const std::vector<Tri>* s = &states[sol.state[x]];
-      if (views[r].empty()) chosen[r] = s;
-      else of_view[r].resize(views[r].size(), nullptr), of_view[r][M.view_of_variable[x]] = s;
+      if (M.graph.partial[x]) realised = false;  // (a region neither listed nor read through views)
+      else pick[M.region_of_variable[x]][M.view_of_variable[x]] = sol.state[x];
     }
+    auto state = [&](uint32_t r, size_t j) -> const std::vector<Tri>& {
+      return views[r].empty() ? R.regions[r].states[pick[r][0]] : views[r][j].states[pick[r][j]];
+    };
+    // Regions whose first view disagrees with another view on that view's items.
+    std::fill(refine.begin(), refine.end(), 0);
     for (uint32_t r = 0; r < n; ++r) {
       if (views[r].empty()) continue;
       ++b.split_regions;
-      // (a view with one state has no variable: that state)
-      of_view[r].resize(views[r].size(), nullptr);
-      for (size_t j = 0; j < views[r].size(); ++j)
-        if (!of_view[r][j]) of_view[r][j] = &views[r][j].states[0];
-      chosen[r] = of_view[r][0];
       for (size_t j = 1; j < views[r].size() && !refine[r]; ++j)
-        refine[r] = entries_about(T, r, *of_view[r][0], views[r][j].items) !=
-                    entries_about(T, r, *of_view[r][j], views[r][j].items);
+        refine[r] = entries_about(T, r, state(r, 0), views[r][j].items) !=
+                    entries_about(T, r, state(r, j), views[r][j].items);
       if (refine[r]) {
         realised = false;
         per[r].max_items = 2 * largest_group(views[r]);
@@ -97,10 +87,10 @@ std::optional<ViewBound> view_bound(const Mesh& dt, const Regions& R, Objective 
         per[r].max_listed *= 2;
       }
     }
-    if (realised) {
-      for (uint32_t r = 0; r < n; ++r) tris.insert(tris.end(), chosen[r]->begin(), chosen[r]->end());
+    if (realised) {  // the first views' triangulations: kept if (evaluated exactly) they meet the bound
+      std::vector<Tri> tris;
+      for (uint32_t r = 0; r < n; ++r) tris.insert(tris.end(), state(r, 0).begin(), state(r, 0).end());
       Mesh m = mesh_of(dt.coords, tris);
-      // (equal up to the rounding of sums taken in another order)
       const double v = evaluate(o, m);
       if (!better(info(o).sense, b.bound, v)) b.bound = v, b.realised = std::move(m);
     }

@@ -88,7 +88,6 @@ TEST_CASE("view bound: regions left incomplete are bounded through views, and a 
         rl.terms = &T;
         rl.candidates = &cand;
         rl.first_pass_states = rl.max_states_per_region_dp = 3;
-        rl.max_fills_per_region = 2;
         rl.max_states_per_region = 2;
         rl.max_nodes_per_region = rl.first_pass_nodes = 3;
         enumerate_regions(dt, R, rl);

@@ -45,6 +45,8 @@ std::string objective_ids();
 
 // Is value a strictly better than b for objective o?
 inline bool better(Sense s, double a, double b) { return s == Sense::Min ? a < b : a > b; }
+// Of two proven bounds on an optimum, the one closer to it (the less good value).
+inline double tighter(Sense s, double a, double b) { return better(s, a, b) ? b : a; }
 
 // The value of every objective on one triangulation (max over an empty set of
 // pairs is 0). Indexed by static_cast<size_t>(Objective).

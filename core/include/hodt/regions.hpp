@@ -59,8 +59,7 @@ struct RegionLimits {
   uint64_t first_pass_nodes = 5'000;
   uint64_t max_nodes_per_region = 300'000;
   uint64_t max_total_nodes = 1'500'000;
-  uint64_t max_states_per_region = 2'000;  // triangulations kept per region (enumerated)
-  uint64_t max_fills_per_region = 2'000;  // best fills (one per signature) kept per region
+  uint64_t max_states_per_region = 2'000;  // triangulations kept per region
   // Regions of more Delaunay triangles are not enumerated at all (each fill
   // costs its size, and their triangulations are astronomically many).
   uint32_t max_region_triangles = 64;

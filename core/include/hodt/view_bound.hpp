@@ -7,7 +7,7 @@
 // so in every region (and none is left unlisted), the states form a k-OD
 // triangulation whose value is the bound: it is optimal. Otherwise the regions
 // whose views disagree get larger groups (fewer, more exact views) and the model is
-// solved again, within a budget of rounds.
+// solved again, within a budget of rounds and of partial fills.
 #pragma once
 #include <optional>
 
