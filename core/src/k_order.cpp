@@ -205,8 +205,14 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     x = solve_states(model.graph, dl).state;
     how = "the best combination of the regions' listed triangulations";
   } catch (const LimitError&) {
+    // Local search, from the start and from the mini-bucket DP's assignment.
     x = improve_states(model.graph, model.variable_states(states_of(R, start)), options.progress);
     how = "local search from the first order optimum";
+    StateDpLimits mini = dl;
+    mini.mini_buckets = true;
+    const std::vector<uint32_t> y = improve_states(model.graph, solve_states(model.graph, mini).state, options.progress);
+    if (better(info(o).sense, evaluate_states(model.graph, y), evaluate_states(model.graph, x)))
+      x = y, how = "local search from the mini-bucket DP";
   }
   r.triangulation = R.triangulation(dt, model.region_states(x));
   r.value = evaluate(o, r.triangulation);

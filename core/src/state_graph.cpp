@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <map>
 #include <queue>
 #include <string>
+#include <unordered_map>
 
 #include "hodt/error.hpp"
 
@@ -29,13 +31,6 @@ size_t factor_index(const StateFactor& f, const std::vector<uint32_t>& state) {
   return idx;
 }
 
-// A table over variables (reduced states), read through per-variable maps.
-struct Table {
-  std::vector<uint32_t> vars;
-  std::vector<const std::vector<uint32_t>*> map;  // reduced state -> index digit (nullptr: identity)
-  std::vector<uint32_t> dims;
-  std::vector<double> values;
-};
 
 }  // namespace
 
@@ -148,122 +143,246 @@ StateGraph merge_states(StateGraph g, std::vector<std::vector<uint32_t>>& kept, 
   return h;
 }
 
-// Variable elimination over a min-degree-like order (fewest joint states first).
+// The classes of a variable's states that a set of maps cannot tell apart
+// (state -> class in `cls`); returns their number.
+uint32_t joint_classes(const std::vector<std::pair<const std::vector<uint32_t>*, uint32_t>>& maps, uint32_t dom,
+                       std::vector<uint32_t>& cls) {
+  cls.assign(dom, 0);
+  uint32_t count = 1;
+  std::vector<uint32_t> dense;
+  std::unordered_map<uint64_t, uint32_t> sparse;
+  for (const auto& [map, digits] : maps) {
+    uint32_t next = 0;
+    if (static_cast<uint64_t>(count) * digits <= 4 * static_cast<uint64_t>(dom) + 64) {
+      dense.assign(static_cast<size_t>(count) * digits, UINT32_MAX);
+      for (uint32_t s = 0; s < dom; ++s) {
+        uint32_t& id = dense[static_cast<size_t>(cls[s]) * digits + (*map)[s]];
+        if (id == UINT32_MAX) id = next++;
+        cls[s] = id;
+      }
+    } else {
+      sparse.clear();
+      for (uint32_t s = 0; s < dom; ++s) {
+        const auto [it, fresh] = sparse.try_emplace(static_cast<uint64_t>(cls[s]) << 32 | (*map)[s], next);
+        next += fresh;
+        cls[s] = it->second;
+      }
+    }
+    count = next;
+  }
+  return count;
+}
+
+// A table's shape: its variables, each read through a map from its states to
+// the table's digits (first variable fastest).
+struct Shape {
+  std::vector<uint32_t> vars;
+  std::vector<const std::vector<uint32_t>*> map;  // per variable: state -> digit
+  std::vector<uint32_t> dims;
+  bool live = true;
+};
+
+// Eliminating a variable: its bag is the variables of the live tables that read
+// it, each read through the joint classes of those tables' maps (states the bag
+// cannot tell apart are one digit), so its table is the product of the class
+// counts rather than of the domains.
+struct Bag {
+  std::vector<uint32_t> tables;
+  std::vector<uint32_t> vars;              // the eliminated variable first
+  std::vector<std::vector<uint32_t>> cls;  // per variable: state -> class
+  std::vector<uint32_t> count;             // classes per variable
+  double size = 1;
+};
+
+// An elimination order with its bags; table i < factors is factor i, the others
+// the messages, one per step that leaves variables (message[step]).
+struct Order {
+  std::vector<Shape> tables;
+  std::deque<Bag> steps;          // (a deque: messages point into the steps' classes)
+  std::vector<uint32_t> message;  // per step: the table it makes (UINT32_MAX: none)
+  double largest = 0, work = 0;
+  uint32_t width = 0;
+  bool mini_buckets = false;
+};
+
+// The bag of eliminating v from the given tables (all of which read it).
+Bag bag_over(const StateGraph& g, const Order& o, uint32_t v, std::vector<uint32_t> tables) {
+  Bag b;
+  b.tables = std::move(tables);
+  b.vars = {v};
+  std::vector<std::vector<std::pair<const std::vector<uint32_t>*, uint32_t>>> maps(1);
+  for (uint32_t t : b.tables) {
+    const Shape& tab = o.tables[t];
+    for (size_t j = 0; j < tab.vars.size(); ++j) {
+      const size_t p = static_cast<size_t>(std::find(b.vars.begin(), b.vars.end(), tab.vars[j]) - b.vars.begin());
+      if (p == b.vars.size()) b.vars.push_back(tab.vars[j]), maps.emplace_back();
+      maps[p].push_back({tab.map[j], tab.dims[j]});
+    }
+  }
+  b.cls.resize(b.vars.size());
+  for (size_t p = 0; p < b.vars.size(); ++p) {
+    b.count.push_back(joint_classes(maps[p], g.domain[b.vars[p]], b.cls[p]));
+    b.size *= b.count.back();
+  }
+  return b;
+}
+
+Bag bag_of(const StateGraph& g, const Order& o, const std::vector<std::vector<uint32_t>>& tables_of, uint32_t v) {
+  std::vector<uint32_t> live;
+  for (uint32_t t : tables_of[v])
+    if (o.tables[t].live) live.push_back(t);
+  return bag_over(g, o, v, std::move(live));
+}
+
+// Mini-buckets: the bag's tables split into groups whose bags fit under `cap`
+// (first fit; a table alone always fits: its bag is at most its size), each
+// eliminating v on its own. Optimising v separately per group can only do
+// better than one v for all, so the result bounds the optimum.
+std::vector<Bag> mini_buckets(const StateGraph& g, const Order& o, const Bag& bag, double cap) {
+  std::vector<Bag> groups;
+  for (uint32_t t : bag.tables) {
+    bool placed = false;
+    for (Bag& group : groups) {
+      std::vector<uint32_t> tables = group.tables;
+      tables.push_back(t);
+      Bag wider = bag_over(g, o, bag.vars[0], std::move(tables));
+      if (wider.size <= cap) {
+        group = std::move(wider);
+        placed = true;
+        break;
+      }
+    }
+    if (!placed) groups.push_back(bag_over(g, o, bag.vars[0], {t}));
+  }
+  return groups;
+}
+
+// A greedy order: the variable whose bag is smallest first. A bag over `cap`
+// stops the plan early (largest over the cap), or with `mini`, is split into
+// mini-buckets (the plan then bounds the optimum).
+Order plan_order(const StateGraph& g, double cap, bool mini, const Progress& progress) {
+  const uint32_t n = static_cast<uint32_t>(g.domain.size());
+  Order o;
+  std::vector<std::vector<uint32_t>> tables_of(n);
+  for (const StateFactor& f : g.factors) {
+    for (uint32_t x : f.scope) tables_of[x].push_back(static_cast<uint32_t>(o.tables.size()));
+    Shape s{f.scope, {}, f.dims};
+    for (const auto& p : f.project) s.map.push_back(&p);
+    o.tables.push_back(std::move(s));
+  }
+  std::vector<double> cost(n);
+  using Entry = std::pair<double, uint32_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
+  auto push = [&](uint32_t v) {
+    cost[v] = bag_of(g, o, tables_of, v).size;
+    heap.push({cost[v], v});
+  };
+  for (uint32_t v = 0; v < n; ++v) push(v);
+  std::vector<uint8_t> gone(n, 0);
+  while (!heap.empty()) {
+    const auto [c, v] = heap.top();
+    heap.pop();
+    if (gone[v] || c != cost[v]) continue;  // stale
+    if (progress && (o.steps.size() & 255) == 0 && !progress(0, 1)) throw Cancelled();
+    Bag bag = bag_of(g, o, tables_of, v);
+    if (bag.size > cap && !mini) {
+      o.largest = bag.size;
+      return o;
+    }
+    gone[v] = 1;
+    for (uint32_t t : bag.tables) o.tables[t].live = false;
+    std::vector<Bag> groups;
+    if (bag.size > cap) groups = mini_buckets(g, o, bag, cap), o.mini_buckets = true;
+    else groups.push_back(std::move(bag));
+    for (Bag& group : groups) {
+      o.largest = std::max(o.largest, group.size);
+      o.width = std::max(o.width, static_cast<uint32_t>(group.vars.size() - 1));
+      o.work += group.size * static_cast<double>(group.tables.size() + 2);
+      o.steps.push_back(std::move(group));
+      const Bag& b = o.steps.back();
+      o.message.push_back(UINT32_MAX);
+      if (b.vars.size() == 1) continue;
+      Shape m{{b.vars.begin() + 1, b.vars.end()}, {}, {b.count.begin() + 1, b.count.end()}};
+      for (size_t p = 1; p < b.cls.size(); ++p) m.map.push_back(&b.cls[p]);
+      o.message.back() = static_cast<uint32_t>(o.tables.size());
+      for (uint32_t w : m.vars) tables_of[w].push_back(o.message.back());
+      o.tables.push_back(std::move(m));
+      for (uint32_t w : o.tables.back().vars)
+        if (!gone[w]) push(w);
+    }
+  }
+  return o;
+}
+
+// Variable elimination over a greedy order.
 StateDpResult eliminate(const StateGraph& input, const StateDpLimits& limits) {
   std::vector<std::vector<uint32_t>> original;  // per variable: kept state -> state
   const StateGraph g = merge_states(input, original, limits.progress);
   const Ops ops{g.combine, g.sense};
   const uint32_t n = static_cast<uint32_t>(g.domain.size());
-  std::vector<double> dom(n);
-  for (uint32_t x = 0; x < n; ++x) dom[x] = g.domain[x];
-
-  // Elimination order: greedily the variable whose bag has the fewest joint states.
-  std::vector<std::vector<uint32_t>> adj(n);
-  for (const StateFactor& f : g.factors)
-    for (uint32_t a : f.scope)
-      for (uint32_t b : f.scope)
-        if (a != b) adj[a].push_back(b);
-  for (auto& a : adj) std::sort(a.begin(), a.end()), a.erase(std::unique(a.begin(), a.end()), a.end());
-  auto bag_size = [&](uint32_t v) {
-    double s = dom[v];
-    for (uint32_t w : adj[v]) s *= dom[w];
-    return s;
-  };
-  using Entry = std::pair<double, uint32_t>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
-  for (uint32_t v = 0; v < n; ++v) heap.push({bag_size(v), v});
-  std::vector<uint8_t> gone(n, 0);
-  std::vector<uint32_t> order;
-  std::vector<std::vector<uint32_t>> bags;
+  Order order = plan_order(g, limits.max_table, limits.mini_buckets, limits.progress);
+  if (order.largest > limits.max_table && !limits.mini_buckets)  // (mini-buckets: only single tables, already built)
+    throw LimitError("exact: eliminating a region needs a table of " + std::to_string(static_cast<uint64_t>(order.largest)) +
+                     " joint states; the memory cap is " + std::to_string(static_cast<uint64_t>(limits.max_table)));
   StateDpResult r;
-  while (!heap.empty()) {
-    const auto [size, v] = heap.top();
-    heap.pop();
-    if (gone[v] || size != bag_size(v)) continue;  // stale
-    if (size > limits.max_table)
-      throw LimitError("exact: eliminating a region needs a table of " + std::to_string(static_cast<uint64_t>(size)) +
-                       " joint states over " + std::to_string(adj[v].size() + 1) +
-                       " regions; the memory cap is " + std::to_string(static_cast<uint64_t>(limits.max_table)));
-    gone[v] = 1;
-    r.width = std::max(r.width, static_cast<uint32_t>(adj[v].size()));
-    r.largest_table = std::max(r.largest_table, size);
-    std::vector<uint32_t> bag = {v};
-    bag.insert(bag.end(), adj[v].begin(), adj[v].end());
-    for (uint32_t a : adj[v]) {
-      auto& na = adj[a];
-      na.erase(std::lower_bound(na.begin(), na.end(), v));
-      std::vector<uint32_t> merged;
-      std::set_union(na.begin(), na.end(), adj[v].begin(), adj[v].end(), std::back_inserter(merged));
-      merged.erase(std::remove(merged.begin(), merged.end(), a), merged.end());
-      na.swap(merged);
-      heap.push({bag_size(a), a});
-    }
-    adj[v].clear();
-    order.push_back(v);
-    bags.push_back(std::move(bag));
-  }
-  std::vector<uint32_t> position(n);
-  for (uint32_t i = 0; i < n; ++i) position[order[i]] = i;
+  r.bound_only = order.mini_buckets;
+  r.width = order.width;
+  r.largest_table = order.largest;
 
-  // Buckets: each table goes to its earliest-eliminated variable.
-  std::vector<std::vector<Table>> bucket(n);
-  double constant = g.constant;
-  auto place = [&](Table t) {
-    uint32_t first = t.vars[0];
-    for (uint32_t v : t.vars)
-      if (position[v] < position[first]) first = v;
-    bucket[first].push_back(std::move(t));
-  };
-  for (uint32_t x = 0; x < n; ++x) {
-    Table t{{x}, {nullptr}, {g.domain[x]}, g.unary[x]};
-    place(std::move(t));
-  }
-  for (uint32_t i = 0; i < g.factors.size(); ++i) {
-    Table t{g.factors[i].scope, {}, g.factors[i].dims, g.factors[i].table};
-    for (auto& p : g.factors[i].project) t.map.push_back(&p);
-    place(std::move(t));
-  }
-
-  std::vector<std::vector<uint32_t>> later(n);
-  std::vector<std::vector<uint32_t>> best_state(n);
-  double work = 0, total_work = 0;
-  for (uint32_t i = 0; i < n; ++i) {
-    double s = 1;
-    for (uint32_t v : bags[i]) s *= dom[v];
-    total_work += s;
-  }
+  // Fill the tables in that order; per step, the best class of the eliminated
+  // variable for each joint class of the others, and per class its best state.
+  std::vector<std::vector<double>> values(order.tables.size());
+  auto values_of = [&](uint32_t t) -> const std::vector<double>& { return t < g.factors.size() ? g.factors[t].table : values[t]; };
+  double constant = g.constant, work = 0;
+  std::vector<std::vector<uint32_t>> best_class(order.steps.size()), best_state(order.steps.size());
   std::vector<uint32_t> digit;
-  for (uint32_t i = 0; i < n; ++i) {
-    const uint32_t v = order[i];
-    std::vector<uint32_t> bag = bags[i];
-    std::sort(bag.begin() + 1, bag.end(), [&](uint32_t a, uint32_t b) { return position[a] < position[b]; });
-    const size_t k = bag.size();
+  std::vector<uint8_t> unary_read(n, 0);
+  for (size_t step = 0; step < order.steps.size(); ++step) {
+    const Bag& bag = order.steps[step];
+    const uint32_t v = bag.vars[0];
+    const size_t k = bag.vars.size(), c0 = bag.count[0];
     size_t total = 1;
-    for (uint32_t b : bag) total *= g.domain[b];
+    for (uint32_t c : bag.count) total *= c;
+    // A representative state per class, and v's best unary per class.
+    std::vector<std::vector<uint32_t>> rep(k);
+    for (size_t p = 0; p < k; ++p) {
+      rep[p].assign(bag.count[p], UINT32_MAX);
+      for (uint32_t s = 0; s < bag.cls[p].size(); ++s)
+        if (rep[p][bag.cls[p][s]] == UINT32_MAX) rep[p][bag.cls[p][s]] = s;
+    }
+    auto& arg = best_state[step];
+    arg = rep[0];
+    for (uint32_t s = 0; s < g.domain[v]; ++s)
+      if (ops.better(g.unary[v][s], g.unary[v][arg[bag.cls[0][s]]])) arg[bag.cls[0][s]] = s;
+    // (v's unary once: in its first mini-bucket)
     std::vector<double> combined(total, ops.zero());
-    for (const Table& t : bucket[v]) {
-      // Per bag position: the table's stride times the digit's class (0 if absent).
+    if (!unary_read[v]) {
+      unary_read[v] = 1;
+      for (size_t idx = 0; idx < total; ++idx) combined[idx] = g.unary[v][arg[idx % c0]];
+    }
+    for (uint32_t t : bag.tables) {
+      const Shape& tab = order.tables[t];
+      const std::vector<double>& tv = values_of(t);
+      // Per bag position: the table's stride times the digit of each class (none if absent).
       std::vector<std::vector<size_t>> contrib(k);
       size_t stride = 1;
-      for (size_t j = 0; j < t.vars.size(); ++j) {
-        const size_t pos = static_cast<size_t>(std::find(bag.begin(), bag.end(), t.vars[j]) - bag.begin());
-        auto& c = contrib[pos];
-        c.resize(g.domain[t.vars[j]]);
-        for (size_t s = 0; s < c.size(); ++s) c[s] = stride * (t.map[j] ? (*t.map[j])[s] : s);
-        stride *= t.dims[j];
+      for (size_t j = 0; j < tab.vars.size(); ++j) {
+        const size_t p = static_cast<size_t>(std::find(bag.vars.begin(), bag.vars.end(), tab.vars[j]) - bag.vars.begin());
+        contrib[p].resize(bag.count[p]);
+        for (size_t c = 0; c < bag.count[p]; ++c) contrib[p][c] = stride * (*tab.map[j])[rep[p][c]];
+        stride *= tab.dims[j];
       }
       digit.assign(k, 0);
       size_t ti = 0;
       for (size_t p = 0; p < k; ++p)
         if (!contrib[p].empty()) ti += contrib[p][0];
       for (size_t idx = 0; idx < total; ++idx) {
-        if (limits.progress && (idx & 0xFFFF) == 0xFFFF && !limits.progress(work + idx, total_work)) throw Cancelled();
-        combined[idx] = ops.add(combined[idx], t.values[ti]);
-        // Next joint state: the first digit is the fastest.
-        for (size_t p = 0; p < k; ++p) {
+        if (limits.progress && (idx & 0xFFFF) == 0xFFFF && !limits.progress(work + idx, order.work)) throw Cancelled();
+        combined[idx] = ops.add(combined[idx], tv[ti]);
+        for (size_t p = 0; p < k; ++p) {  // next joint class: the first digit is the fastest
           const bool has = !contrib[p].empty();
           if (has) ti -= contrib[p][digit[p]];
-          if (++digit[p] < g.domain[bag[p]]) {
+          if (++digit[p] < bag.count[p]) {
             if (has) ti += contrib[p][digit[p]];
             break;
           }
@@ -272,34 +391,35 @@ StateDpResult eliminate(const StateGraph& input, const StateDpLimits& limits) {
         }
       }
       work += static_cast<double>(total);
-      if (limits.progress && !limits.progress(work, total_work)) throw Cancelled();
+      if (limits.progress && !limits.progress(work, order.work)) throw Cancelled();
+      if (t >= g.factors.size()) std::vector<double>().swap(values[t]);  // (read once)
     }
-    bucket[v].clear();
-    bucket[v].shrink_to_fit();
     // Optimise v (the fastest digit) out.
-    const size_t dv = g.domain[v], rest = total / dv;
-    Table message{std::vector<uint32_t>(bag.begin() + 1, bag.end()), {}, {}, std::vector<double>(rest)};
-    for (uint32_t w : message.vars) message.map.push_back(nullptr), message.dims.push_back(g.domain[w]);
-    best_state[v].resize(rest);
+    const size_t rest = total / c0;
+    std::vector<double> out(rest);
+    best_class[step].resize(rest);
     for (size_t j = 0; j < rest; ++j) {
-      if (limits.progress && (j & 0xFFFF) == 0xFFFF && !limits.progress(work, total_work)) throw Cancelled();
-      uint32_t arg = 0;
-      for (uint32_t s = 1; s < dv; ++s)
-        if (ops.better(combined[j * dv + s], combined[j * dv + arg])) arg = s;
-      best_state[v][j] = arg;
-      message.values[j] = combined[j * dv + arg];
+      uint32_t a = 0;
+      for (uint32_t c = 1; c < c0; ++c)
+        if (ops.better(combined[j * c0 + c], combined[j * c0 + a])) a = c;
+      best_class[step][j] = a;
+      out[j] = combined[j * c0 + a];
     }
-    later[v] = message.vars;
-    if (message.vars.empty()) constant = ops.add(constant, message.values[0]);
-    else place(std::move(message));
+    work += static_cast<double>(total);
+    if (order.message[step] == UINT32_MAX) constant = ops.add(constant, out[0]);
+    else values[order.message[step]] = std::move(out);
   }
-  // Rebuild in reverse elimination order.
+  // Rebuild in reverse elimination order: each step's message reads only
+  // variables eliminated after it.
   std::vector<uint32_t> reduced(n, 0);
-  for (uint32_t i = n; i-- > 0;) {
-    const uint32_t v = order[i];
+  for (size_t i = order.steps.size(); i-- > 0;) {
+    const Bag& bag = order.steps[i];
     size_t idx = 0, stride = 1;
-    for (uint32_t w : later[v]) idx += stride * reduced[w], stride *= g.domain[w];
-    reduced[v] = best_state[v][idx];
+    for (size_t p = 1; p < bag.vars.size(); ++p) {
+      idx += stride * bag.cls[p][reduced[bag.vars[p]]];
+      stride *= bag.count[p];
+    }
+    reduced[bag.vars[0]] = best_state[i][best_class[i][idx]];
   }
   r.state.resize(n);
   for (uint32_t x = 0; x < n; ++x) r.state[x] = original[x][reduced[x]];
@@ -380,6 +500,7 @@ StateDpResult bottleneck(const StateGraph& g, const StateDpLimits& limits) {
     if (!th.empty) {
       const StateDpResult r = eliminate(th.graph, limits);
       best.width = std::max(best.width, r.width);
+      best.bound_only = best.bound_only || r.bound_only;
       best.largest_table = std::max(best.largest_table, r.largest_table);
       if (r.value == 0) {
         feasible = true;
@@ -389,7 +510,9 @@ StateDpResult bottleneck(const StateGraph& g, const StateDpLimits& limits) {
     if (feasible) b = mid;
     else a = mid + 1;
   }
-  best.value = evaluate_states(g, best.state);
+  // (with mini-buckets, an infeasible verdict is still a proof: the threshold
+  // found bounds the optimum)
+  best.value = best.bound_only ? values[b] : evaluate_states(g, best.state);
   return best;
 }
 
@@ -485,10 +608,14 @@ StateGraph relaxation(const StateGraph& g) {
 }
 
 double relaxation_bound(const StateGraph& g, const StateDpLimits& limits) {
+  const StateGraph h = relaxation(g);
   try {
-    return solve_states(relaxation(g), limits).value;
+    return solve_states(h, limits).value;
   } catch (const LimitError&) {
-    return independent_bound(g);
+    StateDpLimits mini = limits;
+    mini.mini_buckets = true;
+    const double v = solve_states(h, mini).value;
+    return g.sense == Sense::Min ? std::max(v, independent_bound(g)) : std::min(v, independent_bound(g));
   }
 }
 

@@ -41,6 +41,10 @@ struct StateGraph {
 
 struct StateDpLimits {
   double max_table = 1 << 22;  // entries of the largest table the DP may build
+  // A bag over max_table is split into mini-buckets, each optimising the
+  // eliminated variable on its own: the value is then a bound on the optimum
+  // (StateDpResult::bound_only), not the value of the state returned.
+  bool mini_buckets = false;
   Progress progress;
 };
 
@@ -49,6 +53,7 @@ struct StateDpResult {
   double value;                 // the model's value of it
   uint32_t width = 0;           // largest bag minus one
   double largest_table = 0;     // entries
+  bool bound_only = false;      // mini-buckets were used: `value` bounds the optimum
 };
 
 // Merges the classes of a factor's variable that its table cannot tell apart,
@@ -73,8 +78,8 @@ std::vector<uint32_t> improve_states(const StateGraph& g, std::vector<uint32_t> 
 // variable, replaced by the best value a term can take. Its optimum is a proven
 // bound on the optimum over all assignments, including the states not listed.
 StateGraph relaxation(const StateGraph& g);
-// That optimum, by the DP (or, when its tables are too large, each factor at its
-// best on its own: a weaker bound).
+// That optimum, by the DP (or, when its tables are too large, a bound from the
+// DP over mini-buckets, or each factor at its best on its own: weaker bounds).
 double relaxation_bound(const StateGraph& g, const StateDpLimits& limits = {});
 
 }  // namespace hodt
