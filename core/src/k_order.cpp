@@ -213,6 +213,10 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     const std::vector<uint32_t> y = improve_states(model.graph, solve_states(model.graph, mini).state, options.progress);
     if (better(info(o).sense, evaluate_states(model.graph, y), evaluate_states(model.graph, x)))
       x = y, how = "local search from the mini-bucket DP";
+    StateDpLimits window = dl;
+    window.max_table = 1 << 16;
+    x = improve_by_windows(model.graph, x, window, 24);
+    how += ", then windows solved exactly";
   }
   r.triangulation = R.triangulation(dt, model.region_states(x));
   r.value = evaluate(o, r.triangulation);

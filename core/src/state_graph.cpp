@@ -555,6 +555,82 @@ std::vector<uint32_t> improve_states(const StateGraph& g, std::vector<uint32_t> 
   return x;
 }
 
+std::vector<uint32_t> improve_by_windows(const StateGraph& g, std::vector<uint32_t> x, const StateDpLimits& limits,
+                                         uint32_t window) {
+  const uint32_t n = static_cast<uint32_t>(g.domain.size());
+  std::vector<std::vector<uint32_t>> factors_of(n), neighbours(n);
+  for (uint32_t i = 0; i < g.factors.size(); ++i)
+    for (uint32_t v : g.factors[i].scope) {
+      factors_of[v].push_back(i);
+      for (uint32_t w : g.factors[i].scope)
+        if (w != v) neighbours[v].push_back(w);
+    }
+  std::vector<uint32_t> local(n, UINT32_MAX);
+  for (int pass = 0; pass < 2; ++pass) {
+    bool improved = false;
+    std::vector<uint8_t> covered(n, 0);
+    for (uint32_t seed = 0; seed < n; ++seed) {
+      if (covered[seed] || g.domain[seed] < 2) continue;
+      if (limits.progress && !limits.progress(pass * double(n) + seed, 2.0 * n)) throw Cancelled();
+      // The window: a breadth-first ball of variables with a choice.
+      std::vector<uint32_t> ball = {seed};
+      local[seed] = 0;
+      for (size_t head = 0; head < ball.size() && ball.size() < window; ++head)
+        for (uint32_t w : neighbours[ball[head]])
+          if (local[w] == UINT32_MAX && g.domain[w] > 1 && ball.size() < window) {
+            local[w] = static_cast<uint32_t>(ball.size());
+            ball.push_back(w);
+          }
+      // Its graph: the ball's variables, and the factors that read them with every
+      // other variable fixed at x (a variable of one state).
+      StateGraph h;
+      h.combine = g.combine, h.sense = g.sense, h.term_max = g.term_max;
+      for (uint32_t v : ball) {
+        h.domain.push_back(g.domain[v]);
+        h.unary.push_back(g.unary[v]);
+      }
+      std::vector<uint32_t> fixed;
+      std::vector<uint8_t> seen(g.factors.size(), 0);
+      for (uint32_t v : ball)
+        for (uint32_t i : factors_of[v]) {
+          if (seen[i]) continue;
+          seen[i] = 1;
+          StateFactor f = g.factors[i];
+          for (size_t j = 0; j < f.scope.size(); ++j) {
+            uint32_t& w = f.scope[j];
+            if (local[w] == UINT32_MAX) {
+              f.project[j] = {f.project[j][x[w]]};
+              fixed.push_back(w);
+              local[w] = static_cast<uint32_t>(h.domain.size());
+              h.domain.push_back(1);
+              h.unary.push_back({0.0});
+            } else if (local[w] >= ball.size()) {
+              f.project[j] = {f.project[j][x[w]]};
+            }
+            w = local[w];
+          }
+          h.factors.push_back(std::move(f));
+        }
+      h.unary_terms.assign(h.domain.size(), 0);
+      h.partial.assign(h.domain.size(), 0);
+      std::vector<uint32_t> current(h.domain.size(), 0);
+      for (size_t i = 0; i < ball.size(); ++i) current[i] = x[ball[i]];
+      try {
+        const StateDpResult r = solve_states(h, limits);
+        if (Ops{g.combine, g.sense}.better(r.value, evaluate_states(h, current))) {
+          for (size_t i = 0; i < ball.size(); ++i) x[ball[i]] = r.state[i];
+          improved = true;
+        }
+      } catch (const LimitError&) {
+      }
+      for (uint32_t v : ball) covered[v] = 1, local[v] = UINT32_MAX;
+      for (uint32_t w : fixed) local[w] = UINT32_MAX;
+    }
+    if (!improved) break;
+  }
+  return x;
+}
+
 namespace {
 
 // What a term we cannot read may contribute at best.

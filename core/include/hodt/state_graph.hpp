@@ -74,6 +74,12 @@ double evaluate_states(const StateGraph& g, const std::vector<uint32_t>& state);
 // the others' current states, until no variable improves.
 std::vector<uint32_t> improve_states(const StateGraph& g, std::vector<uint32_t> start, const Progress& progress = {});
 
+// Large-neighbourhood search: windows of up to `window` variables (breadth-first
+// balls in the factor graph), each solved exactly by the DP with the others fixed
+// at their current states; windows whose tables exceed the limits are skipped.
+std::vector<uint32_t> improve_by_windows(const StateGraph& g, std::vector<uint32_t> start, const StateDpLimits& limits = {},
+                                         uint32_t window = 64);
+
 // The relaxation: every relaxed term, and every term that sees a partial
 // variable, replaced by the best value a term can take. Its optimum is a proven
 // bound on the optimum over all assignments, including the states not listed.
