@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <optional>
 #include <cstdlib>
 
 #include "hodt/cli_help.hpp"
@@ -52,6 +54,35 @@ std::string describe(const Solution& s, const std::string& source) {
 
 }  // namespace
 
+namespace {
+
+// --nodata V: points whose height is V are gaps, not terrain.
+void drop_nodata(ParsedPoints& p, double nodata, const std::string& name) {
+  size_t kept = 0;
+  for (size_t i = 0; i < p.lines.size(); ++i) {
+    if (p.xyz[3 * i + 2] == nodata) continue;
+    std::copy_n(p.xyz.begin() + static_cast<std::ptrdiff_t>(3 * i), 3, p.xyz.begin() + static_cast<std::ptrdiff_t>(3 * kept));
+    p.lines[kept++] = p.lines[i];
+  }
+  if (kept == 0) throw InputError(name + ": every point has the height --nodata " + format_number(nodata));
+  p.xyz.resize(3 * kept);
+  p.lines.resize(kept);
+}
+
+// x and y that look like longitude and latitude (within +-180 and +-90, spanning
+// at most a few degrees) under heights spanning far more: angles, slopes and
+// areas then mix degrees with metres.
+std::optional<std::string> degrees_warning(const std::vector<double>& xyz) {
+  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  for (size_t i = 0; i < xyz.size(); ++i) lo[i % 3] = std::min(lo[i % 3], xyz[i]), hi[i % 3] = std::max(hi[i % 3], xyz[i]);
+  const double span = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  if (lo[0] < -180 || hi[0] > 180 || lo[1] < -90 || hi[1] > 90 || span > 10 || hi[2] - lo[2] <= 100 * span) return std::nullopt;
+  return "x and y look like degrees (longitude, latitude) while z spans " + format_number(hi[2] - lo[2]) +
+         ": angles, slopes and areas mix units; reproject to a projected CRS in metres";
+}
+
+}  // namespace
+
 CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) {
   CliHost host;
   host.read = read;
@@ -79,6 +110,7 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     SolveOptions options;
     Dedupe dedupe = Dedupe::Error;
     bool have_order = false;
+    std::optional<double> nodata;
     for (size_t i = 1; i < args.size(); ++i) {
       const std::string& a = args[i];
       auto value = [&]() -> const std::string& {
@@ -116,6 +148,11 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
           throw Usage("--output '" + path + "': this build of hodt writes .json only; for ." + format_id(*format) +
                       " use the npm CLI: npx hodt");
         outputs.push_back({path, *format});
+      } else if (a == "--nodata") {
+        nodata = parse_number(a, value());
+      } else if (a == "--classes") {
+        const std::string& c = value();  // (read by the npm CLI's LAS/LAZ loader)
+        if (c != "ground" && c != "all") throw Usage("--classes expects 'ground' or 'all', got '" + c + "'");
       } else if (a == "--quiet") quiet = true;
       else if (a == "--progress") force_progress = true;
       else if (a.size() > 1 && a[0] == '-' && a != "-") throw Usage("unknown option '" + a + "' (hodt --help)");
@@ -140,7 +177,8 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     std::string error;
     const std::optional<std::string> text = host.read(file, error);
     if (!text) throw InputError(file + ": " + file_error_message(error, FileAccess::Read));
-    const ParsedPoints parsed = read_points(*text, name);
+    ParsedPoints parsed = read_points(*text, name);
+    if (nodata) drop_nodata(parsed, *nodata, name);
     times.read_ms = ms_since(started);
 
     started = Clock::now();
@@ -154,6 +192,8 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
       throw InputError(name + ": " + e.what());
     }
     times.build_ms = ms_since(started);
+    if (!quiet)
+      if (const auto w = degrees_warning(parsed.xyz)) r.err += "hodt: warning: " + name + ": " + *w + "\n";
     const uint32_t dropped = terrain.num_input_points() - terrain.structure().base.num_vertices();
     if (dropped > 0 && !quiet)
       r.err += "hodt: warning: " + name + ": dropped " + std::to_string(dropped) + " point" + (dropped == 1 ? "" : "s") +

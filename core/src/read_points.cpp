@@ -315,7 +315,29 @@ ParsedPoints read_ascii_grid(std::string_view text, const Reader& r) {
 
 }  // namespace
 
+namespace {
+
+// Binary files named by their first bytes: read as text they give a misleading
+// "line 2: x is ..." and garbage on the terminal.
+std::optional<std::string> binary_format(std::string_view b) {
+  auto starts = [&](std::string_view magic) { return b.substr(0, magic.size()) == magic; };
+  if (starts(std::string_view("II*\0", 4)) || starts(std::string_view("MM\0*", 4)) || starts(std::string_view("II+\0", 4)) ||
+      starts(std::string_view("MM\0+", 4)))
+    return "a TIFF/GeoTIFF raster, not text; the npm CLI (npx hodt) and hodt/loaders read GeoTIFF DEMs";
+  if (starts("LASF")) return "a LAS/LAZ point cloud, not text; the npm CLI (npx hodt) and hodt/loaders read LAS and LAZ";
+  if (starts("PK\x03\x04")) return "a zip archive, not text; extract it first";
+  if (starts("\x1f\x8b")) return "a gzip file, not text; decompress it first";
+  if (starts("\x89PNG")) return "a PNG image, not elevation data";
+  if (starts("\xff\xd8\xff")) return "a JPEG image, not elevation data";
+  if (starts("%PDF")) return "a PDF document, not elevation data";
+  if (starts("\x7f" "ELF")) return "an executable, not elevation data";
+  return std::nullopt;
+}
+
+}  // namespace
+
 ParsedPoints read_points(std::string_view text, const std::string& name, PointFormat format) {
+  if (const auto binary = binary_format(text)) throw InputError(name + ": " + *binary);
   const Reader r{name};
   // A byte order mark would otherwise make the first line look like a header.
   const std::optional<std::string> decoded = utf8_from_utf16(text);

@@ -1,7 +1,8 @@
 #!/usr/bin/env node
 // `hodt` on the command line: the core's CLI (core/src/cli.cpp) run in wasm, with
-// Node's file system to read FILE or standard input and to write --output files
-// (the mesh formats with hodt/export's writers), and stderr for progress.
+// Node's file system to read FILE or standard input (GeoTIFF and LAS/LAZ through
+// hodt/loaders) and to write --output files (the mesh formats with hodt/export's
+// writers), and stderr for progress.
 import { closeSync, openSync, readFileSync, writeFileSync, writeSync } from 'node:fs';
 import { exportMeshParts, type MeshData, type MeshFormat } from './export.js';
 import { loadHodt } from './index.js';
@@ -32,15 +33,56 @@ function writeMesh(path: string, format: MeshFormat, mesh: MeshData): void {
 }
 
 const hodt = await loadHodt();
-const result = hodt.runCli(
-  process.argv.slice(2),
-  (path) => {
-    try {
-      return readFileSync(path === '-' ? 0 : path); // bytes: the core decodes them
-    } catch (e) {
-      return failure(e);
-    }
+const args = process.argv.slice(2);
+const read = (path: string): Uint8Array | Error => {
+  try {
+    return readFileSync(path === '-' ? 0 : path); // bytes: the core decodes text itself
+  } catch (e) {
+    return failure(e);
+  }
+};
+
+// A dry run names the file the core will read (its reader answers nothing), so
+// that a GeoTIFF or LAS/LAZ file is decoded first, by the opt-in loaders, into
+// the x y z text the core reads (numbers printed exactly).
+let path: string | undefined;
+const unused = () => new Error('EPERM'); // (the dry run stops at reading, before any write)
+hodt.runCli(
+  args,
+  (p) => {
+    path = p;
+    return new Error('ENOENT');
   },
+  { writeFile: unused, writeMesh: unused, progress: () => {}, stderrIsTerminal: false },
+);
+let input: Uint8Array | Error | undefined;
+const notes: string[] = [];
+if (path !== undefined) {
+  input = read(path);
+  if (!(input instanceof Error)) {
+    const { sniffFormat, readPointFile } = await import('./loaders/index.js');
+    const format = sniffFormat(input);
+    if (format) {
+      const at = args.indexOf('--classes');
+      const classes = at >= 0 ? (args[at + 1] as 'ground' | 'all') : 'ground';
+      try {
+        const cloud = (await readPointFile(input, { classes }))!;
+        const lines: string[] = [];
+        for (let i = 0; i < cloud.xyz.length; i += 3) lines.push(`${cloud.xyz[i]} ${cloud.xyz[i + 1]} ${cloud.xyz[i + 2]}`);
+        input = Buffer.from(lines.join('\n') + '\n', 'utf8');
+        for (const w of cloud.warnings) notes.push(`hodt: warning: ${path}: ${w}\n`);
+        if (cloud.crs) notes.push(`hodt: ${path}: coordinates in ${cloud.crs}, kept as read\n`);
+        // Point clouds repeat (x, y) across returns: keep the first unless told.
+        if (format === 'las' && !args.includes('--dedupe')) args.push('--dedupe', 'first');
+      } catch (e) {
+        input = new Error(failure(e).message); // (the core names the file)
+      }
+    }
+  }
+}
+const result = hodt.runCli(
+  args,
+  (p) => (p === path && input !== undefined ? input : read(p)),
   {
     writeFile: (path, text) => attempt(() => writeFileSync(path, text)),
     writeMesh: (path, format, mesh) => attempt(() => writeMesh(path, format, mesh)),
@@ -50,6 +92,7 @@ const result = hodt.runCli(
     stderrIsTerminal: process.stderr.isTTY === true,
   },
 );
+if (!args.includes('--quiet')) for (const n of notes) process.stderr.write(n);
 process.stdout.write(result.stdout);
 process.stderr.write(result.stderr);
 process.exitCode = result.exitCode;
