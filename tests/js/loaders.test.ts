@@ -75,6 +75,7 @@ describe('GeoTIFF', () => {
       const features = JSON.parse(readFileSync(out, 'utf8')).features;
       expect(features.length).toBe(JSON.parse(r.out).triangles ?? features.length);
       expect(features[0].geometry.coordinates[0][0][0]).toBeGreaterThan(500000);
+      expect(JSON.parse(readFileSync(out, 'utf8')).crs).toEqual({ type: 'name', properties: { name: 'urn:ogc:def:crs:EPSG::32633' } });
     } finally {
       rmSync(dir, { recursive: true, force: true });
     }

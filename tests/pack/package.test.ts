@@ -3,7 +3,7 @@
 // Chromium under a Content-Security-Policy without 'unsafe-eval'.
 import { execFileSync, spawnSync } from 'node:child_process';
 import { cpSync, readdirSync, readFileSync } from 'node:fs';
-import { join } from 'node:path';
+import { dirname, join } from 'node:path';
 import type { Browser } from 'playwright-core';
 import { build, createServer } from 'vite';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -82,12 +82,29 @@ describe('the tarball', () => {
     }
   });
 
+  // The library's own modules import only each other; the opt-in loaders also
+  // their two dependencies, and nothing else (never three or Node built-ins).
+  const importsOf = (path: string) => {
+    const text = readFileSync(join(project.dir, 'node_modules/hodt', path), 'utf8');
+    return [...text.matchAll(/(?:^|[\s;])(?:import|export)\b[^'"]*?from\s*['"]([^'"]+)['"]|import\(\s*['"]([^'"]+)['"]/gm)].map((m) => (m[1] ?? m[2])!);
+  };
   it('the library never imports three or Node built-ins statically (the CLI may)', () => {
     for (const f of project.files.filter((f) => f.path.endsWith('.js') && f.path !== 'dist/cli.js')) {
-      const text = readFileSync(join(project.dir, 'node_modules/hodt', f.path), 'utf8');
-      const specifiers = [...text.matchAll(/(?:^|[\s;])(?:import|export)\b[^'"]*?from\s*['"]([^'"]+)['"]|import\(\s*['"]([^'"]+)['"]/gm)].map((m) => m[1] ?? m[2]);
-      for (const s of specifiers) expect(s, `${f.path} imports ${s}`).toMatch(/^\.\.?\//);
+      const allowed = f.path.startsWith('dist/loaders/') ? /^(\.\.?\/|geotiff$|laz-perf$)/ : /^\.\.?\//;
+      for (const s of importsOf(f.path)) expect(s, `${f.path} imports ${s}`).toMatch(allowed);
     }
+  });
+
+  it('the core entry never reaches the loaders (they do not grow its bundle)', () => {
+    const seen = new Set<string>();
+    const visit = (path: string) => {
+      if (seen.has(path)) return;
+      seen.add(path);
+      for (const s of importsOf(path)) if (s.startsWith('.')) visit(join(dirname(path), s));
+    };
+    visit('dist/index.js');
+    expect(seen.size).toBeGreaterThan(3);
+    expect([...seen].filter((p) => p.includes('loaders'))).toEqual([]);
   });
 });
 
@@ -133,6 +150,17 @@ describe('CLI (npm bin)', () => {
     expect(readFileSync(join(project.dir, 'cli.ply'), 'latin1')).toMatch(/^ply\nformat binary_little_endian 1\.0\n/);
     expect(readFileSync(join(project.dir, 'cli.glb')).readUInt32LE(0)).toBe(0x46546c67);
     expect(JSON.parse(readFileSync(join(project.dir, 'cli.geojson'), 'utf8')).type).toBe('FeatureCollection');
+  });
+  it('npx hodt reads a GeoTIFF DEM and a LAZ point cloud (the loaders and their dependencies installed)', () => {
+    const tif = join(repo, 'tests/fixtures-gis/dem-utm-float32-tiled-deflate.tif');
+    const r = inProject('npx', ['--no', 'hodt', 'solve', tif, '--objective', 'minmax-edge-normal-angle', '--output', 'dem.ply', '--output', 'dem.geojson']);
+    expect(r.status, r.stderr).toBe(0);
+    expect(JSON.parse(r.stdout).value).toBeLessThan(JSON.parse(r.stdout).delaunayValue);
+    expect(readFileSync(join(project.dir, 'dem.ply'), 'latin1')).toMatch(/\ncomment crs EPSG:32633\n/);
+    expect(JSON.parse(readFileSync(join(project.dir, 'dem.geojson'), 'utf8')).crs.properties.name).toBe('urn:ogc:def:crs:EPSG::32633');
+    const laz = inProject('npx', ['--no', 'hodt', 'stats', join(repo, 'tests/fixtures-gis/lidar-point10.laz')]);
+    expect(laz.status, laz.stderr).toBe(0);
+    expect(JSON.parse(laz.stdout).points).toBe(276);
   });
   it('npx hodt solve reads standard input and reports bad files with exit code 2', () => {
     const ok = spawnSync('npx', ['--no', 'hodt', 'solve', '-', '--objective', 'min-local-minima'], {

@@ -49,7 +49,7 @@ export interface CliIo {
   writeFile?: (path: string, text: string) => Error | undefined;
   /** Writes `--output FILE.obj|.ply|.geojson|.glb`, typically with hodt/export's
    * exportMesh(format, mesh); returns an Error as writeFile. */
-  writeMesh?: (path: string, format: MeshFormat, mesh: Required<MeshData>) => Error | undefined;
+  writeMesh?: (path: string, format: MeshFormat, mesh: Required<Omit<MeshData, 'crs'>>) => Error | undefined;
   /** Receives progress text for stderr as it happens (with its own line ends). */
   progress?: (text: string) => void;
   /** Is stderr a terminal: progress then appears after a second, redrawn in place. */

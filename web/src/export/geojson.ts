@@ -11,7 +11,10 @@ function* geojsonText(mesh: MeshData, m: number): Generator<string> {
   const { points: p, triangles: t, nonDelaunay } = mesh;
   const at = (i: number) => `[${String(p[3 * i])},${String(p[3 * i + 1])},${String(p[3 * i + 2])}]`;
   const out = new LineBatch();
-  out.add('{"type":"FeatureCollection","features":[');
+  // A named CRS (the GeoJSON 2008 member RFC 7946 dropped; GDAL and QGIS read it).
+  const epsg = /^EPSG:(\d+)$/.exec(mesh.crs ?? '');
+  const crs = epsg ? `"crs":{"type":"name","properties":{"name":"urn:ogc:def:crs:EPSG::${epsg[1]}"}},` : '';
+  out.add(`{"type":"FeatureCollection",${crs}"features":[`);
   for (let k = 0; k < m; k++) {
     let a = t[3 * k]!, b = t[3 * k + 1]!;
     const c = t[3 * k + 2]!;

@@ -37,7 +37,13 @@ export function toGLB(mesh: MeshData): Uint8Array {
 
   const positionBytes = positions.byteLength, indexBytes = indices.byteLength;
   const gltf = {
-    asset: { version: '2.0', generator: 'hodt', ...(mesh.comment ? { extras: { comment: oneLine(mesh.comment) } } : {}) },
+    asset: {
+      version: '2.0',
+      generator: 'hodt',
+      ...(mesh.comment || mesh.crs
+        ? { extras: { ...(mesh.comment ? { comment: oneLine(mesh.comment) } : {}), ...(mesh.crs ? { crs: oneLine(mesh.crs) } : {}) } }
+        : {}),
+    },
     scene: 0,
     scenes: [{ nodes: [0] }],
     nodes: [

@@ -24,6 +24,10 @@ export interface MeshData {
   /** One line about the triangulation, written as a comment (OBJ, PLY) or in the
    * glTF asset's `extras`. */
   comment?: string;
+  /** The coordinate reference system as an EPSG code ("EPSG:32633"), written as
+   * GeoJSON's named `crs` member (read by GDAL and QGIS), a `crs` comment (OBJ,
+   * PLY) and the glTF asset's `extras.crs`. */
+  crs?: string;
 }
 
 /** Checks the mesh (throws InputError naming what is wrong); its counts. */

@@ -12,6 +12,7 @@ function* objText(mesh: MeshData, n: number, m: number): Generator<string> {
   const { points: p, triangles: t } = mesh;
   const out = new LineBatch();
   if (mesh.comment) out.add(`# ${oneLine(mesh.comment)}`);
+  if (mesh.crs) out.add(`# crs ${oneLine(mesh.crs)}`);
   out.add(`# ${n} vertices, ${m} triangles (counterclockwise seen from +z)`);
   // String(number) is the shortest decimal that reads back to the same double.
   for (let i = 0; i < 3 * n; i += 3) {

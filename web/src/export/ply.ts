@@ -15,6 +15,7 @@ export function toPLY(mesh: MeshData): Uint8Array {
   const { points: p, triangles: t, vertexClass, extremum, nonDelaunay } = mesh;
   const header = ['ply', 'format binary_little_endian 1.0'];
   if (mesh.comment) header.push(`comment ${oneLine(mesh.comment)}`);
+  if (mesh.crs) header.push(`comment crs ${oneLine(mesh.crs)}`);
   if (vertexClass) header.push('comment class: 0 convex, 1 concave, 2 flat, 3 mixed, 4 boundary, 255 not a vertex');
   if (extremum) header.push('comment extremum: 0 none, 1 local minimum, 2 local maximum');
   if (nonDelaunay) header.push('comment non_delaunay: 1 if the triangle is not in the Delaunay triangulation');
