@@ -4,6 +4,7 @@
 // tables hold small integers (ties everywhere).
 #include <doctest/doctest.h>
 
+#include <functional>
 #include <random>
 
 #include "hodt/state_graph.hpp"
@@ -64,72 +65,66 @@ double enumerate_best(const StateGraph& g) {
   }
 }
 
+// 3000 random graphs, in turn sum/min, sum/max and max/min (the three kinds the
+// objectives make).
+void for_random_graphs(uint32_t seed, const std::function<void(int, std::mt19937&, const StateGraph&)>& check) {
+  std::mt19937 rng(seed);
+  const std::pair<TermCombine, Sense> kinds[] = {
+      {TermCombine::Sum, Sense::Min}, {TermCombine::Sum, Sense::Max}, {TermCombine::Max, Sense::Min}};
+  for (int trial = 0; trial < 3000; ++trial) {
+    const StateGraph g = random_graph(rng, kinds[trial % 3].first, kinds[trial % 3].second);
+    CAPTURE(trial);
+    check(trial, rng, g);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("state graph: the engine equals enumeration on random graphs with coarse projections") {
-  std::mt19937 rng(20261123);
-  const std::pair<TermCombine, Sense> kinds[] = {
-      {TermCombine::Sum, Sense::Min}, {TermCombine::Sum, Sense::Max}, {TermCombine::Max, Sense::Min}};
   int checked = 0;
-  for (int trial = 0; trial < 3000; ++trial) {
-    const auto [combine, sense] = kinds[trial % 3];
-    const StateGraph g = random_graph(rng, combine, sense);
+  for_random_graphs(20261123, [&](int, std::mt19937&, const StateGraph& g) {
     const StateDpResult r = solve_states(g);
-    const double best = enumerate_best(g);
-    CAPTURE(trial);
-    CHECK(r.value == best);
+    CHECK(r.value == enumerate_best(g));
     CHECK(evaluate_states(g, r.state) == r.value);
     ++checked;
-  }
+  });
   CHECK(checked == 3000);
 }
 
 TEST_CASE("state graph: mini-buckets bound the optimum from the right side, and equal it when no bag is split") {
-  std::mt19937 rng(7);
-  const std::pair<TermCombine, Sense> kinds[] = {
-      {TermCombine::Sum, Sense::Min}, {TermCombine::Sum, Sense::Max}, {TermCombine::Max, Sense::Min}};
   int split = 0, strict = 0;
-  for (int trial = 0; trial < 3000; ++trial) {
-    const auto [combine, sense] = kinds[trial % 3];
-    const StateGraph g = random_graph(rng, combine, sense);
+  for_random_graphs(7, [&](int trial, std::mt19937&, const StateGraph& g) {
     StateDpLimits limits;
     limits.max_table = 1 + trial % 6;
     limits.mini_buckets = true;
     const StateDpResult r = solve_states(g, limits);
     const double best = enumerate_best(g);
-    CAPTURE(trial);
     if (!r.bound_only) {
       CHECK(r.value == best);
-      continue;
+      return;
     }
     ++split;
-    CHECK((sense == Sense::Min ? r.value <= best : r.value >= best));
+    CHECK((g.sense == Sense::Min ? r.value <= best : r.value >= best));
     strict += r.value != best;
-  }
+  });
   MESSAGE(split << " graphs split into mini-buckets, " << strict << " bounds strictly weaker");
   CHECK(split > 500);
   CHECK(strict > 0);
 }
 
 TEST_CASE("state graph: windows solved exactly never worsen an assignment, and a window over every variable finds the optimum") {
-  std::mt19937 rng(11);
-  const std::pair<TermCombine, Sense> kinds[] = {
-      {TermCombine::Sum, Sense::Min}, {TermCombine::Sum, Sense::Max}, {TermCombine::Max, Sense::Min}};
   int improved = 0;
-  for (int trial = 0; trial < 3000; ++trial) {
-    const auto [combine, sense] = kinds[trial % 3];
-    const StateGraph g = random_graph(rng, combine, sense);
+  for_random_graphs(11, [&](int, std::mt19937& rng, const StateGraph& g) {
     std::vector<uint32_t> start(g.domain.size());
     for (size_t x = 0; x < start.size(); ++x) start[x] = static_cast<uint32_t>(rng() % g.domain[x]);
     const double before = evaluate_states(g, start);
-    CAPTURE(trial);
     const std::vector<uint32_t> small = improve_by_windows(g, start, {}, 2);
     const double after = evaluate_states(g, small);
-    CHECK((sense == Sense::Min ? after <= before : after >= before));
+    CHECK((g.sense == Sense::Min ? after <= before : after >= before));
     improved += after != before;
     const std::vector<uint32_t> whole = improve_by_windows(g, start, {}, 64);
     // (a ball reaches only the variables connected to its seed: one window per component)
     CHECK(evaluate_states(g, whole) == enumerate_best(g));
-  }
+  });
   CHECK(improved > 300);
 }
