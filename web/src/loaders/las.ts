@@ -118,25 +118,44 @@ export async function readLAS(bytes: Uint8Array, options: LASOptions = {}): Prom
   const classes = options.classes ?? 'ground';
   if (classes !== 'ground' && classes !== 'all') throw new Error(`LAS: classes must be 'ground' or 'all', got '${String(classes)}'`);
   const h = readHeader(bytes);
-  const all: number[] = [];
-  const ground: number[] = [];
+  // Typed arrays sized by the header's count (a LAZ may hold fewer: trimmed after).
+  let all = new Float64Array(3 * h.count);
+  let ground = new Float64Array(classes === 'ground' ? 3 * h.count : 0);
+  let n = 0;
+  let g = 0;
   await forEachRecord(bytes, h, (record, at) => {
+    if (3 * n >= all.length) {
+      const grown = new Float64Array(2 * all.length + 3);
+      grown.set(all);
+      all = grown;
+      if (classes === 'ground') {
+        const more = new Float64Array(grown.length);
+        more.set(ground);
+        ground = more;
+      }
+    }
     const v = new DataView(record.buffer, record.byteOffset + at, 12);
     const x = v.getInt32(0, true) * h.scale[0] + h.origin[0];
     const y = v.getInt32(4, true) * h.scale[1] + h.origin[1];
     const z = v.getInt32(8, true) * h.scale[2] + h.origin[2];
-    all.push(x, y, z);
-    if (classOf(h.format, record, at) === GROUND) ground.push(x, y, z);
+    all[3 * n] = x;
+    all[3 * n + 1] = y;
+    all[3 * n++ + 2] = z;
+    if (classes === 'ground' && classOf(h.format, record, at) === GROUND) {
+      ground[3 * g] = x;
+      ground[3 * g + 1] = y;
+      ground[3 * g++ + 2] = z;
+    }
   });
   const warnings: string[] = [];
-  let chosen = all;
+  let chosen = all.subarray(0, 3 * n);
   if (classes === 'ground') {
-    if (ground.length > 0) {
-      chosen = ground;
-      if (ground.length < all.length) warnings.push(`read ${ground.length / 3} ground points (class 2) of ${all.length / 3}; --classes all reads every point`);
+    if (g > 0) {
+      chosen = ground.subarray(0, 3 * g);
+      if (g < n) warnings.push(`read ${g} ground points (class 2) of ${n}; --classes all reads every point`);
     } else {
-      warnings.push(`no point is classified ground (class 2): read all ${all.length / 3} points`);
+      warnings.push(`no point is classified ground (class 2): read all ${n} points`);
     }
   }
-  return { xyz: Float64Array.from(chosen), ...(h.crs ? { crs: h.crs } : {}), warnings };
+  return { xyz: chosen.slice(), ...(h.crs ? { crs: h.crs } : {}), warnings };
 }
