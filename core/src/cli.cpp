@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <optional>
 #include <cstdlib>
+#include <optional>
 
 #include "hodt/cli_help.hpp"
 #include "hodt/cli_progress.hpp"
@@ -51,10 +51,6 @@ std::string describe(const Solution& s, const std::string& source) {
   if (s.order > 1) d += ", order " + std::to_string(s.order);
   return d + ", from " + source;
 }
-
-}  // namespace
-
-namespace {
 
 // --nodata V: points whose height is V are gaps, not terrain.
 void drop_nodata(ParsedPoints& p, double nodata, const std::string& name) {

@@ -199,20 +199,19 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   if (added) model = region_model(dt, R, o, {}, options.progress);
   StateDpLimits dl;
   dl.progress = options.progress;
-  std::string how;
-  std::vector<uint32_t> x;
-  try {
-    x = solve_states(model.graph, dl).state;
-    how = "the best combination of the regions' listed triangulations";
-  } catch (const LimitError&) {
-    // Local search, from the start and from the mini-bucket DP's assignment.
-    x = improve_states(model.graph, model.variable_states(states_of(R, start)), options.progress);
-    how = "local search from the first order optimum";
-    StateDpLimits mini = dl;
-    mini.mini_buckets = true;
-    const std::vector<uint32_t> y = improve_states(model.graph, solve_states(model.graph, mini).state, options.progress);
+  // The DP over the listed triangulations; where its tables are too large it runs
+  // over mini-buckets, whose assignment is then one start of the local search.
+  StateDpLimits mini = dl;
+  mini.mini_buckets = true;
+  const StateDpResult listed = solve_states(model.graph, mini);
+  std::vector<uint32_t> x = listed.state;
+  std::string how = "the best combination of the regions' listed triangulations";
+  if (listed.bound_only) {
+    x = improve_states(model.graph, x, options.progress);
+    how = "local search from the mini-bucket DP";
+    const std::vector<uint32_t> y = improve_states(model.graph, model.variable_states(states_of(R, start)), options.progress);
     if (better(info(o).sense, evaluate_states(model.graph, y), evaluate_states(model.graph, x)))
-      x = y, how = "local search from the mini-bucket DP";
+      x = y, how = "local search from the first order optimum";
     StateDpLimits window = dl;
     window.max_table = 1 << 16;
     x = improve_by_windows(model.graph, x, window, 24);

@@ -313,10 +313,6 @@ ParsedPoints read_ascii_grid(std::string_view text, const Reader& r) {
   return out;
 }
 
-}  // namespace
-
-namespace {
-
 // Binary files named by their first bytes: read as text they give a misleading
 // "line 2: x is ..." and garbage on the terminal.
 std::optional<std::string> binary_format(std::string_view b) {

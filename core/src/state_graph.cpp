@@ -31,7 +31,6 @@ size_t factor_index(const StateFactor& f, const std::vector<uint32_t>& state) {
   return idx;
 }
 
-
 }  // namespace
 
 void simplify(StateGraph& g, const Progress& progress) {
@@ -98,50 +97,6 @@ double evaluate_states(const StateGraph& g, const std::vector<uint32_t>& state) 
 }
 
 namespace {
-
-// Merges the states of each variable that every factor sees alike, keeping the
-// one of best unary value: returns the graph over the kept states (variables
-// left with one state drop out of every factor: they would only widen the bags)
-// and, per variable, which state each kept one is.
-StateGraph merge_states(StateGraph g, std::vector<std::vector<uint32_t>>& kept, const Progress& progress) {
-  simplify(g, progress);
-  const Ops ops{g.combine, g.sense};
-  const uint32_t n = static_cast<uint32_t>(g.domain.size());
-  std::vector<std::vector<std::pair<uint32_t, uint32_t>>> seen_by(n);  // (factor, position)
-  for (uint32_t i = 0; i < g.factors.size(); ++i)
-    for (uint32_t j = 0; j < g.factors[i].scope.size(); ++j) seen_by[g.factors[i].scope[j]].push_back({i, j});
-  kept.assign(n, {});
-  for (uint32_t x = 0; x < n; ++x) {
-    if (progress && (x & 255) == 0 && !progress(x, n)) throw Cancelled();
-    std::map<std::vector<uint32_t>, uint32_t> by_signature;
-    for (uint32_t s = 0; s < g.domain[x]; ++s) {
-      std::vector<uint32_t> sig;
-      sig.reserve(seen_by[x].size());
-      for (auto [i, j] : seen_by[x]) sig.push_back(g.factors[i].project[j][s]);
-      auto [it, fresh] = by_signature.try_emplace(std::move(sig), static_cast<uint32_t>(kept[x].size()));
-      if (fresh) kept[x].push_back(s);
-      else if (ops.better(g.unary[x][s], g.unary[x][kept[x][it->second]])) kept[x][it->second] = s;
-    }
-  }
-  StateGraph h;
-  h.combine = g.combine, h.sense = g.sense, h.constant = g.constant, h.term_max = g.term_max;
-  h.unary_terms = g.unary_terms, h.partial = g.partial;
-  for (uint32_t x = 0; x < n; ++x) {
-    h.domain.push_back(static_cast<uint32_t>(kept[x].size()));
-    h.unary.emplace_back();
-    for (uint32_t s : kept[x]) h.unary[x].push_back(g.unary[x][s]);
-  }
-  for (StateFactor& f : g.factors) {
-    for (size_t j = 0; j < f.scope.size(); ++j) {
-      std::vector<uint32_t> p;
-      for (uint32_t s : kept[f.scope[j]]) p.push_back(f.project[j][s]);
-      f.project[j].swap(p);
-    }
-    h.factors.push_back(std::move(f));
-  }
-  simplify(h, progress);
-  return h;
-}
 
 // The classes of a variable's states that a set of maps cannot tell apart
 // (state -> class in `cls`); returns their number.
@@ -270,21 +225,21 @@ Order plan_order(const StateGraph& g, double cap, bool mini, const Progress& pro
     for (const auto& p : f.project) s.map.push_back(&p);
     o.tables.push_back(std::move(s));
   }
-  std::vector<double> cost(n);
+  std::vector<Bag> current(n);  // per variable: its bag as last pushed (the heap's stale entries skipped)
   using Entry = std::pair<double, uint32_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
   auto push = [&](uint32_t v) {
-    cost[v] = bag_of(g, o, tables_of, v).size;
-    heap.push({cost[v], v});
+    current[v] = bag_of(g, o, tables_of, v);
+    heap.push({current[v].size, v});
   };
   for (uint32_t v = 0; v < n; ++v) push(v);
   std::vector<uint8_t> gone(n, 0);
   while (!heap.empty()) {
     const auto [c, v] = heap.top();
     heap.pop();
-    if (gone[v] || c != cost[v]) continue;  // stale
+    if (gone[v] || c != current[v].size) continue;  // stale
     if (progress && (o.steps.size() & 255) == 0 && !progress(0, 1)) throw Cancelled();
-    Bag bag = bag_of(g, o, tables_of, v);
+    Bag bag = std::move(current[v]);
     if (bag.size > cap && !mini) {
       o.largest = bag.size;
       return o;
@@ -314,10 +269,11 @@ Order plan_order(const StateGraph& g, double cap, bool mini, const Progress& pro
   return o;
 }
 
-// Variable elimination over a greedy order.
+// Variable elimination over a greedy order. (States that no table tells apart
+// need no merging first: each bag reads its variables through their classes.)
 StateDpResult eliminate(const StateGraph& input, const StateDpLimits& limits) {
-  std::vector<std::vector<uint32_t>> original;  // per variable: kept state -> state
-  const StateGraph g = merge_states(input, original, limits.progress);
+  StateGraph g = input;
+  simplify(g, limits.progress);
   const Ops ops{g.combine, g.sense};
   const uint32_t n = static_cast<uint32_t>(g.domain.size());
   Order order = plan_order(g, limits.max_table, limits.mini_buckets, limits.progress);
@@ -411,18 +367,16 @@ StateDpResult eliminate(const StateGraph& input, const StateDpLimits& limits) {
   }
   // Rebuild in reverse elimination order: each step's message reads only
   // variables eliminated after it.
-  std::vector<uint32_t> reduced(n, 0);
+  r.state.assign(n, 0);
   for (size_t i = order.steps.size(); i-- > 0;) {
     const Bag& bag = order.steps[i];
     size_t idx = 0, stride = 1;
     for (size_t p = 1; p < bag.vars.size(); ++p) {
-      idx += stride * bag.cls[p][reduced[bag.vars[p]]];
+      idx += stride * bag.cls[p][r.state[bag.vars[p]]];
       stride *= bag.count[p];
     }
-    reduced[bag.vars[0]] = best_state[i][best_class[i][idx]];
+    r.state[bag.vars[0]] = best_state[i][best_class[i][idx]];
   }
-  r.state.resize(n);
-  for (uint32_t x = 0; x < n; ++x) r.state[x] = original[x][reduced[x]];
   r.value = constant;
   return r;
 }
@@ -566,6 +520,8 @@ std::vector<uint32_t> improve_by_windows(const StateGraph& g, std::vector<uint32
         if (w != v) neighbours[v].push_back(w);
     }
   std::vector<uint32_t> local(n, UINT32_MAX);
+  std::vector<uint32_t> in_window(g.factors.size(), 0);  // per factor: the last window that took it
+  uint32_t window_id = 0;
   for (int pass = 0; pass < 2; ++pass) {
     bool improved = false;
     std::vector<uint8_t> covered(n, 0);
@@ -590,11 +546,11 @@ std::vector<uint32_t> improve_by_windows(const StateGraph& g, std::vector<uint32
         h.unary.push_back(g.unary[v]);
       }
       std::vector<uint32_t> fixed;
-      std::vector<uint8_t> seen(g.factors.size(), 0);
+      ++window_id;
       for (uint32_t v : ball)
         for (uint32_t i : factors_of[v]) {
-          if (seen[i]) continue;
-          seen[i] = 1;
+          if (in_window[i] == window_id) continue;
+          in_window[i] = window_id;
           StateFactor f = g.factors[i];
           for (size_t j = 0; j < f.scope.size(); ++j) {
             uint32_t& w = f.scope[j];
@@ -683,16 +639,10 @@ StateGraph relaxation(const StateGraph& g) {
   return h;
 }
 
-double relaxation_bound(const StateGraph& g, const StateDpLimits& limits) {
-  const StateGraph h = relaxation(g);
-  try {
-    return solve_states(h, limits).value;
-  } catch (const LimitError&) {
-    StateDpLimits mini = limits;
-    mini.mini_buckets = true;
-    const double v = solve_states(h, mini).value;
-    return g.sense == Sense::Min ? std::max(v, independent_bound(g)) : std::min(v, independent_bound(g));
-  }
+double relaxation_bound(const StateGraph& g, StateDpLimits limits) {
+  limits.mini_buckets = true;
+  const StateDpResult r = solve_states(relaxation(g), limits);
+  return r.bound_only ? tighter(g.sense, r.value, independent_bound(g)) : r.value;
 }
 
 }  // namespace hodt

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "hodt/error.hpp"
 #include "hodt/k_order.hpp"
 
 namespace hodt {
@@ -51,15 +50,19 @@ std::optional<ViewBound> view_bound(const Mesh& dt, const Regions& R, Objective 
     }
     if (!any) break;
     const RegionModel M = region_model(dt, R, o, {}, limits.views.progress, &views);
-    StateDpResult sol;
-    try {
-      sol = solve_states(relaxation(M.graph), limits.dp);
-    } catch (const LimitError&) {
-      break;
-    }
+    // Where the tables are too large, mini-buckets: still a bound, but their
+    // assignment is no optimum to refine the views by, so the rounds stop.
+    StateDpLimits dp = limits.dp;
+    dp.mini_buckets = true;
+    const StateDpResult sol = solve_states(relaxation(M.graph), dp);
     ViewBound b;
     b.bound = out ? tighter(info(o).sense, out->bound, sol.value) : sol.value;  // (every round's is a bound)
     b.rounds = round + 1;
+    if (sol.bound_only) {
+      b.split_regions = out ? out->split_regions : 0;
+      out = std::move(b);
+      break;
+    }
     // The solution's state of each region's list, or of each of its views (0
     // where a list or view has no variable: one state).
     bool realised = true;

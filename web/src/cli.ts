@@ -61,13 +61,13 @@ const notes: string[] = [];
 if (path !== undefined) {
   input = read(path);
   if (!(input instanceof Error)) {
-    const { sniffFormat, readPointFile } = await import('./loaders/index.js');
+    const { sniffFormat, readGeoTIFF, readLAS } = await import('./loaders/index.js');
     const format = sniffFormat(input);
     if (format) {
       const at = args.indexOf('--classes');
       const classes = at >= 0 ? (args[at + 1] as 'ground' | 'all') : 'ground';
       try {
-        const cloud = (await readPointFile(input, { classes }))!;
+        const cloud = format === 'geotiff' ? await readGeoTIFF(input) : await readLAS(input, { classes });
         const lines: string[] = [];
         for (let i = 0; i < cloud.xyz.length; i += 3) lines.push(`${cloud.xyz[i]} ${cloud.xyz[i + 1]} ${cloud.xyz[i + 2]}`);
         input = Buffer.from(lines.join('\n') + '\n', 'utf8');
@@ -77,7 +77,7 @@ if (path !== undefined) {
         // Point clouds repeat (x, y) across returns: keep the first unless told.
         if (format === 'las' && !args.includes('--dedupe')) args.push('--dedupe', 'first');
       } catch (e) {
-        input = new Error(failure(e).message); // (the core names the file)
+        input = new Error(failure(e).message); // (a message, no code: the core prints it after the file's name)
       }
     }
   }

@@ -3,7 +3,8 @@
 // decomposition, or heuristically with a relaxation bound. A factor reads each of
 // its variables through a projection of the states to classes (what the factor
 // sees of a state: a fan around a vertex, an apex beside an edge), so its table
-// stays small; states no factor can tell apart are merged before the DP.
+// stays small; the elimination reads each variable of a bag through the classes
+// its tables can tell apart.
 #pragma once
 #include <cmath>
 #include <cstdint>
@@ -84,8 +85,8 @@ std::vector<uint32_t> improve_by_windows(const StateGraph& g, std::vector<uint32
 // variable, replaced by the best value a term can take. Its optimum is a proven
 // bound on the optimum over all assignments, including the states not listed.
 StateGraph relaxation(const StateGraph& g);
-// That optimum, by the DP (or, when its tables are too large, a bound from the
-// DP over mini-buckets, or each factor at its best on its own: weaker bounds).
-double relaxation_bound(const StateGraph& g, const StateDpLimits& limits = {});
+// That optimum, by the DP (where its tables are too large, over mini-buckets,
+// and then no weaker than each factor at its best on its own).
+double relaxation_bound(const StateGraph& g, StateDpLimits limits = {});
 
 }  // namespace hodt

@@ -65,9 +65,9 @@ function readHeader(bytes: Uint8Array): Header {
   return h;
 }
 
-// The classification byte of a record (formats 6 to 10 keep it whole at byte 16).
-const classOf = (format: number, record: Uint8Array, at: number) =>
-  format >= 6 ? record[at + 16]! : record[at + 15]! & 0x1f;
+// The classification of the record at `at` (formats 6 to 10 keep it whole at byte 16).
+const classOf = (format: number, view: DataView, at: number) =>
+  format >= 6 ? view.getUint8(at + 16) : view.getUint8(at + 15) & 0x1f;
 
 interface LazModule {
   HEAPU8: Uint8Array;
@@ -82,12 +82,13 @@ interface LazModule {
   };
 }
 
-// Calls visit(record, at) for every point record, decompressing LAZ.
-async function forEachRecord(bytes: Uint8Array, h: Header, visit: (record: Uint8Array, at: number) => void) {
+// Calls visit(view, at) for each of the header's point records, decompressing LAZ.
+async function forEachRecord(bytes: Uint8Array, h: Header, visit: (view: DataView, at: number) => void) {
   if (!h.compressed) {
     if (h.offset + h.count * h.recordLength > bytes.length)
       throw new Error(`LAS: the header promises ${h.count} points of ${h.recordLength} bytes; the file is shorter`);
-    for (let i = 0; i < h.count; ++i) visit(bytes, h.offset + i * h.recordLength);
+    const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+    for (let i = 0; i < h.count; ++i) visit(view, h.offset + i * h.recordLength);
     return;
   }
   const { createLazPerf } = (await import('laz-perf')) as unknown as { createLazPerf: () => Promise<LazModule> };
@@ -98,12 +99,13 @@ async function forEachRecord(bytes: Uint8Array, h: Header, visit: (record: Uint8
   try {
     laz.HEAPU8.set(bytes, file);
     zip.open(file, bytes.length);
-    const length = zip.getPointLength();
-    point = laz._malloc(length);
-    const count = zip.getCount();
-    for (let i = 0; i < count; ++i) {
+    if (zip.getCount() < h.count) throw new Error(`the header promises ${h.count} points, the data hold ${zip.getCount()}`);
+    point = laz._malloc(zip.getPointLength());
+    let view = new DataView(laz.HEAPU8.buffer);
+    for (let i = 0; i < h.count; ++i) {
       zip.getPoint(point);
-      visit(laz.HEAPU8, point); // (HEAPU8 read afresh: the heap may grow)
+      if (view.buffer !== laz.HEAPU8.buffer) view = new DataView(laz.HEAPU8.buffer); // (the heap grew)
+      visit(view, point);
     }
   } catch (e) {
     throw new Error(`LAZ: cannot decompress: ${e instanceof Error ? e.message : String(e)}`);
@@ -118,44 +120,26 @@ export async function readLAS(bytes: Uint8Array, options: LASOptions = {}): Prom
   const classes = options.classes ?? 'ground';
   if (classes !== 'ground' && classes !== 'all') throw new Error(`LAS: classes must be 'ground' or 'all', got '${String(classes)}'`);
   const h = readHeader(bytes);
-  // Typed arrays sized by the header's count (a LAZ may hold fewer: trimmed after).
-  let all = new Float64Array(3 * h.count);
-  let ground = new Float64Array(classes === 'ground' ? 3 * h.count : 0);
+  const all = new Float64Array(3 * h.count);
+  const ground = new Float64Array(classes === 'ground' ? 3 * h.count : 0);
   let n = 0;
   let g = 0;
-  await forEachRecord(bytes, h, (record, at) => {
-    if (3 * n >= all.length) {
-      const grown = new Float64Array(2 * all.length + 3);
-      grown.set(all);
-      all = grown;
-      if (classes === 'ground') {
-        const more = new Float64Array(grown.length);
-        more.set(ground);
-        ground = more;
-      }
-    }
-    const v = new DataView(record.buffer, record.byteOffset + at, 12);
-    const x = v.getInt32(0, true) * h.scale[0] + h.origin[0];
-    const y = v.getInt32(4, true) * h.scale[1] + h.origin[1];
-    const z = v.getInt32(8, true) * h.scale[2] + h.origin[2];
+  await forEachRecord(bytes, h, (view, at) => {
+    const x = view.getInt32(at, true) * h.scale[0] + h.origin[0];
+    const y = view.getInt32(at + 4, true) * h.scale[1] + h.origin[1];
+    const z = view.getInt32(at + 8, true) * h.scale[2] + h.origin[2];
     all[3 * n] = x;
     all[3 * n + 1] = y;
     all[3 * n++ + 2] = z;
-    if (classes === 'ground' && classOf(h.format, record, at) === GROUND) {
+    if (classes === 'ground' && classOf(h.format, view, at) === GROUND) {
       ground[3 * g] = x;
       ground[3 * g + 1] = y;
       ground[3 * g++ + 2] = z;
     }
   });
   const warnings: string[] = [];
-  let chosen = all.subarray(0, 3 * n);
-  if (classes === 'ground') {
-    if (g > 0) {
-      chosen = ground.subarray(0, 3 * g);
-      if (g < n) warnings.push(`read ${g} ground points (class 2) of ${n}; --classes all reads every point`);
-    } else {
-      warnings.push(`no point is classified ground (class 2): read all ${n} points`);
-    }
-  }
-  return { xyz: chosen.slice(), ...(h.crs ? { crs: h.crs } : {}), warnings };
+  if (classes === 'ground' && g === 0) warnings.push(`no point is classified ground (class 2): read all ${n} points`);
+  if (classes === 'all' || g === 0) return { xyz: all, ...(h.crs ? { crs: h.crs } : {}), warnings };
+  if (g < n) warnings.push(`read ${g} ground points (class 2) of ${n}; --classes all reads every point`);
+  return { xyz: ground.slice(0, 3 * g), ...(h.crs ? { crs: h.crs } : {}), warnings };
 }
