@@ -66,7 +66,7 @@ struct Local {
     } else if (edge_site(d.site)) {
       for (uint32_t h : {e, next_halfedge(e), prev_halfedge(e), next_halfedge(f), prev_halfedge(f)}) v = add(v, edge(h));
     } else {
-      for (uint32_t t : {e / 3, f / 3}) v = add(v, d.triangle(m, {m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]}));
+      for (uint32_t t : {e / 3, f / 3}) v = add(v, triangle_term(d, m, {m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]}));
     }
     return v;
   }
@@ -75,7 +75,7 @@ struct Local {
 }  // namespace
 
 uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o, const Progress& progress) {
-  const ObjectiveTerms& d = objective_terms(o);
+  const ObjectiveTerms& d = objective_terms(o, m);
   const Sense sense = info(o).sense;
   std::vector<uint8_t> on_hull(m.num_vertices(), 0);
   for (uint32_t v : m.hull) on_hull[v] = 1;

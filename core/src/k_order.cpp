@@ -181,8 +181,9 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // listed (the first order optimum's among them, so never worse than it), by the
   // same DP when its tables fit, else by local search; the bound is the
   // relaxation's optimum.
-  Mesh start = first_order.get();
-  double start_value = first_order.value;
+  // (At order 1 the engine is the first order solver, within a domain: Delaunay starts.)
+  Mesh start = k == 1 ? dt : first_order.get();
+  double start_value = k == 1 ? evaluate(o, dt) : first_order.value;
   bool added = add_states_of(R, dt, start);
   // A ladder: every j-OD triangulation (j < k) is k-OD, so the result at a lower
   // order gives each region one more listed triangulation (and a start no

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "hodt/domain.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/pair_measures.hpp"
 #include "hodt/star_cone.hpp"
@@ -119,6 +120,17 @@ std::array<ObjectiveTerms, kNumObjectives> make_table() {
   return t;
 }
 
+// Within a domain the shortcuts that summarise a star without its triangles
+// cannot see which triangles are inside: they are off.
+std::array<ObjectiveTerms, kNumObjectives> with_domain(std::array<ObjectiveTerms, kNumObjectives> t) {
+  for (ObjectiveTerms& d : t) {
+    d.neighbor_class = nullptr, d.term_of_classes = nullptr, d.drop_neighbors = nullptr, d.term_of_degree = nullptr;
+    d.edge_reads_apexes = true;
+    d.domain = true;
+  }
+  return t;
+}
+
 }  // namespace
 
 void star_neighbors(uint32_t v, const std::vector<Tri>& triangles, std::vector<uint32_t>& out) {
@@ -136,27 +148,66 @@ uint32_t neighbor_classes(const ObjectiveTerms& d, const Mesh& m, uint32_t v, co
   return mask;
 }
 
-const ObjectiveTerms& objective_terms(Objective o) {
-  static const std::array<ObjectiveTerms, kNumObjectives> table = make_table();
-  return table[static_cast<size_t>(o)];
+const ObjectiveTerms& objective_terms(Objective o, const Mesh& m) {
+  static const std::array<ObjectiveTerms, kNumObjectives> table = make_table(), domain_table = with_domain(make_table());
+  return (has_domain(m) ? domain_table : table)[static_cast<size_t>(o)];
 }
 
-double vertex_term(const ObjectiveTerms& d, const Mesh& m, const Star& s, double cut) {
-  if (d.site != TermSite::VertexPair) return d.vertex(m, s);
+namespace {
+
+// The pairs of a star's triangles, the largest measure (0 if none).
+double largest_pair(const ObjectiveTerms& d, const Mesh& m, const Tri* tris, uint32_t n, double cut) {
   double best = 0;
-  for (uint32_t i = 0; i < s.num_triangles; ++i)
-    for (uint32_t j = i + 1; j < s.num_triangles; ++j)
-      best = std::max(best, d.pair(m, s.triangles[i], s.triangles[j], std::max(best, cut)));
+  for (uint32_t i = 0; i < n; ++i)
+    for (uint32_t j = i + 1; j < n; ++j) best = std::max(best, d.pair(m, tris[i], tris[j], std::max(best, cut)));
   return best;
 }
 
+// A vertex term within a domain: the star's inside triangles only.
+double vertex_term_in_domain(const ObjectiveTerms& d, const Mesh& m, const Star& s, double cut) {
+  static thread_local std::vector<Tri> inside;
+  static thread_local std::vector<uint32_t> nb;
+  inside.clear();
+  for (uint32_t i = 0; i < s.num_triangles; ++i)
+    if (triangle_inside(m, s.triangles[i])) inside.push_back(s.triangles[i]);
+  switch (d.site) {
+    case TermSite::InteriorVertex:  // counted only when its whole star is inside
+      return inside.size() == s.num_triangles ? d.vertex(m, s) : 0;
+    case TermSite::VertexPair:
+      return largest_pair(d, m, inside.data(), static_cast<uint32_t>(inside.size()), cut);
+    default:  // the neighbours joined by an edge of an inside triangle
+      star_neighbors(s.center, inside, nb);
+      return d.vertex(m, Star(s.center, nb, inside));
+  }
+}
+
+}  // namespace
+
+double vertex_term(const ObjectiveTerms& d, const Mesh& m, const Star& s, double cut) {
+  if (d.domain != has_domain(m)) throw std::logic_error("objective terms read with the wrong domain");
+  if (d.domain) return vertex_term_in_domain(d, m, s, cut);
+  if (d.site != TermSite::VertexPair) return d.vertex(m, s);
+  return largest_pair(d, m, s.triangles, s.num_triangles, cut);
+}
+
 double edge_term(const ObjectiveTerms& d, const Mesh& m, uint32_t u, uint32_t v, uint32_t w, uint32_t x, double cut) {
+  if (d.domain) {
+    // An interior edge counts with an inside triangle on each side, a length
+    // with one on either side.
+    const bool left = w != kNoApex && triangle_inside(m, {u, v, w});
+    const bool right = x != kNoApex && triangle_inside(m, {v, u, x});
+    if (d.site == TermSite::Edge ? !left && !right : !left || !right) return 0;
+  }
   if (d.site != TermSite::EdgePair) return d.edge(m, u, v, w, x);
   return d.pair(m, Tri{u, v, w}, Tri{v, u, x}, cut);
 }
 
+double triangle_term(const ObjectiveTerms& d, const Mesh& m, const Tri& t) {
+  return d.domain && !triangle_inside(m, t) ? 0 : d.triangle(m, t);
+}
+
 double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
-  const ObjectiveTerms& d = objective_terms(o);
+  const ObjectiveTerms& d = objective_terms(o, m);
   // Sums are added in sorted order, so that equal triangulations listed
   // differently have bit-identical totals.
   std::vector<double> terms;
@@ -178,8 +229,8 @@ double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
       const double deg = st.degree(v);
       step(v, m.num_vertices(), 16 + deg * deg * (d.site == TermSite::VertexPair ? 4 : deg));
       if (interior_only(d.site) && st.on_hull[v]) continue;
-      tris.clear();  // (only pair terms read the triangles)
-      if (d.site == TermSite::VertexPair)
+      tris.clear();  // (only pair terms and domains read the triangles)
+      if (reads_star_triangles(d))
         for (uint32_t i = st.tri_offset[v]; i < st.tri_offset[v + 1]; ++i) tris.push_back(base_triangle(m, st.triangle[i]));
       add(vertex_term(d, m, Star(v, st.neighbor.data() + st.offset[v], st.degree(v), tris.data(), static_cast<uint32_t>(tris.size())),
                       max));
@@ -192,7 +243,7 @@ double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
       add(edge_term(d, m, m.origin(e), m.target(e), m.apex(e), f < 0 ? kNoApex : m.apex(static_cast<uint32_t>(f)), max));
     }
   } else {
-    for (uint32_t t = 0; t < m.num_triangles(); ++t) step(t, m.num_triangles(), 16), add(d.triangle(m, base_triangle(m, t)));
+    for (uint32_t t = 0; t < m.num_triangles(); ++t) step(t, m.num_triangles(), 16), add(triangle_term(d, m, base_triangle(m, t)));
   }
   return d.combine == TermCombine::Sum ? order_free_sum(std::move(terms), progress) : max;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "hodt/domain.hpp"
 #include "hodt/measures.hpp"
 
 namespace hodt {
@@ -144,7 +145,9 @@ std::optional<CriticalPair> first_largest_pair(const Mesh& m, bool edge, Feature
                                                const Progress& progress) {
   std::optional<CriticalPair> best;
   WorkCounter work;
+  const std::vector<uint8_t> inside = inside_triangles(m);  // (pairs of inside triangles only)
   auto consider = [&](uint32_t s, uint32_t t, const auto& fs, const auto& ft) {
+    if (!inside[s] || !inside[t]) return;
     const double v = value(fs, ft, best ? best->value : -INFINITY);
     if (!best || v > best->value) best = CriticalPair{base_triangle(m, s), base_triangle(m, t), v};
   };

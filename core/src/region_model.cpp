@@ -41,7 +41,7 @@ struct Fans {
 // share a class: what vertex terms see; for vertex-pair terms, the same triangles.
 Fans fans_of(const Mesh& dt, const ObjectiveTerms& d, const std::vector<std::vector<Tri>>& states,
              const std::function<void()>& tick) {
-  const bool by_neighbors = d.site != TermSite::VertexPair;
+  const bool by_neighbors = !reads_star_triangles(d);
   Fans f;
   for (const Tri& t : states[0]) f.vertices.insert(f.vertices.end(), t.begin(), t.end());
   std::sort(f.vertices.begin(), f.vertices.end());
@@ -129,7 +129,7 @@ struct Builder {
     for (uint32_t r = 0; r < R.regions.size(); ++r) {
       const uint32_t i = first_src[r];
       for (uint32_t s = 0; s < states(i).size(); ++s)
-        for (const Tri& t : states(i)[s]) add_unary(i, s, d.triangle(dt, t), s == 0);
+        for (const Tri& t : states(i)[s]) add_unary(i, s, triangle_term(d, dt, t), s == 0);
     }
   }
 
@@ -293,7 +293,7 @@ struct Builder {
 
 RegionModel region_model(const Mesh& dt, const Regions& R, Objective o, const RegionModelLimits& limits,
                          const Progress& progress, const std::vector<std::vector<RegionView>>* views) {
-  const ObjectiveTerms& d = objective_terms(o);
+  const ObjectiveTerms& d = objective_terms(o, dt);
   RegionModel M;
   StateGraph& g = M.graph;
   g.combine = d.combine;

@@ -14,7 +14,7 @@ constexpr uint32_t kVertexEntry = UINT32_MAX, kEdgeEntry = UINT32_MAX - 1;
 }  // namespace
 
 RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o, const Candidates* candidates)
-    : dt_(dt), R_(R), cand_(candidates), d_(objective_terms(o)), sense_(info(o).sense), filter_(dt, R, d_) {
+    : dt_(dt), R_(R), cand_(candidates), d_(objective_terms(o, dt)), sense_(info(o).sense), filter_(dt, R, d_) {
   const uint32_t n = dt.num_vertices();
   std::vector<uint32_t> count(n, 0), seen(n, UINT32_MAX);
   for (uint32_t r = 0; r < R.regions.size(); ++r) {
@@ -36,7 +36,7 @@ RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o, const Ca
     useful_degree_.assign(n, 0);
     for (const auto& [a, b] : R.useful) ++useful_degree_[a], ++useful_degree_[b];
   }
-  if (reads_fans() && cand_ && floor_ > 0) {
+  if (d_.site == TermSite::VertexPair && cand_ && floor_ > 0) {
     candidate_fan_.resize(n);
     for (const auto& [e, apexes] : *cand_)
       for (uint32_t x : apexes) {
@@ -68,7 +68,7 @@ double RegionTerms::fixed_terms_max() const {
   double m = 0;
   if (reads_triangles()) {
     for (uint32_t t = 0; t < dt_.num_triangles(); ++t)
-      if (fixed(t)) m = std::max(m, d_.triangle(dt_, base_triangle(dt_, t)));
+      if (fixed(t)) m = std::max(m, triangle_term(d_, dt_, base_triangle(dt_, t)));
   } else if (reads_edges()) {
     for (uint32_t e = 0; e < dt_.halfedges.size(); ++e) {
       const int32_t f = dt_.halfedges[e];

@@ -1,12 +1,16 @@
 #include "hodt/solve.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <unordered_set>
 
 #include "hodt/approx.hpp"
 #include "hodt/baker.hpp"
 #include "hodt/brute_force.hpp"
+#include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/exact.hpp"
+#include "hodt/fill_enumerator.hpp"
 #include "hodt/factor_models.hpp"
 #include "hodt/k_order.hpp"
 #include "hodt/min_max_degree.hpp"
@@ -80,6 +84,37 @@ Solution dispatch(const FirstOrder& fo, Objective objective, const SolveOptions&
   throw std::logic_error("unknown method");
 }
 
+// Can a first order triangulation have a triangle outside the domain? If not,
+// every measure is the one without a domain, and the first order paths apply.
+bool domain_reachable(const FirstOrder& fo) {
+  if (!has_domain(fo.base)) return false;
+  const std::vector<uint8_t> inside = inside_triangles(fo.base);
+  if (std::find(inside.begin(), inside.end(), 0) != inside.end()) return true;
+  for (uint32_t q = 0; q < fo.num_quads(); ++q) {
+    uint32_t t[6];
+    fo.triangles_of(q, true, t);
+    if (!triangle_inside(fo.base, {t[0], t[1], t[2]}) || !triangle_inside(fo.base, {t[3], t[4], t[5]})) return true;
+  }
+  return false;
+}
+
+// Within a domain the first order rules (Theorem 1, the extrema and 2-SAT
+// models, Baker) do not hold: the region engine, which reads the objective's
+// terms as the domain measures them, solves order 1 too (its regions are the
+// quads), and its triangulation becomes a choice of diagonals.
+Solution solve_in_domain(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
+  if (!fo.is_delaunay) throw InputError("a domain (maxEdge) needs a terrain built from points, not a given triangulation");
+  Solution s = k_order_solution(fo, objective, 1, options);
+  std::unordered_set<uint64_t> edges;
+  const Mesh& m = *s.mesh;
+  for (uint32_t e = 0; e < m.triangles.size(); ++e) edges.insert(edge_key(m.origin(e), m.target(e)));
+  s.choice.assign(fo.num_quads(), 0);
+  for (uint32_t q = 0; q < fo.num_quads(); ++q) s.choice[q] = edges.count(edge_key(fo.quads[q].c, fo.quads[q].d)) > 0;
+  s.mesh.reset();
+  s.non_delaunay_edges = 0;
+  return s;
+}
+
 }  // namespace
 
 Solution solve(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
@@ -87,6 +122,7 @@ Solution solve(const FirstOrder& fo, Objective objective, const SolveOptions& op
   SolveOptions run = options;
   run.progress = paced(options.progress, options.progress_interval_ms);
   if (run.order > 1) return k_order_solution(fo, objective, run.order, run);
+  if (run.method != Method::BruteForce && domain_reachable(fo)) return solve_in_domain(fo, objective, run);
   const auto t0 = std::chrono::steady_clock::now();
   Solution s = dispatch(fo, objective, run);
   if (!s.critical && is_pair_objective(objective))

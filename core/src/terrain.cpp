@@ -1,6 +1,7 @@
 #include "hodt/terrain.hpp"
 
 #include "hodt/delaunay.hpp"
+#include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 
 #include <algorithm>
@@ -25,6 +26,12 @@ Terrain Terrain::from_triangulation(const std::vector<double>& xyz, const std::v
   t.num_input_ = static_cast<uint32_t>(xyz.size() / 3);
   t.fo_ = singly_flippable(std::move(pts.xyz), triangles, flippable_edges);
   return t;
+}
+
+void Terrain::set_max_edge(double max_edge) {
+  check_max_edge(max_edge);
+  fo_.base.coords.set_max_edge(max_edge);
+  forget_delaunay_values();
 }
 
 std::vector<uint32_t> Terrain::to_input(std::vector<uint32_t> indices) const {

@@ -73,6 +73,7 @@ void Terrain::restructure(Mesh mesh, std::vector<uint8_t> marked, const std::vec
 
 void Terrain::rebuild(const std::vector<double>& xyz, const std::vector<uint32_t>& input_of, uint32_t num_input) {
   Terrain t = from_points(xyz);
+  t.fo_.base.coords.set_max_edge(max_edge());
   for (uint32_t& i : t.input_index_) i = input_of[i];
   t.num_input_ = num_input;
   *this = std::move(t);

@@ -84,7 +84,7 @@ TEST_CASE("neighbour classes give the same vertex terms as the stars they summar
     const Mesh m = delaunay(validate_points(seed % 2 ? dem_points(80, seed) : grid_points(7, 7, seed, true)).xyz);
     const Stars st = build_stars(m);
     for (const auto& oi : objectives()) {
-      const ObjectiveTerms& d = objective_terms(oi.objective);
+      const ObjectiveTerms& d = objective_terms(oi.objective, m);
       if (!d.neighbor_class) continue;
       for (uint32_t v = 0; v < m.num_vertices(); ++v) {
         std::vector<uint32_t> nb(st.neighbor.begin() + st.offset[v], st.neighbor.begin() + st.offset[v + 1]);

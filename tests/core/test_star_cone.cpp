@@ -68,7 +68,7 @@ TEST_CASE("star cone: a reduced star has the whole star's class in every complet
       (pick == 0 ? fixed : pick == 1 ? rest : part).push_back(w);
     }
     for (const Objective o : {Objective::MaxConvexVertices, Objective::MinMixedVertices}) {
-      const ObjectiveTerms& d = objective_terms(o);
+      const ObjectiveTerms& d = objective_terms(o, m);
       REQUIRE(static_cast<bool>(d.drop_neighbors));
       std::vector<uint32_t> order = part, nb;
       for (size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[static_cast<size_t>(r.below(static_cast<int>(i)))]);

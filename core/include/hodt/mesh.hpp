@@ -2,6 +2,7 @@
 // halfedges 3t, 3t+1, 3t+2; halfedge e runs from triangles[e] to
 // triangles[next_halfedge(e)]; halfedges[e] is its twin or -1 on the hull.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -28,9 +29,15 @@ class Coords {
     if (v_.use_count() > 1) v_ = std::make_shared<std::vector<double>>(*v_);
     return *v_;
   }
+  // The domain (domain.hpp): triangles with an edge longer than this (in the
+  // plane) are outside. It travels with the points, so every triangulation of
+  // them is measured the same way. Infinity: no domain.
+  double max_edge() const { return max_edge_; }
+  void set_max_edge(double max_edge) { max_edge_ = max_edge; }
 
  private:
   std::shared_ptr<std::vector<double>> v_;
+  double max_edge_ = INFINITY;
 };
 
 struct Mesh {

@@ -81,12 +81,17 @@ struct ObjectiveTerms {
   double (*term_of_degree)(uint32_t degree) = nullptr;
   // Edge terms: whether they read the apexes at all (a length does not).
   bool edge_reads_apexes = true;
+  // Measured within a domain (domain.hpp): the terms below read only inside
+  // triangles, so vertex terms need their star's triangles, edge terms their
+  // apexes, and the summaries above (classes, degree, dropped neighbours) are off.
+  bool domain = false;
 };
 
 // The classes of v's neighbours in nb, as a bit mask (neighbor_class set).
 uint32_t neighbor_classes(const ObjectiveTerms& d, const Mesh& points, uint32_t v, const std::vector<uint32_t>& nb);
 
-const ObjectiveTerms& objective_terms(Objective o);
+// The description for triangulations of m's points (with or without its domain).
+const ObjectiveTerms& objective_terms(Objective o, const Mesh& m);
 
 // The site a term is attached to: a vertex-pair term is a vertex's max over the
 // pairs of its star, an edge-pair term an interior edge's pair.
@@ -100,12 +105,18 @@ inline bool interior_only(TermSite s) {
   return s == TermSite::InteriorVertex || s == TermSite::InteriorEdge || s == TermSite::EdgePair;
 }
 
+// Do vertex terms read the triangles of the star (not only the neighbours)?
+inline bool reads_star_triangles(const ObjectiveTerms& d) { return d.site == TermSite::VertexPair || d.domain; }
+
 // One vertex term (vertex sites; hull vertices of an interior site are not asked).
-// cut: pair terms may answer anything <= cut when they are at most cut.
+// cut: pair terms may answer anything <= cut when they are at most cut. With a
+// domain the star's triangles must all be given: only inside ones are read.
 double vertex_term(const ObjectiveTerms& d, const Mesh& points, const Star& star, double cut = -INFINITY);
 // One edge term; x = kNoApex on the hull (only asked for the Edge site).
 double edge_term(const ObjectiveTerms& d, const Mesh& points, uint32_t u, uint32_t v, uint32_t w, uint32_t x,
                  double cut = -INFINITY);
+// One triangle term (0 for a triangle outside the domain).
+double triangle_term(const ObjectiveTerms& d, const Mesh& points, const Tri& t);
 
 // The identity of the combination (0: every term is >= 0, and a max over nothing is 0).
 inline double combine(TermCombine c, double a, double b) { return c == TermCombine::Sum ? a + b : (a > b ? a : b); }

@@ -60,6 +60,9 @@ inline bool in_circle(const double* a, const double* b, const double* c, const d
 // Position of r against the circle with diameter pq: +1 inside, 0 on, -1 outside.
 int diametral_sign(const double* p, const double* q, const double* r);
 
+// Sign of the plane (xy) length of ab minus `length`, exact: -1, 0, +1.
+int compare_length(const double* a, const double* b, double length);
+
 // Lexicographic xy order, exact: -1, 0, +1.
 int compare_xy(const double* a, const double* b);
 

@@ -43,7 +43,7 @@ class RegionTerms {
   double add(double value, double term) const { return combine(d_.combine, value, term); }
   // Which pieces of a triangulation the terms read.
   bool reads_vertices() const { return vertex_site(d_.site); }
-  bool reads_fans() const { return d_.site == TermSite::VertexPair; }  // else neighbours suffice
+  bool reads_fans() const { return reads_star_triangles(d_); }  // else neighbours suffice
   bool reads_edges() const { return edge_site(d_.site); }
   bool reads_apexes() const { return reads_edges() && d_.edge_reads_apexes; }
   bool reads_triangles() const { return d_.site == TermSite::Triangle; }
@@ -79,7 +79,7 @@ class RegionTerms {
   double boundary_edge(uint32_t r, uint32_t u, uint32_t v, uint32_t w, SignatureEntry& entry) const;
   // Edge u -> v inside a region: w the apex on its left, x on its right.
   double inside_edge(uint32_t u, uint32_t v, uint32_t w, uint32_t x) const;
-  double triangle(const Tri& t) const { return clip(d_.triangle(dt_, t)); }
+  double triangle(const Tri& t) const { return clip(triangle_term(d_, dt_, t)); }
   // With apexes: the apex that stands for w behind edge a -> b (on its right).
   // Apexes whose edge terms agree for every candidate apex in front of a -> b
   // are interchangeable; each kind is named by its smallest apex.

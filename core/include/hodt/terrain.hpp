@@ -37,6 +37,12 @@ class Terrain {
   void move_point(uint32_t i, double x, double y, double z);
   void remove_point(uint32_t i);
 
+  // The domain (domain.hpp): triangles with an edge longer than max_edge are
+  // not measured. Infinity (the default): no domain. Throws InputError for a
+  // length that is not positive.
+  double max_edge() const { return fo_.base.coords.max_edge(); }
+  void set_max_edge(double max_edge);
+
   const FirstOrder& structure() const { return fo_; }
   uint32_t num_input_points() const { return num_input_; }
   uint32_t to_input(uint32_t v) const { return input_index_.empty() ? v : input_index_[v]; }

@@ -1,0 +1,34 @@
+// The domain of a terrain (docs/definitions.md, "Domain"): an optional plane
+// length max_edge, kept with the points (Coords::max_edge). A triangle is inside
+// when each of its edges is at most max_edge long; only inside triangles are
+// measured. The triangulations themselves are unchanged.
+#pragma once
+#include <cstdint>
+
+#include "hodt/mesh.hpp"
+#include "hodt/skeleton.hpp"
+
+namespace hodt {
+
+inline bool has_domain(const Mesh& m) { return m.coords.max_edge() < INFINITY; }
+
+// Is the plane length of uv at most max_edge? (Exact; true without a domain.)
+bool edge_inside(const Mesh& m, uint32_t u, uint32_t v);
+// Are all three edges of t inside?
+inline bool triangle_inside(const Mesh& m, const Tri& t) {
+  return !has_domain(m) || (edge_inside(m, t[0], t[1]) && edge_inside(m, t[1], t[2]) && edge_inside(m, t[2], t[0]));
+}
+// Per triangle of m: 1 if inside (all 1 without a domain).
+std::vector<uint8_t> inside_triangles(const Mesh& m);
+
+// Checks a max_edge given by a caller: a positive number, or infinity for none
+// (InputError naming the value otherwise).
+void check_max_edge(double max_edge);
+
+// For rasters: the default max_edge is this many times the larger cell side. It
+// keeps every triangle of a full grid up to order 8 or so (edges of 1, 1.41, 2.24
+// and 2.83 cells) and a bridge over a one- or two-cell hole, and drops every
+// triangle that reaches across a wider NODATA area.
+constexpr double kRasterMaxEdgeCells = 3;
+
+}  // namespace hodt

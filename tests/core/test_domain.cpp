@@ -1,0 +1,237 @@
+// The domain (maxEdge): measures read inside triangles only, and every method
+// at every order optimises what the domain measures. The reference measures are
+// written here from the definitions, independently of the objective terms.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "generators.hpp"
+#include "hodt/brute_force.hpp"
+#include "hodt/delaunay.hpp"
+#include "hodt/domain.hpp"
+#include "hodt/higher_order.hpp"
+#include "hodt/k_order.hpp"
+#include "hodt/measures.hpp"
+#include "hodt/pair_measures.hpp"
+#include "hodt/predicates.hpp"
+#include "hodt/points.hpp"
+#include "hodt/solve.hpp"
+#include "hodt/terrain.hpp"
+
+using namespace hodt;
+using namespace hodt::test;
+
+namespace {
+
+bool close(double a, double b) { return a == b || std::abs(a - b) <= 1e-12 * std::max(std::abs(a), std::abs(b)); }
+
+double squared(const Mesh& m, uint32_t u, uint32_t v) {
+  const double dx = m.point(u)[0] - m.point(v)[0], dy = m.point(u)[1] - m.point(v)[1];
+  return dx * dx + dy * dy;
+}
+
+// A max_edge halfway (in squared length) between two of the Delaunay edge
+// lengths, so that no edge is near it and doubles decide the reference: about
+// `fraction` of the edges are long.
+double max_edge_between(const Mesh& dt, double fraction) {
+  std::vector<double> len;
+  for (uint32_t e = 0; e < dt.triangles.size(); ++e) len.push_back(squared(dt, dt.origin(e), dt.target(e)));
+  std::sort(len.begin(), len.end());
+  len.erase(std::unique(len.begin(), len.end()), len.end());
+  const size_t i = std::min(len.size() - 2, static_cast<size_t>(static_cast<double>(len.size()) * (1 - fraction)));
+  return std::sqrt((len[i] + len[i + 1]) / 2);
+}
+
+// Every measure of DEFINITIONS "Domain", from the mesh's stars and edges.
+double reference(Objective o, const Mesh& m) {
+  const double L2 = m.coords.max_edge() * m.coords.max_edge();
+  const uint32_t n = m.num_vertices(), nt = m.num_triangles();
+  auto tri = [&](uint32_t t) { return Tri{m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]}; };
+  std::vector<uint8_t> in(nt);
+  for (uint32_t t = 0; t < nt; ++t) {
+    const Tri c = tri(t);
+    in[t] = squared(m, c[0], c[1]) <= L2 && squared(m, c[1], c[2]) <= L2 && squared(m, c[2], c[0]) <= L2;
+  }
+  std::vector<uint8_t> hull(n, 0);
+  for (uint32_t v : m.hull) hull[v] = 1;
+  // Per vertex: its triangles, all inside or not, neighbours over inside triangles.
+  std::vector<std::vector<uint32_t>> star(n);
+  for (uint32_t t = 0; t < nt; ++t)
+    for (uint32_t v : tri(t)) star[v].push_back(t);
+  double sum = 0, max = 0;
+  auto counted = [&](uint32_t v) {  // an interior vertex whose triangles are all inside
+    return !hull[v] && std::all_of(star[v].begin(), star[v].end(), [&](uint32_t t) { return in[t] != 0; });
+  };
+  auto neighbours = [&](uint32_t v, bool inside_only) {
+    std::set<uint32_t> nb;
+    for (uint32_t t : star[v])
+      if (!inside_only || in[t])
+        for (uint32_t w : tri(t))
+          if (w != v) nb.insert(w);
+    return std::vector<uint32_t>(nb.begin(), nb.end());
+  };
+  for (uint32_t v = 0; v < n; ++v) {
+    const std::vector<uint32_t> nb = neighbours(v, false);
+    std::vector<const double*> p;
+    for (uint32_t w : nb) p.push_back(m.point(w));
+    if (counted(v)) {
+      const int ext = extremum(m.point(v), p.data(), static_cast<uint32_t>(p.size()));
+      const int cls = vertex_class(m.point(v), p.data(), static_cast<uint32_t>(p.size()));
+      if (o == Objective::MinLocalMinima) sum += ext == kLocalMinimum;
+      if (o == Objective::MinLocalExtrema) sum += ext != kNotExtremum;
+      if (o == Objective::MaxConvexVertices) sum += cls == kConvex;
+      if (o == Objective::MinMixedVertices) sum += cls == kMixed;
+    }
+    if (o == Objective::MinmaxDegree) max = std::max(max, static_cast<double>(neighbours(v, true).size()));
+    if (o == Objective::MinmaxVertexAreaRatio || o == Objective::MinmaxVertexNormalAngle)
+      for (uint32_t s : star[v])
+        for (uint32_t t : star[v])
+          if (s < t && in[s] && in[t])
+            max = std::max(max, o == Objective::MinmaxVertexAreaRatio ? pair_area_ratio(m, tri(s), tri(t))
+                                                                      : pair_normal_angle(m, tri(s), tri(t)));
+  }
+  for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
+    const int32_t f = m.halfedges[e];
+    if (f >= 0 && static_cast<uint32_t>(f) < e) continue;
+    const bool left = in[e / 3], right = f >= 0 && in[static_cast<uint32_t>(f) / 3];
+    if (o == Objective::MinTotalEdgeLength && (left || right)) sum += edge_length(m.point(m.origin(e)), m.point(m.target(e)));
+    if (!left || !right) continue;
+    const Tri s = tri(e / 3), t = tri(static_cast<uint32_t>(f) / 3);
+    if (o == Objective::MaxConvexEdges)
+      sum += edge_shape(m.point(m.origin(e)), m.point(m.target(e)), m.point(m.apex(e)),
+                        m.point(m.apex(static_cast<uint32_t>(f)))) == kConvexEdge;
+    if (o == Objective::MinmaxEdgeAreaRatio) max = std::max(max, pair_area_ratio(m, s, t));
+    if (o == Objective::MinmaxEdgeNormalAngle) max = std::max(max, pair_normal_angle(m, s, t));
+    if (o == Objective::MinmaxEdgeEnclosingCircle) max = std::max(max, pair_enclosing_circle(m, s, t));
+  }
+  for (uint32_t t = 0; t < nt; ++t)
+    if (o == Objective::MinmaxTriangleArea && in[t]) {
+      const Tri c = tri(t);
+      max = std::max(max, triangle_area(m.point(c[0]), m.point(c[1]), m.point(c[2])));
+    }
+  const bool summed = o == Objective::MaxConvexVertices || o == Objective::MinLocalMinima || o == Objective::MinLocalExtrema ||
+                      o == Objective::MinMixedVertices || o == Objective::MinTotalEdgeLength || o == Objective::MaxConvexEdges;
+  return summed ? sum : max;
+}
+
+FirstOrder with_domain(uint64_t seed, double fraction) {
+  FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed, 1)).xyz));
+  fo.base.coords.set_max_edge(max_edge_between(fo.base, fraction));
+  return fo;
+}
+
+}  // namespace
+
+TEST_CASE("domain: every measure reads inside triangles only, as the definitions say") {
+  uint64_t outside = 0;
+  for (uint64_t seed = 1; seed <= 120; ++seed) {
+    const FirstOrder fo = with_domain(seed, 0.1 + 0.1 * static_cast<double>(seed % 4));
+    for (uint32_t k : {1u, 3u}) {
+      int seen = 0;
+      enumerate_k_order(fo.base, k, 100'000, [&](const std::vector<Tri>& tris) {
+        if (++seen > 12) return;
+        const Mesh m = mesh_of(fo.base.coords, tris);
+        const std::vector<uint8_t> in = inside_triangles(m);
+        outside += static_cast<uint64_t>(std::count(in.begin(), in.end(), 0));
+        for (const auto& oi : objectives()) {
+          CAPTURE(seed);
+          CAPTURE(oi.id);
+          CHECK(close(evaluate(oi.objective, m), reference(oi.objective, m)));
+        }
+      });
+    }
+  }
+  CHECK(outside > 1000);  // (the domain was at work)
+}
+
+TEST_CASE("domain: a max_edge above every edge changes nothing; exact length comparisons") {
+  for (uint64_t seed = 1; seed <= 40; ++seed) {
+    FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed, 2)).xyz));
+    const auto plain = evaluate_all(fo.base);
+    fo.base.coords.set_max_edge(1e9);
+    CHECK(evaluate_all(fo.base) == plain);
+  }
+  // An edge exactly max_edge long is inside; one ulp shorter max_edge puts it out.
+  const double a[3] = {0.1, 0.2, 0}, b[3] = {0.4, 0.6, 0};  // length 0.5 in decimal, not in binary
+  const double len = std::hypot(0.4 - 0.1, 0.6 - 0.2);
+  const int s = compare_length(a, b, len);
+  CHECK(compare_length(a, b, std::nextafter(len, 0.0)) >= s);
+  CHECK(compare_length(a, b, std::nextafter(len, 1.0)) <= s);
+  const double p[3] = {3, 0, 0}, q[3] = {0, 4, 0};
+  CHECK(compare_length(p, q, 5) == 0);
+  CHECK(compare_length(p, q, std::nextafter(5.0, 0.0)) == 1);
+  CHECK(compare_length(p, q, std::nextafter(5.0, 9.0)) == -1);
+  const double big[3] = {1e300, 0, 0}, zero[3] = {0, 0, 0};
+  CHECK(compare_length(big, zero, 1e300) == 0);
+  CHECK(compare_length(big, zero, INFINITY) == -1);
+}
+
+TEST_CASE("domain: every method at orders 1 to 3 equals brute force over what the domain measures") {
+  uint64_t changed = 0;
+  for (uint32_t k : {1u, 2u, 3u}) {
+    for (uint64_t seed = 1; seed <= 120; ++seed) {
+      const FirstOrder fo = with_domain(seed * 5 + k, 0.1 + 0.1 * static_cast<double>(seed % 4));
+      for (const auto& oi : objectives()) {
+        CAPTURE(k);
+        CAPTURE(seed);
+        CAPTURE(oi.id);
+        SolveOptions bf;
+        bf.method = Method::BruteForce;
+        bf.order = k;
+        const Solution want = solve(fo, oi.objective, bf);
+        for (Method method : {Method::Exact, Method::Auto}) {
+          SolveOptions run;
+          run.method = method;
+          run.order = k;
+          const Solution got = solve(fo, oi.objective, run);
+          CHECK(got.optimal);
+          CHECK(close(got.value, want.value));
+          const Mesh m = got.mesh ? *got.mesh : triangulate(fo, got.choice);
+          CHECK(got.value == evaluate(oi.objective, m));
+          CHECK(is_k_order(m, fo.base, k));
+          if (got.critical) CHECK(got.critical->value == got.value);
+        }
+        FirstOrder plain = fo;
+        plain.base.coords.set_max_edge(INFINITY);
+        changed += want.value != solve(plain, oi.objective, bf).value;
+      }
+    }
+  }
+  CHECK(changed > 300);  // (the domain changed many optima)
+}
+
+TEST_CASE("domain: approximations within a domain keep their bound") {
+  for (uint64_t seed = 1; seed <= 6; ++seed) {
+    FirstOrder fo = first_order(delaunay(validate_points(dem_points(400, seed)).xyz));
+    fo.base.coords.set_max_edge(max_edge_between(fo.base, 0.15));
+    for (const auto& oi : objectives()) {
+      SolveOptions approx;
+      approx.method = Method::Approx;
+      const Solution h = solve(fo, oi.objective, approx);
+      const Solution e = solve(fo, oi.objective, {});
+      CAPTURE(oi.id);
+      CHECK(h.value == evaluate(oi.objective, triangulate(fo, h.choice)));
+      if (e.optimal) {
+        CHECK(!better(oi.sense, h.value, e.value));
+        if (h.bound) CHECK(!better(oi.sense, e.value, *h.bound));
+      }
+    }
+  }
+}
+
+TEST_CASE("domain: a terrain keeps its max_edge through edits and rejects bad lengths") {
+  Terrain t = Terrain::from_points(dem_points(50, 1));
+  CHECK_THROWS_AS(t.set_max_edge(0), InputError);
+  CHECK_THROWS_AS(t.set_max_edge(-1), InputError);
+  CHECK_THROWS_AS(t.set_max_edge(NAN), InputError);
+  t.set_max_edge(0.2);
+  const double before = t.delaunay_value(Objective::MinTotalEdgeLength);
+  t.add_point(0.5, 0.5, 3);
+  t.remove_point(t.num_input_points() - 1);
+  CHECK(t.max_edge() == 0.2);
+  CHECK(t.delaunay_value(Objective::MinTotalEdgeLength) == before);
+  t.set_max_edge(INFINITY);
+  CHECK(t.delaunay_value(Objective::MinTotalEdgeLength) > before);
+}
