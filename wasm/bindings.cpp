@@ -80,6 +80,9 @@ class TerrainHandle {
     return copy_out("Uint32Array", q);
   }
   val quadOfTriangle() const { return copy_out("Int32Array", t_.structure().quad_of_triangle); }
+  // The domain: Infinity for none.
+  double maxEdge() const { return t_.max_edge(); }
+  void setMaxEdge(double max_edge) { guarded([&] { t_.set_max_edge(max_edge); }); }
 
   // Live edits (input indices; see Terrain::add_point).
   uint32_t addPoint(double x, double y, double z) { return guarded([&] { return t_.add_point(x, y, z); }); }
@@ -132,6 +135,7 @@ class TerrainHandle {
     out.set("vertexClass", copy_out("Uint8Array", ms.vertex_class));
     out.set("extremum", copy_out("Uint8Array", ms.extremum));
     out.set("degree", copy_out("Uint32Array", ms.degree));
+    out.set("inside", copy_out("Uint8Array", ms.inside));
     return out;
   }
 
@@ -302,6 +306,7 @@ val mesh_data(const TinData& tin) {
   out.set("vertexClass", copy_out("Uint8Array", tin.vertex_class));
   out.set("extremum", copy_out("Uint8Array", tin.extremum));
   out.set("nonDelaunay", copy_out("Uint8Array", tin.non_delaunay));
+  if (!tin.outside.empty()) out.set("outside", copy_out("Uint8Array", tin.outside));
   out.set("comment", tin.comment);
   return out;
 }
@@ -370,6 +375,8 @@ EMSCRIPTEN_BINDINGS(hodt) {
       .function("quads", &TerrainHandle::quads)
       .function("quadEdges", &TerrainHandle::quadEdges)
       .function("quadOfTriangle", &TerrainHandle::quadOfTriangle)
+      .function("maxEdge", &TerrainHandle::maxEdge)
+      .function("setMaxEdge", &TerrainHandle::setMaxEdge)
       .function("addPoint", &TerrainHandle::addPoint)
       .function("movePoint", &TerrainHandle::movePoint)
       .function("removePoint", &TerrainHandle::removePoint)

@@ -8,6 +8,7 @@
 
 #include "hodt/cli_help.hpp"
 #include "hodt/cli_progress.hpp"
+#include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/file_errors.hpp"
 #include "hodt/format.hpp"
@@ -106,7 +107,7 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     SolveOptions options;
     Dedupe dedupe = Dedupe::Error;
     bool have_order = false;
-    std::optional<double> nodata;
+    std::optional<double> nodata, max_edge;  // max_edge: infinity for none
     for (size_t i = 1; i < args.size(); ++i) {
       const std::string& a = args[i];
       auto value = [&]() -> const std::string& {
@@ -144,6 +145,10 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
           throw Usage("--output '" + path + "': this build of hodt writes .json only; for ." + format_id(*format) +
                       " use the npm CLI: npx hodt");
         outputs.push_back({path, *format});
+      } else if (a == "--max-edge") {
+        const std::string& v = value();
+        max_edge = v == "none" ? INFINITY : parse_number(a, v);
+        if (!(*max_edge > 0)) throw Usage("--max-edge expects a positive length or 'none', got '" + v + "'");
       } else if (a == "--nodata") {
         nodata = parse_number(a, value());
       } else if (a == "--classes") {
@@ -187,6 +192,16 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     } catch (const InputError& e) {
       throw InputError(name + ": " + e.what());
     }
+    // The domain: as asked, else for a raster with NODATA cells its default.
+    if (!max_edge && parsed.nodata_cells > 0) {
+      max_edge = kRasterMaxEdgeCells * parsed.cell_size;
+      if (!quiet)
+        r.err += "hodt: note: " + name + ": " + std::to_string(parsed.nodata_cells) +
+                 " NODATA cells; triangles with an edge longer than " + format_number(*max_edge) +
+                 " (" + format_number(kRasterMaxEdgeCells) + " cells) are outside the domain and not measured (--max-edge L to change, --max-edge none to "
+                 "measure every triangle)\n";
+    }
+    if (max_edge) terrain.set_max_edge(*max_edge);
     times.build_ms = ms_since(started);
     if (!quiet)
       if (const auto w = degrees_warning(parsed.xyz)) r.err += "hodt: warning: " + name + ": " + *w + "\n";

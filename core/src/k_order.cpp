@@ -205,6 +205,17 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   StateDpLimits mini = dl;
   mini.mini_buckets = true;
   const StateDpResult listed = solve_states(model.graph, mini);
+  if (bounded && listed.bound_only && !R.incomplete && !model.graph.relaxed_terms &&
+      !better(info(o).sense, listed.value, start_value)) {
+    // The model is the whole problem, so its mini-bucket value bounds the
+    // optimum, and the start already meets it.
+    r.triangulation = std::move(start);
+    r.value = start_value;
+    r.optimal = true;
+    r.method = "heuristic";
+    r.details = region_summary(R) + "; the start meets the mini-bucket bound (exact refused: " + refused + ")";
+    return r;
+  }
   std::vector<uint32_t> x = listed.state;
   std::string how = "the best combination of the regions' listed triangulations";
   if (listed.bound_only) {

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstring>
 
+#include "hodt/domain.hpp"
 #include "hodt/kernel.hpp"
+#include "hodt/objective_terms.hpp"
 #include "hodt/portable_math.hpp"
 #include "hodt/predicates.hpp"
 
@@ -204,10 +206,11 @@ Stars build_stars(const Mesh& m, const Progress& progress) {
 Measures measure(const Mesh& m) {
   Measures r;
   const uint32_t n = m.num_vertices();
+  r.inside = inside_triangles(m);
   r.edge_shape.assign(m.triangles.size(), kHullEdge);
   for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
     const int32_t f = m.halfedges[e];
-    if (f < 0) continue;
+    if (f < 0 || !r.inside[e / 3] || !r.inside[static_cast<uint32_t>(f) / 3]) continue;
     r.edge_shape[e] = edge_shape(m.point(m.origin(e)), m.point(m.target(e)), m.point(m.apex(e)),
                                  m.point(m.apex(static_cast<uint32_t>(f))));
   }
@@ -216,9 +219,19 @@ Measures measure(const Mesh& m) {
   r.extremum.assign(n, kNotExtremum);
   r.degree.assign(n, 0);
   std::vector<const double*> nb;
+  std::vector<uint32_t> inside_nb;
+  std::vector<Tri> inside_tris;
   for (uint32_t v = 0; v < n; ++v) {
     const uint32_t d = s.degree(v);
     r.degree[v] = d;
+    if (has_domain(m)) {
+      inside_tris.clear();
+      for (uint32_t i = s.tri_offset[v]; i < s.tri_offset[v + 1]; ++i)
+        if (r.inside[s.triangle[i]]) inside_tris.push_back(base_triangle(m, s.triangle[i]));
+      star_neighbors(v, inside_tris, inside_nb);
+      r.degree[v] = static_cast<uint32_t>(inside_nb.size());
+      if (inside_tris.size() != s.tri_offset[v + 1] - s.tri_offset[v]) continue;  // (not counted: no class)
+    }
     if (s.on_hull[v]) continue;
     nb.resize(d);
     for (uint32_t k = 0; k < d; ++k) nb[k] = m.point(s.neighbor[s.offset[v] + k]);

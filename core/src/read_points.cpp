@@ -286,6 +286,7 @@ ParsedPoints read_ascii_grid(std::string_view text, const Reader& r) {
       nrows = static_cast<long>(nr);
       cell = header["cellsize"];
       if (!(cell > 0)) r.fail(line, "cellsize must be positive");
+      out.cell_size = cell;
       const bool corner = header.count("xllcorner") > 0;
       x0 = (corner ? header["xllcorner"] : header["xllcenter"]) + (corner ? cell / 2 : 0);
       y0 = (header.count("yllcorner") ? header["yllcorner"] + cell / 2 : header["yllcenter"]);
@@ -298,7 +299,10 @@ ParsedPoints read_ascii_grid(std::string_view text, const Reader& r) {
     for (long c = 0; c < ncols; ++c) {
       if (!parse_double(fields[c], v))
         r.fail(line, "value " + std::to_string(c + 1) + " is " + shorten(fields[c]) + ", not a number");
-      if (has_nodata && v == nodata) continue;
+      if (has_nodata && v == nodata) {
+        ++out.nodata_cells;
+        continue;
+      }
       check_finite(r, line, "z", v, fields[c]);
       out.xyz.push_back(x0 + c * cell);
       out.xyz.push_back(y0 + (nrows - 1 - row) * cell);  // the first row is the northernmost

@@ -1,11 +1,23 @@
 #include "hodt/report.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "hodt/domain.hpp"
 #include "hodt/format.hpp"
 #include "hodt/higher_order.hpp"
 
 namespace hodt {
+
+namespace {
+// The domain, when there is one: its maxEdge and how many triangles of m are outside.
+std::string domain_json(const Mesh& m) {
+  if (!has_domain(m)) return "";
+  const std::vector<uint8_t> inside = inside_triangles(m);
+  return ", \"maxEdge\": " + json_number(m.coords.max_edge()) +
+         ", \"outsideTriangles\": " + std::to_string(std::count(inside.begin(), inside.end(), 0));
+}
+}  // namespace
 
 std::string stats_json(const Terrain& t, uint32_t order) {
   const Mesh& m = t.structure().base;
@@ -19,7 +31,7 @@ std::string stats_json(const Terrain& t, uint32_t order) {
   const auto& v = t.delaunay_values();
   for (size_t k = 0; k < kNumObjectives; ++k)
     s += (k ? ", \"" : "\"") + std::string(objectives()[k].id) + "\": " + json_number(v[k]);
-  s += "}";
+  s += "}" + domain_json(m);
   if (order > 0) {
     const auto edges = useful_edges(t.delaunay_mesh(), order);
     const auto triangles = useful_triangles(t.delaunay_mesh(), order, edges);
@@ -74,6 +86,7 @@ std::string solution_json(const Terrain& t, const Solution& r, bool with_triangl
     s += ", \"times\": {\"readMs\": " + ms_json(times->read_ms) + ", \"buildMs\": " + ms_json(times->build_ms) +
          ", \"solveMs\": " + ms_json(times->solve_ms) + "}";
   if (r.order > 1) s += ", \"order\": " + std::to_string(r.order);
+  if (has_domain(t.structure().base)) s += domain_json(r.mesh ? *r.mesh : triangulate(t.structure(), r.choice));
   if (r.method == "approx") s += std::string(", \"localSearchImproved\": ") + (r.local_search_improved ? "true" : "false");
   if (!r.details.empty()) s += ", \"details\": \"" + json_escape(r.details) + "\"";
   if (r.critical)

@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 
+#include "hodt/domain.hpp"
 #include "hodt/measures.hpp"
 
 namespace hodt {
@@ -74,6 +75,8 @@ TinData tin_data(const Terrain& terrain, const std::vector<double>& input_xyz, c
     d.vertex_class[terrain.to_input(v)] = m.vertex_class[v];
     d.extremum[terrain.to_input(v)] = m.extremum[v];
   }
+  if (has_domain(mesh))
+    for (uint8_t in : m.inside) d.outside.push_back(!in);
   d.comment = std::move(comment);
   return d;
 }

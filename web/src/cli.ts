@@ -76,6 +76,14 @@ if (path !== undefined) {
         if (cloud.crs) notes.push(`hodt: ${path}: coordinates in ${cloud.crs}, kept as read\n`);
         // Point clouds repeat (x, y) across returns: keep the first unless told.
         if (format === 'las' && !args.includes('--dedupe')) args.push('--dedupe', 'first');
+        // A raster with gaps gets its default domain, as the core gives ASCII grids.
+        if (cloud.maxEdge !== undefined && !args.includes('--max-edge')) {
+          args.push('--max-edge', String(cloud.maxEdge));
+          notes.push(
+            `hodt: note: ${path}: triangles with an edge longer than ${cloud.maxEdge} (3 cells) are outside the domain ` +
+              'and not measured (--max-edge L to change, --max-edge none to measure every triangle)\n',
+          );
+        }
       } catch (e) {
         input = new Error(failure(e).message); // (a message, no code: the core prints it after the file's name)
       }

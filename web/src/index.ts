@@ -26,6 +26,9 @@ export type { ProgressCallback, SolveOptions } from './solve.js';
 export interface TerrainOptions {
   /** Two points at the same (x, y): throw InputError (default) or keep the first. */
   dedupe?: 'error' | 'first';
+  /** The domain (Terrain.maxEdge): triangles with a longer edge are not
+   * measured. Default null: every triangle is measured. */
+  maxEdge?: number | null;
 }
 
 export interface ParsedPoints {
@@ -49,7 +52,11 @@ export interface CliIo {
   writeFile?: (path: string, text: string) => Error | undefined;
   /** Writes `--output FILE.obj|.ply|.geojson|.glb`, typically with hodt/export's
    * exportMesh(format, mesh); returns an Error as writeFile. */
-  writeMesh?: (path: string, format: MeshFormat, mesh: Required<Omit<MeshData, 'crs'>>) => Error | undefined;
+  writeMesh?: (
+    path: string,
+    format: MeshFormat,
+    mesh: Required<Omit<MeshData, 'crs' | 'outside'>> & Pick<MeshData, 'outside'>,
+  ) => Error | undefined;
   /** Receives progress text for stderr as it happens (with its own line ends). */
   progress?: (text: string) => void;
   /** Is stderr a terminal: progress then appears after a second, redrawn in place. */
@@ -71,12 +78,21 @@ export class Hodt {
   /** Builds the Delaunay triangulation of the points and its first order
    * structure. The points are copied; dispose() the terrain when done. */
   terrain(points: PointInput, options: TerrainOptions = {}): Terrain {
-    const { dedupe = 'error' } = options ?? {};
+    const { dedupe = 'error', maxEdge = null } = options ?? {};
     if (dedupe !== 'error' && dedupe !== 'first') {
       throw new InputError(`dedupe is ${describeValue(dedupe)}, expected 'error' or 'first'`);
     }
     const xyz = toXyz(points);
-    return guard(() => new Terrain(this.#module.fromPoints(xyz, dedupe === 'first'), xyz.slice()));
+    const terrain = guard(() => new Terrain(this.#module.fromPoints(xyz, dedupe === 'first'), xyz.slice()));
+    if (maxEdge !== null) {
+      try {
+        terrain.maxEdge = maxEdge;
+      } catch (e) {
+        terrain.dispose();
+        throw e;
+      }
+    }
+    return terrain;
   }
 
   /** A singly-flippable triangulation: your triangles (point indices, three per

@@ -34,8 +34,13 @@ export interface Measures {
   vertexClass: Uint8Array;
   /** Per point: an Extremum value. */
   extremum: Uint8Array;
-  /** Per point: number of neighbours (0 for a dropped duplicate). */
+  /** Per point: number of neighbours (0 for a dropped duplicate); within a
+   * domain, those joined by an edge of an inside triangle. */
   degree: Uint32Array;
+  /** Per triangle: 1 if inside the domain (every triangle without one). Within
+   * a domain an edge needs an inside triangle on each side to have a shape, and
+   * a vertex needs all its triangles inside to have a class or be an extremum. */
+  inside: Uint8Array;
 }
 
 /** One threshold of the bottleneck search (paper, Section 2.1). */
@@ -186,6 +191,24 @@ export class Terrain implements Disposable {
   get quadOfTriangle(): Int32Array {
     return this.#handle.quadOfTriangle();
   }
+  /**
+   * The domain, for data with gaps: a triangle with an edge longer than maxEdge
+   * (a plane length) is outside and not measured, by every objective, method and
+   * order; the triangulations themselves are the same. null: no domain (every
+   * triangle is measured). Setting it throws InputError for anything but a
+   * positive number or null.
+   */
+  get maxEdge(): number | null {
+    const m = this.#handle.maxEdge();
+    return m === Infinity ? null : m;
+  }
+  set maxEdge(maxEdge: number | null) {
+    const raw = this.#idle('maxEdge');
+    if (maxEdge !== null && typeof maxEdge !== 'number') {
+      throw new InputError(`maxEdge is ${describeValue(maxEdge)}, expected a positive number or null`);
+    }
+    guard(() => raw.setMaxEdge(maxEdge ?? Infinity));
+  }
 
   /**
    * Live edits: the triangulation and the flippable quads are updated around the
@@ -261,6 +284,7 @@ export class Terrain implements Disposable {
       vertexClass: scatter(new Uint8Array(n).fill(VertexClass.Dropped), m.vertexClass, index),
       extremum: scatter(new Uint8Array(n), m.extremum, index),
       degree: scatter(new Uint32Array(n), m.degree, index),
+      inside: m.inside,
     };
   }
   /** Values of all 13 objectives for a choice's triangulation (default: Delaunay). */

@@ -85,11 +85,16 @@ struct Stars {
 Stars build_stars(const Mesh& mesh, const Progress& progress = {});
 
 // Per-element measures of a triangulation, as arrays (what the API exposes).
+// Within a domain (domain.hpp) they are what the objectives count: an edge
+// without an inside triangle on each side has no shape (kHullEdge), a vertex
+// with a triangle outside no class (kBoundary) and no extremum, and degrees
+// count neighbours over inside triangles.
 struct Measures {
   std::vector<uint8_t> edge_shape;    // per halfedge (EdgeShape)
   std::vector<uint8_t> vertex_class;  // per vertex (VertexClass)
   std::vector<uint8_t> extremum;      // per vertex (Extremum), interior vertices only
   std::vector<uint32_t> degree;       // per vertex
+  std::vector<uint8_t> inside;        // per triangle: 1 if inside the domain (all 1 without one)
 };
 Measures measure(const Mesh& mesh);
 

@@ -1,6 +1,7 @@
 // Reading point files: CSV / TSV / whitespace "x y z" (optional header), JSON
 // [[x, y, z], ...] and ESRI ASCII grids (.asc, NODATA cells skipped).
 #pragma once
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -12,6 +13,10 @@ enum class PointFormat { Auto, Text, Json, AsciiGrid };
 struct ParsedPoints {
   std::vector<double> xyz;  // x, y, z per point
   std::vector<int> lines;   // 1-based source line of each point, for messages
+  // Rasters (ASCII grids): the cell side, and how many cells were NODATA (the
+  // default domain, domain.hpp, drops triangles across them). 0: not a raster.
+  double cell_size = 0;
+  uint64_t nodata_cells = 0;
 };
 
 // Throws InputError "<name>: line L: <what is wrong>". Auto picks the format from

@@ -30,6 +30,7 @@ struct TinData {
   std::vector<uint8_t> vertex_class;   // per input point: VertexClass, 255 for a dropped duplicate
   std::vector<uint8_t> extremum;       // per input point: Extremum
   std::vector<uint8_t> non_delaunay;   // per triangle: 1 if not a triangle of the Delaunay triangulation
+  std::vector<uint8_t> outside;        // per triangle: 1 if outside the domain (empty: no domain)
   std::string comment;                 // one line: what this triangulation is
 };
 

@@ -8,7 +8,7 @@ export function geojsonParts(mesh: MeshData): Iterable<string> {
 }
 
 function* geojsonText(mesh: MeshData, m: number): Generator<string> {
-  const { points: p, triangles: t, nonDelaunay } = mesh;
+  const { points: p, triangles: t, nonDelaunay, outside } = mesh;
   const at = (i: number) => `[${String(p[3 * i])},${String(p[3 * i + 1])},${String(p[3 * i + 2])}]`;
   const out = new LineBatch();
   // A named CRS (the GeoJSON 2008 member RFC 7946 dropped; GDAL and QGIS read it).
@@ -23,7 +23,8 @@ function* geojsonText(mesh: MeshData, m: number): Generator<string> {
     const twice = (p[3 * b]! - ax) * (p[3 * c + 1]! - ay) - (p[3 * b + 1]! - ay) * (p[3 * c]! - ax);
     if (twice < 0) [a, b] = [b, a]; // RFC 7946: exterior rings counterclockwise
     const properties = `"index":${k},"area":${String(Math.abs(twice) / 2)}` +
-      (nonDelaunay ? `,"delaunay":${nonDelaunay[k] === 0}` : '');
+      (nonDelaunay ? `,"delaunay":${nonDelaunay[k] === 0}` : '') +
+      (outside ? `,"inside":${outside[k] === 0}` : '');
     const feature =
       `{"type":"Feature","properties":{${properties}},"geometry":{"type":"Polygon","coordinates":[[${at(a)},${at(b)},${at(c)},${at(a)}]]}}` +
       (k + 1 < m ? ',' : '');
@@ -39,7 +40,8 @@ function* geojsonText(mesh: MeshData, m: number): Generator<string> {
  * the shortest decimal that reads back to the same double. Properties: `index`
  * (the triangle's), `area` (plane area, in squared plane units) and, when
  * `nonDelaunay` is given, `delaunay` (true for a triangle of the Delaunay
- * triangulation). Coordinates are written as given: GeoJSON (RFC 7946) expects
+ * triangulation) and, when `outside` is given, `inside` (false for a triangle
+ * outside the domain). Coordinates are written as given: GeoJSON (RFC 7946) expects
  * longitude and latitude, so tell your GIS the coordinate system of projected
  * data (for example UTM).
  */

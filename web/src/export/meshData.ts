@@ -21,6 +21,10 @@ export interface MeshData {
    * (PLY property `non_delaunay`, GeoJSON property `delaunay`); see
    * nonDelaunayTriangles. */
   nonDelaunay?: ArrayLike<number>;
+  /** Per triangle: 1 if it is outside the terrain's domain (Terrain.maxEdge),
+   * else 0 (PLY property `outside`, GeoJSON property `inside`); see
+   * Measures.inside. */
+  outside?: ArrayLike<number>;
   /** One line about the triangulation, written as a comment (OBJ, PLY) or in the
    * glTF asset's `extras`. */
   comment?: string;
@@ -55,6 +59,7 @@ export function checkMesh(mesh: MeshData): { points: number; triangles: number }
   checkBytes('vertexClass', mesh.vertexClass, n, 'point');
   checkBytes('extremum', mesh.extremum, n, 'point');
   checkBytes('nonDelaunay', mesh.nonDelaunay, m, 'triangle');
+  checkBytes('outside', mesh.outside, m, 'triangle');
   return { points: n, triangles: m };
 }
 

@@ -16,6 +16,9 @@ function arrayBufferOf(bytes: Uint8Array | ArrayBuffer): ArrayBuffer {
   return bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength) as ArrayBuffer;
 }
 
+/** A raster's default domain in cells (Terrain.maxEdge = this many cell sides). */
+export const RASTER_MAX_EDGE_CELLS = 3;
+
 export async function readGeoTIFF(bytes: Uint8Array | ArrayBuffer, options: GeoTIFFOptions = {}): Promise<PointCloud> {
   const tiff = await fromArrayBuffer(arrayBufferOf(bytes));
   const image = await tiff.getImage();
@@ -64,5 +67,8 @@ export async function readGeoTIFF(bytes: Uint8Array | ArrayBuffer, options: GeoT
   if (skipped > 0) warnings.push(`skipped ${skipped} of ${width * height} cells without data (NODATA ${nodata ?? 'or not finite'})`);
   const epsg = keys.ProjectedCSTypeGeoKey ?? keys.GeographicTypeGeoKey;
   const crs = typeof epsg === 'number' && epsg > 0 && epsg < 32767 ? `EPSG:${epsg}` : undefined;
-  return { xyz: xyz.subarray(0, n), ...(crs ? { crs } : {}), warnings };
+  // The default domain of a raster with gaps (the core's kRasterMaxEdgeCells):
+  // 3 times the longer cell side.
+  const maxEdge = skipped > 0 ? RASTER_MAX_EDGE_CELLS * Math.max(Math.hypot(a, d), Math.hypot(b, e)) : undefined;
+  return { xyz: xyz.subarray(0, n), ...(crs ? { crs } : {}), warnings, ...(maxEdge ? { maxEdge } : {}) };
 }

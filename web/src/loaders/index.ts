@@ -5,7 +5,7 @@ import { readGeoTIFF } from './geotiff.js';
 import { readLAS, type LASOptions } from './las.js';
 import type { PointCloud } from './types.js';
 
-export { readGeoTIFF, type GeoTIFFOptions } from './geotiff.js';
+export { readGeoTIFF, RASTER_MAX_EDGE_CELLS, type GeoTIFFOptions } from './geotiff.js';
 export { readLAS, type LASOptions } from './las.js';
 export type { PointCloud } from './types.js';
 

@@ -6,4 +6,8 @@ export interface PointCloud {
   crs?: string;
   /** What the loader skipped or assumed, one line each. */
   warnings: string[];
+  /** Rasters with cells without data: the default domain, 3 cells (pass it as
+   * `hodt.terrain(xyz, { maxEdge })`), so that triangles bridging the gaps are not
+   * measured. Absent when every cell has data, and for point clouds. */
+  maxEdge?: number;
 }

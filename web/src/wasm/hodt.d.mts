@@ -10,6 +10,7 @@ export interface RawMeasures {
   vertexClass: Uint8Array;
   extremum: Uint8Array;
   degree: Uint32Array;
+  inside: Uint8Array;
 }
 export interface RawSolution {
   objective: string;
@@ -37,6 +38,8 @@ export interface RawTerrain {
   quads(): Uint32Array;
   quadEdges(): Uint32Array;
   quadOfTriangle(): Int32Array;
+  maxEdge(): number;
+  setMaxEdge(maxEdge: number): void;
   addPoint(x: number, y: number, z: number): number;
   movePoint(i: number, x: number, y: number, z: number): void;
   removePoint(i: number): void;

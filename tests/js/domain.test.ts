@@ -1,0 +1,108 @@
+// The domain (maxEdge) through every surface: the API option and property,
+// per-triangle inside flags, solves that equal brute force within the domain,
+// and the CLIs' raster default on a DEM whose NODATA inlet the hull bridges.
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { beforeAll, describe, expect, it } from 'vitest';
+import { type Hodt, InputError, loadHodt, OBJECTIVE_IDS } from '../../web/src/index.js';
+import { readPLY } from './meshReaders.js';
+import { randomPoints } from './randomPoints.js';
+
+const root = new URL('../../', import.meta.url).pathname;
+const inlet = (ext: string) => `${root}tests/fixtures-gis/dem-utm-inlet-nodata.${ext}`;
+
+let hodt: Hodt;
+beforeAll(async () => {
+  hodt = await loadHodt();
+});
+
+describe('the domain in the API', () => {
+  it('is a terrain option and property, checked, and changes what is measured', () => {
+    const points = randomPoints(60, 7);
+    const plain = hodt.terrain(points);
+    const t = hodt.terrain(points, { maxEdge: 0.2 });
+    expect(plain.maxEdge).toBeNull();
+    expect(t.maxEdge).toBe(0.2);
+    const inside = t.measures().inside;
+    expect(inside.length).toBe(t.delaunay().triangles.length / 3);
+    expect(inside.includes(0)).toBe(true);
+    expect(plain.measures().inside.every((v) => v === 1)).toBe(true);
+    expect(t.delaunayValues()['min-total-edge-length']).toBeLessThan(plain.delaunayValues()['min-total-edge-length']);
+    for (const bad of [0, -1, Number.NaN, 'far' as unknown as number]) {
+      expect(() => hodt.terrain(points, { maxEdge: bad })).toThrow(InputError);
+      expect(() => (t.maxEdge = bad)).toThrow(/maxEdge/);
+    }
+    expect(t.maxEdge).toBe(0.2); // (a refused value changes nothing)
+    t.maxEdge = null;
+    expect(t.delaunayValues()).toEqual(plain.delaunayValues());
+    t.dispose();
+    plain.dispose();
+  });
+
+  it('every objective, order 1 and 2, equals brute force within the domain', () => {
+    let differs = 0;
+    for (let seed = 1; seed <= 12; ++seed) {
+      const points = randomPoints(9, seed);
+      const t = hodt.terrain(points, { maxEdge: 0.45 });
+      const plain = hodt.terrain(points);
+      for (const order of [1, 2]) {
+        for (const id of OBJECTIVE_IDS) {
+          const want = t.solve(id, { method: 'brute-force', order });
+          const got = t.solve(id, { method: 'exact', order });
+          expect(got.optimal).toBe(true);
+          expect(got.value).toBeCloseTo(want.value, 12);
+          expect(t.evaluateTriangles(got.triangles)[id]).toBe(got.value);
+          if (plain.solve(id, { method: 'brute-force', order }).value !== want.value) ++differs;
+        }
+      }
+      t.dispose();
+      plain.dispose();
+    }
+    expect(differs).toBeGreaterThan(10);
+  });
+});
+
+describe('the raster default in the CLIs', () => {
+  const dir = mkdtempSync(join(tmpdir(), 'hodt-domain-'));
+  const run = (cmd: string, args: string[]) => spawnSync(cmd, args, { encoding: 'utf8' });
+  const npm = (args: string[]) => run('node', [`${root}dist/cli.js`, ...args]);
+
+  it('leaves triangles across NODATA outside and then flips quads the hull slivers hid', () => {
+    for (const [cli, file] of [
+      [npm, inlet('tif')],
+      [npm, inlet('asc')],
+      [(a: string[]) => run(`${root}build/native/hodt`, a), inlet('asc')],
+    ] as const) {
+      const ply = join(dir, 'tin.ply');
+      const args = ['solve', file, '--objective', 'minmax-edge-normal-angle'];
+      const r = cli(cli === npm ? [...args, '--output', ply] : args);
+      expect(r.status).toBe(0);
+      expect(r.stderr).toMatch(/triangles with an edge longer than 7\.5 \(3 cells\) are outside the domain/);
+      const s = JSON.parse(r.stdout);
+      expect(s.maxEdge).toBe(7.5);
+      expect(s.outsideTriangles).toBeGreaterThan(10);
+      expect(s.flipped).toBeGreaterThan(0);
+      expect(s.value).toBeLessThan(s.delaunayValue);
+      const none = JSON.parse(cli([...args, '--max-edge', 'none']).stdout);
+      expect(none.maxEdge).toBeUndefined();
+      expect(none.value).toBeGreaterThan(s.value);
+      if (cli === npm) {
+        const faces = readPLY(new Uint8Array(readFileSync(ply))).elements.face!;
+        const outside = faces.rows.map((f) => f.outside);
+        expect(outside.filter((o) => o === 1).length).toBe(s.outsideTriangles);
+      }
+    }
+  });
+
+  it('rejects a --max-edge that is not a positive length', () => {
+    for (const bad of ['0', '-2', 'far']) {
+      const r = npm(['stats', inlet('asc'), '--max-edge', bad]);
+      expect(r.status).toBe(2);
+      expect(r.stderr).toMatch(/--max-edge/);
+    }
+  });
+
+  it('cleans up', () => rmSync(dir, { recursive: true }));
+});
