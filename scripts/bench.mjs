@@ -146,7 +146,7 @@ for (const [kind, make] of [['grid', (w) => KINDS.grid(w * w)], ['saddle', saddl
   }
 }
 // Order k: every objective, orders 1..8 (bench/order_k.mjs).
-summary.orderK = runOrderK({ root, tmp, hodt: await loadHodt(), log, quick });
+summary.orderK = await runOrderK({ root, tmp, hodt: await loadHodt(), log, quick });
 rmSync(tmp, { recursive: true, force: true });
 
 const at = (kind, n) => summary.runs.find((r) => r.kind === kind && r.n >= n * 0.99 && r.n <= n * 1.01);
