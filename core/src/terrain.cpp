@@ -72,7 +72,11 @@ void Terrain::check_choice(const Choice& choice) const {
 
 const Mesh& Terrain::delaunay_mesh() const {
   if (fo_.is_delaunay) return fo_.base;
-  if (!delaunay_) delaunay_ = std::make_shared<const Mesh>(delaunay(fo_.base.coords.vector()));
+  if (!delaunay_) {
+    Mesh m = delaunay(fo_.base.coords.vector());
+    m.coords.set_max_edge(max_edge());  // (measured within the terrain's domain too)
+    delaunay_ = std::make_shared<const Mesh>(std::move(m));
+  }
   return *delaunay_;
 }
 
