@@ -38,8 +38,9 @@ async function ownDem(hodt) {
   const bytes = new Uint8Array(readFileSync(path));
   const { readPointFile } = await import('../dist/loaders/index.js');
   const cloud = await readPointFile(bytes);
-  const xyz = cloud ? cloud.xyz : hodt.readPoints(bytes, path).points;
-  return [`${path} (${xyz.length / 3} points${cloud?.maxEdge ? `, maxEdge ${cloud.maxEdge}` : ''})`, xyz, cloud?.maxEdge];
+  const text = cloud ? null : hodt.readPoints(bytes, path);
+  const [xyz, maxEdge] = cloud ? [cloud.xyz, cloud.maxEdge] : [text.points, text.maxEdge];
+  return [`${path} (${xyz.length / 3} points${maxEdge ? `, maxEdge ${maxEdge}` : ''})`, xyz, maxEdge];
 }
 
 export async function runOrderK({ root, tmp, hodt, log, quick }) {

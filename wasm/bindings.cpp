@@ -284,6 +284,7 @@ val readPoints(val text, const std::string& name) {
     val out = val::object();
     out.set("xyz", copy_out("Float64Array", p.xyz));
     out.set("lines", copy_out("Int32Array", p.lines));
+    if (p.max_edge < INFINITY) out.set("maxEdge", p.max_edge);
     return out;
   });
 }

@@ -193,8 +193,8 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
       throw InputError(name + ": " + e.what());
     }
     // The domain: as asked, else for a raster with NODATA cells its default.
-    if (!max_edge && parsed.nodata_cells > 0) {
-      max_edge = kRasterMaxEdgeCells * parsed.cell_size;
+    if (!max_edge && parsed.max_edge < INFINITY) {
+      max_edge = parsed.max_edge;
       if (!quiet)
         r.err += "hodt: note: " + name + ": " + std::to_string(parsed.nodata_cells) +
                  " NODATA cells; triangles with an edge longer than " + format_number(*max_edge) +

@@ -22,7 +22,7 @@ std::vector<uint8_t> inside_triangles(const Mesh& m) {
 }
 
 void check_max_edge(double max_edge) {
-  if (std::isnan(max_edge) || max_edge <= 0 || max_edge == -INFINITY)
+  if (!(max_edge > 0))
     throw InputError("maxEdge must be a positive length (or none), got " + format_number(max_edge));
 }
 

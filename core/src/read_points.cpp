@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 
+#include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/text_encoding.hpp"
 
@@ -286,7 +287,6 @@ ParsedPoints read_ascii_grid(std::string_view text, const Reader& r) {
       nrows = static_cast<long>(nr);
       cell = header["cellsize"];
       if (!(cell > 0)) r.fail(line, "cellsize must be positive");
-      out.cell_size = cell;
       const bool corner = header.count("xllcorner") > 0;
       x0 = (corner ? header["xllcorner"] : header["xllcenter"]) + (corner ? cell / 2 : 0);
       y0 = (header.count("yllcorner") ? header["yllcorner"] + cell / 2 : header["yllcenter"]);
@@ -312,6 +312,7 @@ ParsedPoints read_ascii_grid(std::string_view text, const Reader& r) {
     ++row;
   });
   if (ncols < 0) r.fail(last_line, "grid has a header but no values");
+  if (out.nodata_cells > 0) out.max_edge = kRasterMaxEdgeCells * cell;
   if (row != nrows)
     r.fail(last_line, "expected nrows = " + std::to_string(nrows) + " rows of values, got " + std::to_string(row));
   return out;

@@ -96,6 +96,11 @@ describe('the raster default in the CLIs', () => {
     }
   });
 
+  it('readPoints gives an ASCII grid with NODATA its default domain, and other files none', () => {
+    expect(hodt.readPoints(new Uint8Array(readFileSync(inlet('asc'))), 'inlet.asc').maxEdge).toBe(7.5);
+    expect(hodt.readPoints('0 0 0\n1 0 0\n0 1 1\n').maxEdge).toBeUndefined();
+  });
+
   it('rejects a --max-edge that is not a positive length', () => {
     for (const bad of ['0', '-2', 'far']) {
       const r = npm(['stats', inlet('asc'), '--max-edge', bad]);

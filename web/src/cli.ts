@@ -61,7 +61,7 @@ const notes: string[] = [];
 if (path !== undefined) {
   input = read(path);
   if (!(input instanceof Error)) {
-    const { sniffFormat, readGeoTIFF, readLAS } = await import('./loaders/index.js');
+    const { sniffFormat, readGeoTIFF, readLAS, RASTER_MAX_EDGE_CELLS } = await import('./loaders/index.js');
     const format = sniffFormat(input);
     if (format) {
       const at = args.indexOf('--classes');
@@ -80,7 +80,7 @@ if (path !== undefined) {
         if (cloud.maxEdge !== undefined && !args.includes('--max-edge')) {
           args.push('--max-edge', String(cloud.maxEdge));
           notes.push(
-            `hodt: note: ${path}: triangles with an edge longer than ${cloud.maxEdge} (3 cells) are outside the domain ` +
+            `hodt: note: ${path}: triangles with an edge longer than ${cloud.maxEdge} (${RASTER_MAX_EDGE_CELLS} cells) are outside the domain ` +
               'and not measured (--max-edge L to change, --max-edge none to measure every triangle)\n',
           );
         }

@@ -36,6 +36,9 @@ export interface ParsedPoints {
   points: Float64Array;
   /** 1-based source line of each point. */
   lines: Int32Array;
+  /** An ESRI ASCII grid with NODATA cells: its default domain, 3 cell sides
+   * (pass it on: `hodt.terrain(points, { maxEdge })`). Absent otherwise. */
+  maxEdge?: number;
 }
 
 /** The result of running the command line in-process. */
@@ -116,7 +119,7 @@ export class Hodt {
   readPoints(text: string | Uint8Array, name = 'input'): ParsedPoints {
     return guard(() => {
       const r = this.#module.readPoints(text, name);
-      return { points: r.xyz, lines: r.lines };
+      return { points: r.xyz, lines: r.lines, ...(r.maxEdge !== undefined ? { maxEdge: r.maxEdge } : {}) };
     });
   }
 

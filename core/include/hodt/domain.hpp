@@ -1,4 +1,4 @@
-// The domain of a terrain (docs/definitions.md, "Domain"): an optional plane
+// The domain of a terrain (docs/objectives.md, "The domain"): an optional plane
 // length max_edge, kept with the points (Coords::max_edge). A triangle is inside
 // when each of its edges is at most max_edge long; only inside triangles are
 // measured. The triangulations themselves are unchanged.

@@ -1,6 +1,7 @@
 // Reading point files: CSV / TSV / whitespace "x y z" (optional header), JSON
 // [[x, y, z], ...] and ESRI ASCII grids (.asc, NODATA cells skipped).
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -13,10 +14,11 @@ enum class PointFormat { Auto, Text, Json, AsciiGrid };
 struct ParsedPoints {
   std::vector<double> xyz;  // x, y, z per point
   std::vector<int> lines;   // 1-based source line of each point, for messages
-  // Rasters (ASCII grids): the cell side, and how many cells were NODATA (the
-  // default domain, domain.hpp, drops triangles across them). 0: not a raster.
-  double cell_size = 0;
+  // Rasters (ASCII grids) with NODATA cells: how many, and the default domain
+  // that leaves the triangles across them unmeasured (domain.hpp); infinity
+  // (no domain) for other input.
   uint64_t nodata_cells = 0;
+  double max_edge = INFINITY;
 };
 
 // Throws InputError "<name>: line L: <what is wrong>". Auto picks the format from

@@ -16,7 +16,8 @@ function arrayBufferOf(bytes: Uint8Array | ArrayBuffer): ArrayBuffer {
   return bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength) as ArrayBuffer;
 }
 
-/** A raster's default domain in cells (Terrain.maxEdge = this many cell sides). */
+/** A raster's default domain in cells (Terrain.maxEdge = this many cell sides):
+ * the core's kRasterMaxEdgeCells (domain.hpp), which ASCII grids get. */
 export const RASTER_MAX_EDGE_CELLS = 3;
 
 export async function readGeoTIFF(bytes: Uint8Array | ArrayBuffer, options: GeoTIFFOptions = {}): Promise<PointCloud> {

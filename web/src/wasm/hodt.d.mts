@@ -89,7 +89,7 @@ export interface RawCliIo {
 export interface HodtModule {
   fromPoints(xyz: Float64Array, dedupe: boolean): RawTerrain;
   fromTriangulation(xyz: Float64Array, triangles: Uint32Array, flippable: Uint32Array): RawTerrain;
-  readPoints(text: string | Uint8Array, name: string): { xyz: Float64Array; lines: Int32Array };
+  readPoints(text: string | Uint8Array, name: string): { xyz: Float64Array; lines: Int32Array; maxEdge?: number };
   runCli(
     args: string[],
     read: (path: string) => string | Uint8Array | Error,
