@@ -40,6 +40,7 @@ class FillDp {
     Partial start;
     for (auto [a, b] : T_.regions().regions[r_].boundary) start.open.push_back(edge_key(a, b));
     std::sort(start.open.begin(), start.open.end());
+    boundary_ = start.open;
     if (T_.reads_apexes()) start.behind.assign(start.open.size(), kNoApex);  // (the outside: never read)
     std::vector<Partial> layer;
     layer.push_back(std::move(start));
@@ -83,6 +84,7 @@ class FillDp {
   const RegionTerms& T_;
   uint32_t r_;
   const std::vector<Tri>* keep_;  // sorted items whose entries are kept (all if null)
+  std::vector<uint64_t> boundary_;  // the region's boundary edges, sorted
   std::vector<Node> nodes_;    // kept states' (parent, last triangle)
   std::vector<Node> pending_;  // this layer's children, before merging
   SignatureEntry entry_;
@@ -112,6 +114,15 @@ class FillDp {
       for (const Tri& t : s) k.insert(k.end(), t.begin(), t.end());
     }
     return k;
+  }
+
+  // Does open edge e touch a triangle already placed? (It does if a triangle
+  // opened it, or, when fans are kept, if one of its ends has a fan.)
+  bool touches_cover(const Partial& p, uint64_t e) const {
+    if (!std::binary_search(boundary_.begin(), boundary_.end(), e)) return true;
+    for (size_t pos = 0; pos < p.around.size(); pos += 2 + p.around[pos + 1])
+      if (p.around[pos] == from(e) || p.around[pos] == to(e)) return true;
+    return false;
   }
 
   bool on_frontier(const Partial& p, uint32_t v) const {
@@ -160,14 +171,18 @@ class FillDp {
 
   template <class Emit>
   void expand(const Partial& p, Emit&& emit) {
-    // The open edge with the fewest candidate triangles (ties: smallest key):
-    // a function of the frontier, so equal frontiers expand alike.
-    size_t at = 0, fewest = SIZE_MAX;
+    // The open edge to grow from, a function of the frontier so that equal
+    // frontiers expand alike: a forced one (a single candidate) first, else one
+    // touching the covered part (fills grow as one front: separate fronts would
+    // multiply their states), with the fewest candidate triangles (ties: smallest key).
+    size_t at = 0;
+    uint64_t best = UINT64_MAX;
     for (size_t i = 0; i < p.open.size(); ++i) {
       const size_t c = candidates(p.open[i]);
-      if (c < fewest) fewest = c, at = i;
+      if (c == 0) return;  // a dead end
+      const uint64_t rank = c == 1 ? 0 : (touches_cover(p, p.open[i]) ? 0 : uint64_t(1) << 32) + c;
+      if (rank < best) best = rank, at = i;
     }
-    if (fewest == 0) return;  // a dead end
     const uint32_t u = from(p.open[at]), v = to(p.open[at]);
     for (uint32_t w : cand_.find(p.open[at])->second) {
       // Sides v -> w and w -> u: each closes an open edge in the same direction,

@@ -105,7 +105,7 @@ FirstOrder first_order_of_marked(Mesh dt, const std::vector<uint8_t>& marked) {
   std::vector<Quad> quads;
   for (uint32_t e = 0; e < dt.halfedges.size(); ++e)
     if (marked[e]) quads.push_back(quad_at(dt, e));
-  // No triangle is in two flippable quads ([10]; the paper, Section 2): a violation
+  // No triangle is in two flippable quads (Gudmundsson, Hammar and van Kreveld, "Higher order Delaunay triangulations", 2002; the paper, Section 2): a violation
   // would be a bug in the predicates, reported rather than silently mis-modelled.
   try {
     return assemble(std::move(dt), std::move(quads), true);

@@ -146,6 +146,19 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   if (options.method == Method::BruteForce) {
     return brute_force_k_order(dt, o, k, max_nodes, options.progress);
   }
+  const ObjectiveTerms& description = objective_terms(o, dt);
+  const Sense sense = info(o).sense;
+  const double global = description.global_bound ? description.global_bound(dt) : sense == Sense::Min ? -INFINITY : INFINITY;
+  if (bounded && k >= 2 && description.global_bound && (first_order.get(), !better(sense, global, first_order.value))) {
+    // The first order optimum meets a bound that every triangulation meets.
+    KOrderResult r;
+    r.triangulation = *first_order.mesh;
+    r.value = first_order.value;
+    r.optimal = true;
+    r.method = "exact";
+    r.details = "the first order optimum meets the bound that every triangulation of the points meets";
+    return r;
+  }
   Regions R = k_order_skeleton(dt, k, options.progress);
   const Candidates cand = k_order_candidates(dt, k, R.useful, options.progress);
   const RegionTerms terms(dt, R, o, &cand);
@@ -204,6 +217,10 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // over mini-buckets, whose assignment is then one start of the local search.
   StateDpLimits mini = dl;
   mini.mini_buckets = true;
+  // Small buckets: on a 5,000-point grid at order 4 the bottleneck search over
+  // 2^22-entry buckets took 80 s, over 2^18 8 s, with the same results (and
+  // within one unit on 10,000 DEM points at order 4).
+  mini.max_table = 1 << 18;
   const StateDpResult listed = solve_states(model.graph, mini);
   if (bounded && listed.bound_only && !R.incomplete && !model.graph.relaxed_terms &&
       !better(info(o).sense, listed.value, start_value)) {
@@ -247,7 +264,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // The bound: the model's relaxation, or the tighter one that reads the regions
   // too large to list through their views; when those views agree, a
   // triangulation that meets it.
-  double bound = relaxation_bound(model.graph, dl);
+  double bound = tighter(info(o).sense, relaxation_bound(model.graph, dl), global);
   ViewBoundLimits vl;
   vl.views.progress = vl.dp.progress = options.progress;
   const bool met = !better(info(o).sense, bound, r.value);

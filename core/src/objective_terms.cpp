@@ -69,6 +69,14 @@ double extremum_of_classes(uint32_t mask) { return mask == 1 || mask == 2; }
 
 double degree(const Mesh&, const Star& s) { return static_cast<double>(s.degree); }
 double degree_term(uint32_t d) { return static_cast<double>(d); }
+// The largest degree is at least the mean, 2E / n (E: the edges, the same in
+// every triangulation of the points).
+double degree_bound(const Mesh& m) {
+  uint64_t edges = 0;
+  for (uint32_t e = 0; e < m.halfedges.size(); ++e) edges += m.halfedges[e] < static_cast<int32_t>(e);
+  const uint64_t n = m.num_vertices();
+  return n ? static_cast<double>((2 * edges + n - 1) / n) : 0;
+}
 
 double convex_edge(const Mesh& m, uint32_t u, uint32_t v, uint32_t w, uint32_t x) {
   return edge_shape(m.point(u), m.point(v), m.point(w), m.point(x)) == kConvexEdge;
@@ -97,13 +105,13 @@ std::array<ObjectiveTerms, kNumObjectives> make_table() {
   mixed.drop_neighbors = mixed_drop_neighbors;
   set(Objective::MinMixedVertices, mixed);
   ObjectiveTerms minima{S::InteriorVertex, C::Sum, kCount, local_minimum};
-  minima.neighbor_class = height_class, minima.term_of_classes = minimum_of_classes;
+  minima.neighbor_class = height_class, minima.term_of_classes = minimum_of_classes, minima.classes = 3;
   set(Objective::MinLocalMinima, minima);
   ObjectiveTerms extrema{S::InteriorVertex, C::Sum, kCount, local_extremum};
-  extrema.neighbor_class = height_class, extrema.term_of_classes = extremum_of_classes;
+  extrema.neighbor_class = height_class, extrema.term_of_classes = extremum_of_classes, extrema.classes = 3;
   set(Objective::MinLocalExtrema, extrema);
   ObjectiveTerms max_degree{S::Vertex, C::Max, kUnbounded, degree};
-  max_degree.term_of_degree = degree_term;
+  max_degree.term_of_degree = degree_term, max_degree.global_bound = degree_bound;
   set(Objective::MinmaxDegree, max_degree);
   set(Objective::MaxConvexEdges, {S::InteriorEdge, C::Sum, kCount, nullptr, convex_edge});
   ObjectiveTerms total_length{S::Edge, C::Sum, kUnbounded, nullptr, length};
@@ -125,6 +133,7 @@ std::array<ObjectiveTerms, kNumObjectives> make_table() {
 std::array<ObjectiveTerms, kNumObjectives> with_domain(std::array<ObjectiveTerms, kNumObjectives> t) {
   for (ObjectiveTerms& d : t) {
     d.neighbor_class = nullptr, d.term_of_classes = nullptr, d.drop_neighbors = nullptr, d.term_of_degree = nullptr;
+    d.global_bound = nullptr;  // (counts over all triangles)
     d.edge_reads_apexes = true;
     d.domain = true;
   }

@@ -11,7 +11,15 @@ namespace hodt {
 namespace {
 // Entry headers: a vertex's fan (triangles or neighbours), an edge's apex.
 constexpr uint32_t kVertexEntry = UINT32_MAX, kEdgeEntry = UINT32_MAX - 1;
+constexpr uint32_t kMaxCanonicalClasses = 4;  // (a table of 2^4 x 2^4 masks)
 }  // namespace
+
+uint32_t RegionTerms::canonical_classes(uint32_t v, uint32_t mask) const {
+  if (canonical_.empty()) return mask;
+  if (interior_only(d_.site) && on_hull_[v]) return fixed_classes_[v];  // (no term at all)
+  const uint32_t masks = 1u << d_.classes;
+  return canonical_[fixed_classes_[v] * masks + mask];
+}
 
 RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o, const Candidates* candidates)
     : dt_(dt), R_(R), cand_(candidates), d_(objective_terms(o, dt)), sense_(info(o).sense), filter_(dt, R, d_) {
@@ -31,6 +39,25 @@ RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o, const Ca
   if (reads_edges())
     for (uint32_t e = 0; e < dt.halfedges.size(); ++e)
       if (dt.halfedges[e] < 0 || R.fixed[e]) boundary_.emplace(edge_key(dt.origin(e), dt.target(e)), e);
+  if (reads_classes() && d_.classes <= kMaxCanonicalClasses) {
+    const uint32_t masks = 1u << d_.classes;
+    fixed_classes_.resize(n);
+    for (uint32_t v = 0; v < n; ++v)
+      fixed_classes_[v] = static_cast<uint8_t>(neighbor_classes(d_, dt, v, filter_.fixed(v)));
+    // Masks a and b (both holding f) are alike when every m gives term(a | m) == term(b | m).
+    auto alike = [&](uint32_t a, uint32_t b) {
+      for (uint32_t m = 0; m < masks; ++m)
+        if (d_.term_of_classes(a | m) != d_.term_of_classes(b | m)) return false;
+      return true;
+    };
+    canonical_.resize(masks * masks);
+    for (uint32_t f = 0; f < masks; ++f)
+      for (uint32_t a = 0; a < masks; ++a) {
+        uint32_t b = f;
+        while ((b & f) != f || !alike(a | f, b)) ++b;  // (b = a | f ends it)
+        canonical_[f * masks + a] = static_cast<uint8_t>(b);
+      }
+  }
   if (d_.combine == TermCombine::Max) floor_ = fixed_terms_max();
   if (reads_degree() && floor_ > 0) {
     useful_degree_.assign(n, 0);
@@ -120,7 +147,7 @@ void RegionTerms::extend_fan(uint32_t v, const Tri& t, uint32_t fresh, std::vect
   if (reads_classes() || reads_degree()) {  // one word
     if (fan.empty()) fan.push_back(0);
     if (reads_classes())
-      for (uint32_t w : others) fan[0] |= 1u << neighbor_class(v, w);
+      for (uint32_t w : others) fan[0] = canonical_classes(v, fan[0] | 1u << neighbor_class(v, w));
     else if (degree_matters(v))
       fan[0] += fresh;
   } else if (reads_fans()) {  // triangles, three words each, sorted
@@ -187,6 +214,7 @@ double RegionTerms::vertex_done(uint32_t r, uint32_t v, const std::vector<uint32
 
 double RegionTerms::vertex_done(uint32_t r, uint32_t v, uint32_t summary, SignatureEntry& entry) const {
   entry.clear();
+  if (reads_classes()) summary = canonical_classes(v, summary);
   if (shared_[v]) {  // the regions beside see the summary
     entry = {{kVertexEntry, v, 2}, {summary, 0, 0}};
     return 0;

@@ -201,7 +201,8 @@ void enumerate_regions(const Mesh& dt, Regions& out, const RegionLimits& limits)
         throw Cancelled();
       if (done[r] || region.delaunay_triangles.size() == 1) continue;
       if (region.delaunay_triangles.size() > limits.max_region_triangles) {
-        region.complete = false;
+        if (pass == 0 && terms) done[r] = by_dp(region, r, limits.large_region_states);
+        if (!done[r]) region.complete = false;
         continue;
       }
       if (pass == 0) {

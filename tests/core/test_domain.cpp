@@ -44,7 +44,7 @@ double max_edge_between(const Mesh& dt, double fraction) {
   return std::sqrt((len[i] + len[i + 1]) / 2);
 }
 
-// Every measure of DEFINITIONS "Domain", from the mesh's stars and edges.
+// Every measure of docs/objectives.md ("The domain"), from the mesh's stars and edges.
 double reference(Objective o, const Mesh& m) {
   const double L2 = m.coords.max_edge() * m.coords.max_edge();
   const uint32_t n = m.num_vertices(), nt = m.num_triangles();

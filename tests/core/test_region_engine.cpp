@@ -133,3 +133,91 @@ TEST_CASE("heuristic at order k: a valid k-OD triangulation and a bound on the r
     }
   }
 }
+
+namespace {
+
+// A volcano-like DEM: a w x h grid of unit cells, integer heights on a cone
+// around an off-centre crater, and each vertex's height ties with some of its
+// neighbours (cocircular cells, equal heights: the regions at order 4 are whole
+// columns of cells, well over 64 Delaunay triangles).
+std::vector<double> cone_grid(int w, int h) {
+  std::vector<double> p;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double d = std::hypot(x - 0.4 * w, y - 0.45 * h);
+      p.insert(p.end(), {double(x), double(y), std::floor(std::abs(d - 0.15 * h) * 2)});
+    }
+  return p;
+}
+
+// The vertices that are local minima (or extrema) whatever the triangulation:
+// interior, with every useful order-k neighbour higher (or every one lower).
+double forced(Objective o, const Mesh& dt, uint32_t k) {
+  const uint32_t n = dt.num_vertices();
+  std::vector<uint8_t> lower(n, 0), higher(n, 0), hull(n, 0);
+  for (uint32_t v : dt.hull) hull[v] = 1;
+  for (const auto& [a, b] : useful_edges(dt, k)) {
+    const double za = dt.point(a)[2], zb = dt.point(b)[2];
+    if (zb <= za) lower[a] = 1;
+    if (za <= zb) lower[b] = 1;
+    if (zb >= za) higher[a] = 1;
+    if (za >= zb) higher[b] = 1;
+  }
+  double count = 0;
+  for (uint32_t v = 0; v < n; ++v)
+    if (!hull[v]) count += !lower[v] + (o == Objective::MinLocalExtrema ? !higher[v] : 0);
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("long regions: minima and extrema on a gridded DEM at order 4 are exact, and meet the forced count") {
+  // Signatures keep a shared vertex's neighbour classes only up to what the
+  // terms can still tell apart (a vertex with a lower fixed neighbour is no
+  // minimum, whatever a region does): a column region of 2 x 40 vertices then
+  // has a handful of signatures instead of one per combination of its vertices.
+  const FirstOrder fo = first_order(delaunay(validate_points(cone_grid(12, 41)).xyz));
+  const Regions R = k_order_skeleton(fo.base, 4);
+  size_t largest = 0;
+  for (const Region& g : R.regions) largest = std::max(largest, g.delaunay_triangles.size());
+  CHECK(largest > 64);
+  for (Objective o : {Objective::MinLocalMinima, Objective::MinLocalExtrema}) {
+    SolveOptions options;
+    options.method = Method::Exact;
+    options.order = 4;
+    const Solution s = solve(fo, o, options);
+    CHECK(s.optimal);
+    CHECK(s.method == "exact");
+    CHECK(s.value == evaluate(o, *s.mesh));
+    CHECK(is_k_order(*s.mesh, fo.base, 4));
+    // Nothing can do better than the vertices every triangulation keeps as pits
+    // (or peaks); here the optimum reaches that.
+    CHECK(s.value == forced(o, fo.base, 4));
+  }
+}
+
+TEST_CASE("minmax-degree: a first order optimum at the mean degree is optimal at every order, at once") {
+  // Every triangulation of the points has the same number of edges E, so the
+  // largest degree is at least ceil(2E / n): a grid's 6.
+  const FirstOrder fo = first_order(delaunay(validate_points(grid_points(40, 40, 3, true)).xyz));
+  for (uint32_t k : {2u, 4u, 8u}) {
+    SolveOptions options;
+    options.order = k;
+    const Solution s = solve(fo, Objective::MinmaxDegree, options);
+    CHECK(s.optimal);
+    CHECK(s.value == 6);
+    CHECK(is_k_order(*s.mesh, fo.base, k));
+  }
+  // ... and brute force agrees wherever it can run: the bound is never above
+  // the optimum.
+  for (uint64_t seed = 1; seed <= 60; ++seed) {
+    const FirstOrder small = first_order(delaunay(validate_points(mixed_instance(seed, 1)).xyz));
+    const double bound = objective_terms(Objective::MinmaxDegree, small.base).global_bound(small.base);
+    for (uint32_t k : {1u, 2u, 3u}) {
+      SolveOptions brute;
+      brute.order = k;
+      brute.method = Method::BruteForce;
+      CHECK(bound <= solve(small, Objective::MinmaxDegree, brute).value);
+    }
+  }
+}

@@ -1,4 +1,4 @@
-// Exact polynomial algorithms (paper, Section 2, and reference [10]).
+// Exact polynomial algorithms (paper, Section 2, and Gudmundsson, Hammar and van Kreveld, "Higher order Delaunay triangulations", 2002).
 #pragma once
 #include "hodt/factor_graph.hpp"
 #include "hodt/solution.hpp"

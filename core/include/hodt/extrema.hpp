@@ -1,4 +1,4 @@
-// Fewest local minima / extrema over first order triangulations (after [10]).
+// Fewest local minima / extrema over first order triangulations (after Gudmundsson, Hammar and van Kreveld, 2002).
 //
 // Why these are optimal. A vertex v always keeps the neighbours it has through
 // fixed edges; a quad's choice only decides whether its diagonal's endpoints see

@@ -1,5 +1,5 @@
 // Higher order Delaunay: useful k-OD edges and triangles (paper, Section 4.3;
-// Gudmundsson, Hammar, van Kreveld [10]: Definitions 2, 3, Lemmas 1, 2).
+// Gudmundsson, Hammar, van Kreveld, "Higher order Delaunay triangulations", CGTA 2002: Definitions 2, 3, Lemmas 1, 2).
 //
 // A triangle is k-OD if its circumcircle holds at most k points. By Lemma 1 an edge
 // uv is a useful k-OD edge (in some k-OD triangulation) iff the triangles u v s1 and

@@ -1,4 +1,4 @@
-// Every measure of DEFINITIONS.md on one triangulation. Decisions (edge shape,
+// Every measure of docs/objectives.md on one triangulation. Decisions (edge shape,
 // vertex class, extrema) are exact; measured values (areas, angles, radii) are
 // doubles computed the same way everywhere, so every solver compares the same numbers.
 #pragma once

@@ -1,5 +1,5 @@
 // Every objective written once, as local terms and how they combine
-// (DEFINITIONS.md): a term per vertex (over its star), per edge (over its two
+// (docs/objectives.md): a term per vertex (over its star), per edge (over its two
 // triangles), or per triangle, combined by sum or max. evaluate_terms() and the
 // region engine (region_model.hpp) read only this description, at every order:
 // adding an objective means adding its terms here, not touching a solver.
@@ -69,6 +69,7 @@ struct ObjectiveTerms {
   // then summarised by one mask, and fans with equal masks are interchangeable.
   uint32_t (*neighbor_class)(const Mesh& points, uint32_t v, uint32_t w) = nullptr;
   double (*term_of_classes)(uint32_t mask) = nullptr;
+  uint32_t classes = 0;  // how many classes there are (neighbor_class < classes)
   // Optional, for vertex terms over neighbour sets: drops from nb (v's
   // neighbours so far, sorted) those that cannot change v's term, whatever
   // neighbours come next, as long as every vertex of `fixed` (the ends of v's
@@ -79,6 +80,10 @@ struct ObjectiveTerms {
   // term of that number. A region's fan is then its count of new neighbours
   // (regions share only fixed edges, so counts add up).
   double (*term_of_degree)(uint32_t degree) = nullptr;
+  // Optional: a bound on the optimum that every triangulation of the points
+  // meets, from counts alone (every triangulation has as many edges as the
+  // Delaunay one): a result that meets it is optimal at every order.
+  double (*global_bound)(const Mesh& delaunay) = nullptr;
   // Edge terms: whether they read the apexes at all (a length does not).
   bool edge_reads_apexes = true;
   // Measured within a domain (domain.hpp): the terms below read only inside

@@ -1,4 +1,4 @@
-// The 13 objectives of DEFINITIONS.md: ids, senses, and their value on a triangulation.
+// The 13 objectives of docs/objectives.md: ids, senses, and their value on a triangulation.
 #pragma once
 #include <array>
 #include <optional>

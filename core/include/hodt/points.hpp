@@ -1,4 +1,4 @@
-// Input validation of a terrain's points, exactly as DEFINITIONS.md says.
+// Input validation of a terrain's points, exactly as docs/objectives.md says.
 #pragma once
 #include <cstdint>
 #include <string>

@@ -50,6 +50,12 @@ class RegionTerms {
   // Vertex terms that read only the classes of the neighbours: a fan is its mask.
   bool reads_classes() const { return d_.neighbor_class != nullptr; }
   uint32_t neighbor_class(uint32_t v, uint32_t w) const { return d_.neighbor_class(dt_, v, w); }
+  // The smallest class mask that no neighbours can tell from `mask` at v: with
+  // the classes of v's fixed neighbours (present in every triangulation), masks
+  // that give the same term whatever classes join them are one state. (A vertex
+  // that already has a lower neighbour over a fixed edge is no minimum, whatever
+  // a region does: its fans are all alike.)
+  uint32_t canonical_classes(uint32_t v, uint32_t mask) const;
   // Vertex terms that read only the degree: a fan is its number of neighbours
   // over edges that are not fixed.
   bool reads_degree() const { return d_.term_of_degree != nullptr; }
@@ -123,6 +129,8 @@ class RegionTerms {
   Stars stars_;
   std::unordered_map<uint64_t, uint32_t> boundary_;  // fixed or hull halfedges by (origin, target)
   NeighborFilter filter_;
+  std::vector<uint8_t> fixed_classes_;   // per vertex: its fixed neighbours' class mask (small class counts)
+  std::vector<uint8_t> canonical_;       // [fixed mask][mask] -> canonical mask, class counts up to 4
   std::vector<uint32_t> useful_degree_;  // per vertex: its useful edges, the most neighbours it can have
   std::vector<std::vector<Tri>> candidate_fan_;  // per vertex: its k-OD triangles (vertex pairs, with a floor)
   mutable std::unordered_map<std::array<uint32_t, 4>, bool, WordsHash> harmless_;  // (v, triangle) -> harmless

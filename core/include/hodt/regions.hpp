@@ -61,8 +61,11 @@ struct RegionLimits {
   uint64_t max_total_nodes = 1'500'000;
   uint64_t max_states_per_region = 2'000;  // triangulations kept per region
   // Regions of more Delaunay triangles are not enumerated at all (each fill
-  // costs its size, and their triangulations are astronomically many).
+  // costs its size, and their triangulations are astronomically many); with
+  // terms, the DP still tries them, within large_region_states kept fills each
+  // (a long strip with few signatures needs a few hundred; most others fail fast).
   uint32_t max_region_triangles = 64;
+  uint64_t large_region_states = 5'000;
   Progress progress;
 };
 
