@@ -176,6 +176,30 @@ describe('CLI (npm bin)', () => {
   });
 });
 
+describe('sizes', () => {
+  it('the gzip sizes in docs/api.md and the README are within 10% of what sizes.mjs measures', () => {
+    const r = spawnSync('node', [join(here, 'sizes.mjs')], { encoding: 'utf8' });
+    expect(r.status, r.stderr).toBe(0);
+    const gzipOf = (table: string, what: string) => {
+      const line = table.split('\n').find((l) => l.startsWith(`| ${what}`));
+      return Number(/^\|[^|]*\|[^|]*\| \**([\d.]+) KiB/.exec(line ?? '')?.[1]);
+    };
+    const measured = { wasm: gzipOf(r.stdout, '`dist/wasm/hodt.wasm`'), total: gzipOf(r.stdout, '**total') };
+    const api = readFileSync(join(repo, 'docs/api.md'), 'utf8');
+    const readme = /About (\d+) KiB gzipped in total \(wasm (\d+) KiB\)/.exec(readFileSync(join(repo, 'README.md'), 'utf8'));
+    const claims = [
+      [gzipOf(api, '`dist/wasm/hodt.wasm`'), measured.wasm],
+      [gzipOf(api, '**total'), measured.total],
+      [Number(readme?.[2]), measured.wasm],
+      [Number(readme?.[1]), measured.total],
+    ];
+    for (const [claimed, actual] of claims) {
+      expect(actual).toBeGreaterThan(0);
+      expect(Math.abs(claimed! - actual!) / actual!, `claimed ${claimed} KiB, measured ${actual} KiB`).toBeLessThan(0.1);
+    }
+  });
+});
+
 describe('TypeScript', () => {
   beforeAll(() => {
     cpSync(join(here, 'examples'), join(project.dir, 'examples'), { recursive: true });
@@ -201,11 +225,23 @@ describe('TypeScript', () => {
   it('the documentation examples compile in strict mode (NodeNext resolution)', () => check('tsconfig.json'));
   it('the documentation examples compile in strict mode (Bundler resolution)', () => check('tsconfig.bundler.json'));
   it('a strict project without @types/node, esnext lib or skipLibCheck compiles', () => check('tsconfig.minimal.json'));
-  it('the README Node example runs', () => {
+  it('a strict Node-only project (lib ES2022, @types/node, no DOM, skipLibCheck off) compiles', () =>
+    check('tsconfig.node-only.json'));
+  it('the docs Node example (TypeScript, `using`) runs', () => {
     check('tsconfig.json', ['--noEmit', 'false', '--outDir', 'examples/out']);
     const r = inProject('node', ['examples/out/node.js', fixture]);
     expect(r.status, r.stderr).toBe(0);
     expect(r.stdout).toMatch(/^\d+ flippable quads; local minima: Delaunay \d+, optimal \d+\nUint32Array\(\d+\)/);
+  });
+  it('the README Node example is plain JavaScript and runs as it is', () => {
+    const readme = readFileSync(join(repo, 'README.md'), 'utf8');
+    const block = /Node \(plain JavaScript[^\n]*\n\n```js\n([\s\S]*?)```/.exec(readme)?.[1];
+    expect(block).toBe(readFileSync(join(here, 'examples/solve.mjs'), 'utf8'));
+    for (const node of ['node', ...extraNodes]) {
+      const r = inProject(node, ['examples/solve.mjs', fixture]);
+      expect(r.status, r.stderr).toBe(0);
+      expect(r.stdout).toMatch(/^\d+ flippable quads; local minima: Delaunay \d+, optimal \d+\nUint32Array\(\d+\)/);
+    }
   });
   it('the hodt/export example runs and writes its files', () => {
     check('tsconfig.json', ['--noEmit', 'false', '--outDir', 'examples/out']);

@@ -12,15 +12,23 @@ import { describeValue, guard, InputError } from './errors.js';
 import { loadModule, type LoadOptions } from './load.js';
 import type { MeshData, MeshFormat } from './export/meshData.js';
 import type { ObjectiveInfo } from './objectives.js';
-import { type PointInput, toXyz } from './points.js';
+import { checkOptionNames } from './options.js';
+import { type Accessor, type PointInput, toXyz } from './points.js';
 import { Terrain } from './terrain.js';
 import type { HodtModule } from './wasm/hodt.mjs';
 
 export { BusyError, CancelledError, HodtError, InputError, InternalError, LimitError } from './errors.js';
-export { OBJECTIVE_IDS, type Method, type ObjectiveId, type ObjectiveInfo, type ObjectiveValues } from './objectives.js';
+export {
+  OBJECTIVE_IDS,
+  type Method,
+  type ObjectiveId,
+  type ObjectiveInfo,
+  type ObjectiveValues,
+  type SolvedBy,
+} from './objectives.js';
 export * from './terrain.js';
 export type { LoadOptions } from './load.js';
-export type { Point3, PointInput } from './points.js';
+export type { Accessor, GeoJsonPoints, Point3, PointInput } from './points.js';
 export type { ProgressCallback, SolveOptions } from './solve.js';
 
 export interface TerrainOptions {
@@ -29,7 +37,14 @@ export interface TerrainOptions {
   /** The domain (Terrain.maxEdge): triangles with a longer edge are not
    * measured. Default null: every triangle is measured. */
   maxEdge?: number | null;
+  /** Accessors for points given as an array of items of your own, as
+   * `Delaunator.from(points, getX, getY)`: all three, each (item, index) => number. */
+  x?: Accessor;
+  y?: Accessor;
+  z?: Accessor;
 }
+
+const TERRAIN_OPTIONS = ['dedupe', 'maxEdge', 'x', 'y', 'z'] as const satisfies readonly (keyof TerrainOptions)[];
 
 export interface ParsedPoints {
   /** x, y, z per point. */
@@ -81,11 +96,12 @@ export class Hodt {
   /** Builds the Delaunay triangulation of the points and its first order
    * structure. The points are copied; dispose() the terrain when done. */
   terrain(points: PointInput, options: TerrainOptions = {}): Terrain {
-    const { dedupe = 'error', maxEdge = null } = options ?? {};
+    checkOptionNames('terrain', options, TERRAIN_OPTIONS);
+    const { dedupe = 'error', maxEdge = null, x, y, z } = options ?? {};
     if (dedupe !== 'error' && dedupe !== 'first') {
       throw new InputError(`dedupe is ${describeValue(dedupe)}, expected 'error' or 'first'`);
     }
-    const xyz = toXyz(points);
+    const xyz = toXyz(points, { x, y, z });
     const terrain = guard(() => new Terrain(this.#module.fromPoints(xyz, dedupe === 'first'), xyz.slice()));
     if (maxEdge !== null) {
       try {
@@ -138,6 +154,7 @@ export class Hodt {
 }
 
 let loading: Promise<Hodt> | null = null;
+const LOAD_OPTIONS = ['wasmUrl', 'wasmBinary', 'wasmModule'] as const satisfies readonly (keyof LoadOptions)[];
 
 /**
  * Loads the wasm module: once; later calls return the same instance and ignore
@@ -145,7 +162,12 @@ let loading: Promise<Hodt> | null = null;
  * next call tries again.
  */
 export function loadHodt(options: LoadOptions = {}): Promise<Hodt> {
-  loading ??= loadModule(options).then(
+  try {
+    checkOptionNames('loadHodt', options, LOAD_OPTIONS);
+  } catch (e) {
+    return Promise.reject(e);
+  }
+  loading ??= loadModule(options ?? {}).then(
     (m) => new Hodt(m),
     (e: unknown) => {
       loading = null;

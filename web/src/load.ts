@@ -39,7 +39,7 @@ export async function loadModule(options: LoadOptions = {}): Promise<HodtModule>
     if (options.wasmModule) {
       const module = options.wasmModule;
       init.instantiateWasm = (imports, receive) => {
-        WebAssembly.instantiate(module, imports).then((instance) => receive(instance, module), fail);
+        WebAssembly.instantiate(module, imports as WebAssembly.Imports).then((instance) => receive(instance, module), fail);
         return {};
       };
     } else if (options.wasmBinary) {

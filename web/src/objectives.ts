@@ -16,7 +16,11 @@ export const OBJECTIVE_IDS = [
 ] as const;
 
 export type ObjectiveId = (typeof OBJECTIVE_IDS)[number];
+/** What SolveOptions.method asks for. */
 export type Method = 'brute-force' | 'exact' | 'approx' | 'auto';
+/** What ran (Solution.method): 'auto' reports its choice; 'heuristic' is the
+ * order k >= 2 local search with a proven bound. */
+export type SolvedBy = 'brute-force' | 'exact' | 'approx' | 'heuristic';
 
 export interface ObjectiveInfo {
   id: ObjectiveId;

@@ -1,5 +1,6 @@
 import { CancelledError, describeValue, InputError, toHodtError } from './errors.js';
 import type { Method, ObjectiveId } from './objectives.js';
+import { checkOptionNames } from './options.js';
 import type { RawSolution, RawTerrain } from './wasm/hodt.mjs';
 
 /** The raw result, with the triangles when the core gives them (order >= 2). */
@@ -19,8 +20,10 @@ export interface SolveOptions {
    * 'brute-force' (the reference: all 2^m choices, m <= 24, at order 1; every k-OD
    * triangulation of at most 30 points at order k). */
   method?: Method;
-  /** Approximation schemes: a value within a factor (1 - epsilon) of the optimum,
-   * in (0, 1), checked at every order. Default 0.25. */
+  /** Approximation schemes, in (0, 1), checked at every order. Default 0.25.
+   * max-convex-edges: at least (1 - epsilon) times the optimum; min-mixed-vertices:
+   * the guarantee is on the vertices that are not mixed (at least (1 - epsilon)
+   * times their most), not on the mixed count. */
   epsilon?: number;
   /** Order k of the Delaunay triangulations to search (every triangle's
    * circumcircle holds at most k points), 1 to 16. Default 1: the 2^m first order
@@ -55,9 +58,16 @@ export function checkNumber(name: string, value: unknown): asserts value is numb
   if (typeof value !== 'number') throw new InputError(`${name} is ${describeValue(value)}, expected a number`);
 }
 
+const SOLVE_OPTIONS = ['method', 'epsilon', 'order', 'trace', 'progress', 'signal'] as const satisfies readonly (keyof SolveOptions)[];
+
 function checkOptions(objective: unknown, options: SolveOptions): void {
+  checkOptionNames('solve', options, SOLVE_OPTIONS);
   if (typeof objective !== 'string') throw new InputError(`objective is ${describeValue(objective)}, expected an objective id`);
-  const { method = 'auto', epsilon = 0.25, order = 1 } = options;
+  const { method = 'auto', epsilon = 0.25, order = 1, progress, signal } = options;
+  if (progress !== undefined && typeof progress !== 'function')
+    throw new InputError(`progress is ${describeValue(progress)}, expected a function`);
+  if (signal !== undefined && (signal === null || typeof signal !== 'object' || typeof signal.aborted !== 'boolean'))
+    throw new InputError(`signal is ${describeValue(signal)}, expected an AbortSignal`);
   if (typeof method !== 'string') throw new InputError(`method is ${describeValue(method)}, expected brute-force, exact, approx or auto`);
   checkNumber('epsilon', epsilon);
   checkNumber('order', order);
@@ -66,6 +76,7 @@ function checkOptions(objective: unknown, options: SolveOptions): void {
 /** Runs the raw solver with checked options, progress and cancellation. */
 export function solveRaw(raw: RawTerrain, objective: ObjectiveId, options: SolveOptions): RawResult {
   checkOptions(objective, options);
+  options ??= {};
   const { method = 'auto', epsilon = 0.25, order = 1, trace = false, progress, signal } = options;
   if (signal?.aborted) throw aborted(signal);
   // A JS exception must not unwind through the wasm frames: the callback catches

@@ -2,7 +2,7 @@
 // lib lacks it (TypeScript >= 5.2 knows this lib; it only adds types).
 /// <reference lib="esnext.disposable" preserve="true" />
 import { BusyError, describeValue, guard, InputError } from './errors.js';
-import { type ObjectiveId, type ObjectiveValues, toValues } from './objectives.js';
+import { type ObjectiveId, type ObjectiveValues, type SolvedBy, toValues } from './objectives.js';
 import { checkNumber, type RawResult, type SolveOptions, solveRaw } from './solve.js';
 import type { RawMeasures, RawTerrain } from './wasm/hodt.mjs';
 
@@ -64,7 +64,7 @@ export interface Solution {
   /** The method that ran: 'auto' reports what it chose; order >= 2 reports
    * 'brute-force', 'exact' (the DP over the regions) or 'heuristic' (local search
    * with a bound). */
-  method: string;
+  method: SolvedBy;
   /** Objective value of the returned triangulation. */
   value: number;
   /** Value of the Delaunay triangulation, for comparison. */
@@ -119,23 +119,35 @@ export interface TerrainStats {
  * (the m flippable quads). Make one with `hodt.terrain()`.
  *
  * It holds wasm memory that JavaScript's garbage collector does not see: call
- * dispose() when done, or declare it with `using`. Every array it returns is a new
- * copy that you own (never a view of wasm memory), and every point index refers to
- * the points as you gave them.
+ * dispose() when done, or declare it with `using` (TypeScript 5.2+, Node 24+).
+ * A terrain that becomes unreachable undisposed is freed after garbage
+ * collection too (a FinalizationRegistry safety net), but when is up to the
+ * engine: wasm memory can run out first. No array it returns is a view of wasm
+ * memory. The arrays that describe the terrain itself (points, vertexIndex,
+ * quads, quadEdges, quadOfTriangle) are the same array on every read until the
+ * terrain changes, as delaunator's are: read them freely, copy before
+ * modifying. Results (solve, measures, triangulation, ...) are new arrays you own.
+ * Every point index refers to the points as you gave them.
  *
  * While solve() runs, its progress callback may read the terrain (the solver only
  * reads it too), but changing it (addPoint, movePoint, removePoint), freeing it
  * (dispose) or starting another solve throws BusyError.
  */
+// Frees the wasm side of terrains collected without dispose().
+const leaked = new FinalizationRegistry<RawTerrain>((raw) => raw.delete());
+
 export class Terrain implements Disposable {
   #raw: RawTerrain | null;
   #input: Float64Array;
   #solving = false;  // a solve() runs: the core holds references into the terrain
+  // The structure's arrays, read once per version of the terrain (edits clear them).
+  #cache: { vertexIndex?: Uint32Array; quads?: Uint32Array; quadEdges?: Uint32Array; quadOfTriangle?: Int32Array } = {};
 
   /** @internal use Hodt.terrain() or Hodt.fromTriangulation() */
   constructor(raw: RawTerrain, input: Float64Array) {
     this.#raw = raw;
     this.#input = input;
+    leaked.register(this, raw, this);
   }
 
   get #handle(): RawTerrain {
@@ -171,25 +183,25 @@ export class Terrain implements Disposable {
    * attribute, after conversion to Float32Array). */
   get points(): Float64Array {
     void this.#handle;
-    return this.#input.slice();
+    return this.#input;
   }
   /** Indices of the points that are vertices of the triangulation, ascending (all
    * of them unless duplicates were dropped). */
   get vertexIndex(): Uint32Array {
-    return this.#handle.inputIndex().sort();
+    return (this.#cache.vertexIndex ??= this.#handle.inputIndex().sort());
   }
   /** Four point indices per quad: a, b (the Delaunay diagonal), c, d (the other). */
   get quads(): Uint32Array {
-    return this.#handle.quads();
+    return (this.#cache.quads ??= this.#handle.quads());
   }
   /** For each quad, the halfedge of its Delaunay diagonal in `delaunay()`. */
   get quadEdges(): Uint32Array {
-    return this.#handle.quadEdges();
+    return (this.#cache.quadEdges ??= this.#handle.quadEdges());
   }
   /** For each triangle slot (of any choice's triangulation), its quad or -1 if
    * the triangle is the same in every first order triangulation. */
   get quadOfTriangle(): Int32Array {
-    return this.#handle.quadOfTriangle();
+    return (this.#cache.quadOfTriangle ??= this.#handle.quadOfTriangle());
   }
   /**
    * The domain, for data with gaps: a triangle with an edge longer than maxEdge
@@ -229,6 +241,7 @@ export class Terrain implements Disposable {
     grown.set(this.#input);
     grown.set([x, y, z], this.#input.length);
     this.#input = grown;
+    this.#cache = {};
     return i;
   }
   /** Moves point `index` to (x, y, z); see addPoint. */
@@ -237,7 +250,10 @@ export class Terrain implements Disposable {
     checkIndex(index, this.#input.length / 3);
     checkCoordinates(index, x, y, z);
     guard(() => raw.movePoint(index, x, y, z));
+    // A new array: one read before the edit keeps the points it was read with.
+    this.#input = this.#input.slice();
     this.#input[3 * index] = x, this.#input[3 * index + 1] = y, this.#input[3 * index + 2] = z;
+    this.#cache = {};
   }
   /** Removes point `index`; later points' indices go down by one. See addPoint.
    * A point dropped as a duplicate (`dedupe: 'first'`) can be removed too: only
@@ -250,6 +266,7 @@ export class Terrain implements Disposable {
     shrunk.set(this.#input.subarray(0, 3 * index));
     shrunk.set(this.#input.subarray(3 * index + 3), 3 * index);
     this.#input = shrunk;
+    this.#cache = {};
   }
 
   /** The Delaunay triangulation (the choice of all zeros). */
@@ -316,7 +333,7 @@ export class Terrain implements Disposable {
       objective: s.objective as ObjectiveId,
       sense: s.sense,
       order: s.order ?? 1,
-      method: s.method,
+      method: s.method as SolvedBy,
       value: s.value,
       delaunayValue: s.delaunayValue,
       optimal: s.optimal,
@@ -363,8 +380,12 @@ export class Terrain implements Disposable {
 
   /** Frees the wasm memory. Idempotent; any other use afterwards throws InputError. */
   dispose(): void {
-    if (this.#raw) this.#idle('dispose').delete();
+    if (this.#raw) {
+      this.#idle('dispose').delete();
+      leaked.unregister(this);
+    }
     this.#raw = null;
+    this.#cache = {};
   }
   /** Same as dispose(), for `using terrain = hodt.terrain(points)`. */
   [Symbol.dispose](): void {

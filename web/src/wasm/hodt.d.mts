@@ -101,10 +101,18 @@ export interface HodtModule {
 export interface ModuleOptions {
   wasmBinary?: ArrayBuffer | Uint8Array;
   locateFile?: (path: string, prefix: string) => string;
-  instantiateWasm?: (
-    imports: WebAssembly.Imports,
-    receive: (instance: WebAssembly.Instance, module: WebAssembly.Module) => void,
-  ) => WebAssembly.Exports | {};
+  // Structural: these types must compile where no lib declares WebAssembly.
+  instantiateWasm?: (imports: object, receive: (instance: object, module: WebAssembly.Module) => void) => object;
+}
+// Node-only projects (lib ES2022, @types/node) have no WebAssembly namespace:
+// this empty interface gives LoadOptions.wasmModule a name there, and merges
+// with the real WebAssembly.Module wherever the DOM or webworker lib declares it.
+declare global {
+  // eslint-disable-next-line @typescript-eslint/no-namespace
+  namespace WebAssembly {
+    // eslint-disable-next-line @typescript-eslint/no-empty-object-type
+    interface Module {}
+  }
 }
 declare function createHodtModule(options?: ModuleOptions): Promise<HodtModule>;
 export default createHodtModule;
