@@ -265,6 +265,9 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // too large to list through their views; when those views agree, a
   // triangulation that meets it.
   double bound = tighter(info(o).sense, relaxation_bound(model.graph, dl), global);
+  // Min-max: the optimum is at least every term that no region can change, and
+  // every fixed edge's smallest possible term.
+  if (description.combine == TermCombine::Max) bound = tighter(info(o).sense, bound, terms.fixed_edges_bound());
   ViewBoundLimits vl;
   vl.views.progress = vl.dp.progress = options.progress;
   const bool met = !better(info(o).sense, bound, r.value);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "hodt/domain.hpp"
+#include "hodt/mean_area.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/pair_measures.hpp"
 #include "hodt/star_cone.hpp"
@@ -69,6 +70,11 @@ double extremum_of_classes(uint32_t mask) { return mask == 1 || mask == 2; }
 
 double degree(const Mesh&, const Star& s) { return static_cast<double>(s.degree); }
 double degree_term(uint32_t d) { return static_cast<double>(d); }
+// The largest triangle is at least the mean (mean_area.hpp), in the area's unit
+// (triangle_area: squared plane units).
+double area_bound(const Mesh& m) { return mean_triangle_area_below(m); }
+// A ratio of two areas is at least 1, and there is a pair once there are two triangles.
+double ratio_bound(const Mesh& m) { return m.num_triangles() >= 2 ? 1 : 0; }
 // The largest degree is at least the mean, 2E / n (E: the edges, the same in
 // every triangulation of the points).
 double degree_bound(const Mesh& m) {
@@ -117,12 +123,18 @@ std::array<ObjectiveTerms, kNumObjectives> make_table() {
   ObjectiveTerms total_length{S::Edge, C::Sum, kUnbounded, nullptr, length};
   total_length.edge_reads_apexes = false;
   set(Objective::MinTotalEdgeLength, total_length);
-  set(Objective::MinmaxTriangleArea, {S::Triangle, C::Max, kUnbounded, nullptr, nullptr, area});
-  set(Objective::MinmaxEdgeAreaRatio, {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_area_ratio_above});
+  ObjectiveTerms largest_area{S::Triangle, C::Max, kUnbounded, nullptr, nullptr, area};
+  largest_area.global_bound = area_bound;
+  set(Objective::MinmaxTriangleArea, largest_area);
+  ObjectiveTerms edge_ratio{S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_area_ratio_above};
+  edge_ratio.global_bound = ratio_bound;
+  set(Objective::MinmaxEdgeAreaRatio, edge_ratio);
   set(Objective::MinmaxEdgeNormalAngle, {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_normal_angle_above});
   set(Objective::MinmaxEdgeEnclosingCircle,
       {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_enclosing_circle_above});
-  set(Objective::MinmaxVertexAreaRatio, {S::VertexPair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_area_ratio_above});
+  ObjectiveTerms vertex_ratio{S::VertexPair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_area_ratio_above};
+  vertex_ratio.global_bound = ratio_bound;
+  set(Objective::MinmaxVertexAreaRatio, vertex_ratio);
   set(Objective::MinmaxVertexNormalAngle,
       {S::VertexPair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_normal_angle_above});
   return t;
@@ -133,7 +145,7 @@ std::array<ObjectiveTerms, kNumObjectives> make_table() {
 std::array<ObjectiveTerms, kNumObjectives> with_domain(std::array<ObjectiveTerms, kNumObjectives> t) {
   for (ObjectiveTerms& d : t) {
     d.neighbor_class = nullptr, d.term_of_classes = nullptr, d.drop_neighbors = nullptr, d.term_of_degree = nullptr;
-    d.global_bound = nullptr;  // (counts over all triangles)
+    d.global_bound = nullptr;  // (counts over all triangles; a domain may leave no pair)
     d.edge_reads_apexes = true;
     d.domain = true;
   }

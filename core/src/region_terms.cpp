@@ -90,6 +90,30 @@ bool RegionTerms::harmless(uint32_t v, const Tri& t) const {
   return it->second;
 }
 
+double RegionTerms::fixed_edges_bound() const {
+  double best = floor_;
+  if (d_.combine != TermCombine::Max || !reads_edges() || !cand_) return best;
+  for (uint32_t e = 0; e < dt_.halfedges.size(); ++e) {
+    const int32_t f = dt_.halfedges[e];
+    if (!R_.fixed[e] || f < static_cast<int32_t>(e)) continue;  // (each interior fixed edge once)
+    const uint32_t u = dt_.origin(e), v = dt_.target(e);
+    const auto left = cand_->find(edge_key(u, v)), right = cand_->find(edge_key(v, u));
+    if (left == cand_->end() || right == cand_->end()) continue;
+    // The smallest term over the pairs of candidates; a term at most `best` (the
+    // cut) cannot raise the bound, so the first one ends the search.
+    double least = INFINITY;
+    for (uint32_t w : left->second) {
+      for (uint32_t x : right->second) {
+        least = std::min(least, edge_term(d_, dt_, u, v, w, x, best));
+        if (least <= best) break;
+      }
+      if (least <= best) break;
+    }
+    if (least > best) best = least;
+  }
+  return best;
+}
+
 double RegionTerms::fixed_terms_max() const {
   auto fixed = [&](uint32_t t) { return R_.regions[R_.region_of_triangle[t]].delaunay_triangles.size() == 1; };
   double m = 0;

@@ -196,28 +196,56 @@ TEST_CASE("long regions: minima and extrema on a gridded DEM at order 4 are exac
   }
 }
 
-TEST_CASE("minmax-degree: a first order optimum at the mean degree is optimal at every order, at once") {
+TEST_CASE("bounds every triangulation meets (mean degree, mean area, area ratio 1): a first order optimum that meets one is optimal at every order") {
   // Every triangulation of the points has the same number of edges E, so the
-  // largest degree is at least ceil(2E / n): a grid's 6.
+  // largest degree is at least ceil(2E / n): a grid's 6; the same number of
+  // triangles T, so the largest is at least the hull's area over T: a unit grid's
+  // 1/2; and a grid's unit triangles all have one area, a ratio of 1.
   const FirstOrder fo = first_order(delaunay(validate_points(grid_points(40, 40, 3, true)).xyz));
-  for (uint32_t k : {2u, 4u, 8u}) {
-    SolveOptions options;
-    options.order = k;
-    const Solution s = solve(fo, Objective::MinmaxDegree, options);
-    CHECK(s.optimal);
-    CHECK(s.value == 6);
-    CHECK(is_k_order(*s.mesh, fo.base, k));
-  }
-  // ... and brute force agrees wherever it can run: the bound is never above
-  // the optimum.
+  for (Objective o : {Objective::MinmaxDegree, Objective::MinmaxEdgeAreaRatio, Objective::MinmaxVertexAreaRatio,
+                      Objective::MinmaxTriangleArea})
+    for (uint32_t k : {2u, 4u, 8u}) {
+      SolveOptions options;
+      options.order = k;
+      const Solution s = solve(fo, o, options);
+      CHECK(s.optimal);
+      CHECK(s.value == (o == Objective::MinmaxDegree ? 6 : o == Objective::MinmaxTriangleArea ? 0.5 : 1));
+      CHECK(is_k_order(*s.mesh, fo.base, k));
+    }
+  // ... and never above the optimum that brute force finds.
   for (uint64_t seed = 1; seed <= 60; ++seed) {
     const FirstOrder small = first_order(delaunay(validate_points(mixed_instance(seed, 1)).xyz));
-    const double bound = objective_terms(Objective::MinmaxDegree, small.base).global_bound(small.base);
-    for (uint32_t k : {1u, 2u, 3u}) {
-      SolveOptions brute;
-      brute.order = k;
-      brute.method = Method::BruteForce;
-      CHECK(bound <= solve(small, Objective::MinmaxDegree, brute).value);
+    for (const auto& oi : objectives()) {
+      const ObjectiveTerms& d = objective_terms(oi.objective, small.base);
+      if (!d.global_bound) continue;
+      for (uint32_t k : {1u, 2u, 3u}) {
+        SolveOptions brute;
+        brute.order = k;
+        brute.method = Method::BruteForce;
+        CHECK(d.global_bound(small.base) <= solve(small, oi.objective, brute).value);
+      }
+    }
+  }
+}
+
+TEST_CASE("heuristic bounds at order k (relaxation, floor, fixed edges, counts) never pass the brute-force optimum") {
+  for (uint64_t seed = 1; seed <= 40; ++seed) {
+    const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed, 1)).xyz));
+    for (uint32_t k : {2u, 3u}) {
+      for (const auto& oi : objectives()) {
+        SolveOptions approx;
+        approx.method = Method::Approx;
+        const KOrderResult h = solve_k_order(fo, oi.objective, k, approx);
+        SolveOptions brute = approx;
+        brute.method = Method::BruteForce;
+        const KOrderResult b = solve_k_order(fo, oi.objective, k, brute);
+        CAPTURE(seed);
+        CAPTURE(k);
+        CAPTURE(oi.id);
+        CHECK(!better(oi.sense, h.value, b.value));
+        if (h.bound) CHECK(!better(oi.sense, b.value, *h.bound));
+        if (h.optimal) CHECK(close(h.value, b.value));
+      }
     }
   }
 }

@@ -82,7 +82,8 @@ struct ObjectiveTerms {
   double (*term_of_degree)(uint32_t degree) = nullptr;
   // Optional: a bound on the optimum that every triangulation of the points
   // meets, from counts alone (every triangulation has as many edges as the
-  // Delaunay one): a result that meets it is optimal at every order.
+  // Delaunay one; an area ratio is at least 1): a result that meets it is
+  // optimal at every order.
   double (*global_bound)(const Mesh& delaunay) = nullptr;
   // Edge terms: whether they read the apexes at all (a length does not).
   bool edge_reads_apexes = true;

@@ -98,6 +98,10 @@ class RegionTerms {
   // is at least this, so every term is read as at least this (clip): the same
   // optima, and far fewer apexes and signatures to tell apart.
   double floor() const { return floor_; }
+  // Min-max edge terms: every fixed edge is in every triangulation, with one
+  // candidate triangle on each side, so the largest over fixed edges of the
+  // smallest term its candidates allow bounds the optimum (at least floor()).
+  double fixed_edges_bound() const;
 
   // A whole triangulation of region r (counterclockwise triangles).
   StateKey key(uint32_t r, const std::vector<Tri>& triangulation) const;
