@@ -180,6 +180,7 @@ class FillDp {
     for (size_t i = 0; i < p.open.size(); ++i) {
       const size_t c = candidates(p.open[i]);
       if (c == 0) return;  // a dead end
+      if (c >= best) continue;  // (it cannot win even touching: no need to look)
       const uint64_t rank = c == 1 ? 0 : (touches_cover(p, p.open[i]) ? 0 : uint64_t(1) << 32) + c;
       if (rank < best) best = rank, at = i;
     }

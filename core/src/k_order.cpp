@@ -149,7 +149,8 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   const ObjectiveTerms& description = objective_terms(o, dt);
   const Sense sense = info(o).sense;
   const double global = description.global_bound ? description.global_bound(dt) : sense == Sense::Min ? -INFINITY : INFINITY;
-  if (bounded && k >= 2 && description.global_bound && (first_order.get(), !better(sense, global, first_order.value))) {
+  if (bounded && k >= 2 && description.global_bound) first_order.get();
+  if (bounded && k >= 2 && description.global_bound && !better(sense, global, first_order.value)) {
     // The first order optimum meets a bound that every triangulation meets.
     KOrderResult r;
     r.triangulation = *first_order.mesh;
@@ -208,7 +209,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     const uint32_t j = k <= 4 ? k - 1 : k <= 8 ? 4 : k / 2;
     KOrderResult lower = solve_regions(fo, o, j, lower_options, max_nodes, first_order, false);
     added = add_states_of(R, dt, lower.triangulation) || added;
-    if (better(info(o).sense, lower.value, start_value)) start = std::move(lower.triangulation), start_value = lower.value;
+    if (better(sense, lower.value, start_value)) start = std::move(lower.triangulation), start_value = lower.value;
   }
   if (added) model = region_model(dt, R, o, {}, options.progress);
   StateDpLimits dl;
@@ -223,7 +224,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   mini.max_table = 1 << 18;
   const StateDpResult listed = solve_states(model.graph, mini);
   if (bounded && listed.bound_only && !R.incomplete && !model.graph.relaxed_terms &&
-      !better(info(o).sense, listed.value, start_value)) {
+      !better(sense, listed.value, start_value)) {
     // The model is the whole problem, so its mini-bucket value bounds the
     // optimum, and the start already meets it.
     r.triangulation = std::move(start);
@@ -239,7 +240,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     x = improve_states(model.graph, x, options.progress);
     how = "local search from the mini-bucket DP";
     const std::vector<uint32_t> y = improve_states(model.graph, model.variable_states(states_of(R, start)), options.progress);
-    if (better(info(o).sense, evaluate_states(model.graph, y), evaluate_states(model.graph, x)))
+    if (better(sense, evaluate_states(model.graph, y), evaluate_states(model.graph, x)))
       x = y, how = "local search from the first order optimum";
     StateDpLimits window = dl;
     window.max_table = 1 << 16;
@@ -248,7 +249,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   }
   r.triangulation = R.triangulation(dt, model.region_states(x));
   r.value = evaluate(o, r.triangulation);
-  if (better(info(o).sense, start_value, r.value)) {  // (relaxed terms can mislead the search)
+  if (better(sense, start_value, r.value)) {  // (relaxed terms can mislead the search)
     r.triangulation = std::move(start);
     r.value = start_value;
   }
@@ -257,30 +258,28 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   Mesh flipped = r.triangulation;
   if (improve_by_flips(flipped, dt, k, o, options.progress)) {
     const double v = evaluate(o, flipped);
-    if (better(info(o).sense, v, r.value)) r.triangulation = std::move(flipped), r.value = v, how += ", then k-OD flips";
+    if (better(sense, v, r.value)) r.triangulation = std::move(flipped), r.value = v, how += ", then k-OD flips";
   }
   r.method = "heuristic";
   if (!bounded) return r;  // (not optimal: nothing proven)
   // The bound: the model's relaxation, or the tighter one that reads the regions
   // too large to list through their views; when those views agree, a
   // triangulation that meets it.
-  double bound = tighter(info(o).sense, relaxation_bound(model.graph, dl), global);
-  // Min-max: the optimum is at least every term that no region can change, and
-  // every fixed edge's smallest possible term.
-  if (description.combine == TermCombine::Max) bound = tighter(info(o).sense, bound, terms.fixed_edges_bound());
+  double bound = tighter(sense, relaxation_bound(model.graph, dl), global);
+  if (description.combine == TermCombine::Max) bound = tighter(sense, bound, terms.floor());
   ViewBoundLimits vl;
   vl.views.progress = vl.dp.progress = options.progress;
-  const bool met = !better(info(o).sense, bound, r.value);
+  const bool met = !better(sense, bound, r.value);
   if (const auto vb = met ? std::nullopt : view_bound(dt, R, o, cand, terms, rl.max_region_triangles, r.value, vl)) {
-    bound = tighter(info(o).sense, bound, vb->bound);
-    if (vb->realised && !better(info(o).sense, r.value, vb->bound)) {
+    bound = tighter(sense, bound, vb->bound);
+    if (vb->realised && !better(sense, r.value, vb->bound)) {
       r.triangulation = *vb->realised;
       r.value = vb->bound;  // (its value, evaluated)
       how += ", then the regions' views (" + std::to_string(vb->split_regions) + " regions, " +
              std::to_string(vb->rounds) + " rounds)";
     }
   }
-  r.bound = info(o).sense == Sense::Min ? std::min(bound, r.value) : std::max(bound, r.value);
+  r.bound = sense == Sense::Min ? std::min(bound, r.value) : std::max(bound, r.value);
   r.optimal = *r.bound == r.value;
   if (r.optimal) r.bound.reset();
   r.details = region_summary(R) + "; " + how + " (" +

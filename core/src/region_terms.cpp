@@ -58,7 +58,10 @@ RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o, const Ca
         canonical_[f * masks + a] = static_cast<uint8_t>(b);
       }
   }
-  if (d_.combine == TermCombine::Max) floor_ = fixed_terms_max();
+  if (d_.combine == TermCombine::Max) {
+    floor_ = fixed_edges_least(fixed_terms_max());
+    if (d_.global_bound) floor_ = std::max(floor_, d_.global_bound(dt));
+  }
   if (reads_degree() && floor_ > 0) {
     useful_degree_.assign(n, 0);
     for (const auto& [a, b] : R.useful) ++useful_degree_[a], ++useful_degree_[b];
@@ -90,9 +93,9 @@ bool RegionTerms::harmless(uint32_t v, const Tri& t) const {
   return it->second;
 }
 
-double RegionTerms::fixed_edges_bound() const {
-  double best = floor_;
-  if (d_.combine != TermCombine::Max || !reads_edges() || !cand_) return best;
+double RegionTerms::fixed_edges_least(double at_least) const {
+  double best = at_least;
+  if (!reads_edges() || !cand_) return best;
   for (uint32_t e = 0; e < dt_.halfedges.size(); ++e) {
     const int32_t f = dt_.halfedges[e];
     if (!R_.fixed[e] || f < static_cast<int32_t>(e)) continue;  // (each interior fixed edge once)

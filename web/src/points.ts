@@ -51,13 +51,7 @@ export function toXyz(points: PointInput, accessors: Accessors = {}): Float64Arr
       if (typeof f !== 'function') throw new InputError(`accessor ${name} is ${describeValue(f)}, expected a function`);
     const items = points as ArrayLike<unknown>;
     if (items == null || typeof items.length !== 'number') throw new InputError('points: expected an array of items for the accessors');
-    const xyz = new Float64Array(items.length * 3);
-    for (let i = 0; i < items.length; ++i) {
-      xyz[3 * i] = number(x(items[i], i), i, 'x');
-      xyz[3 * i + 1] = number(y(items[i], i), i, 'y');
-      xyz[3 * i + 2] = number(z(items[i], i), i, 'z');
-    }
-    return xyz;
+    return gather(items, 'point', (item, i) => [x(item, i), y(item, i), z(item, i)]);
   }
   if (points instanceof Float64Array) return points;
   if (points !== null && typeof points === 'object' && typeof (points as GeoJsonPoints).type === 'string')
@@ -70,40 +64,38 @@ export function toXyz(points: PointInput, accessors: Accessors = {}): Float64Arr
   const list = points as ArrayLike<unknown>;
   const first = list[0];
   if (Array.isArray(first) || ArrayBuffer.isView(first)) return fromTriples(list, 'point');
-  if (first !== null && typeof first === 'object') {
-    const xyz = new Float64Array(list.length * 3);
-    for (let i = 0; i < list.length; ++i) {
-      const p = list[i] as Point3;
+  if (first !== null && typeof first === 'object')
+    return gather(list, 'point', (p, i) => {
       if (p === null || typeof p !== 'object') throw new InputError(`point ${i}: expected {x, y, z}, got ${describeValue(p)}`);
-      xyz[3 * i] = number(p.x, i, 'x');
-      xyz[3 * i + 1] = number(p.y, i, 'y');
-      xyz[3 * i + 2] = number(p.z, i, 'z');
-    }
-    return xyz;
-  }
+      const { x, y, z } = p as Point3;
+      return [x, y, z];
+    });
   return Float64Array.from(list as ArrayLike<number>);
 }
 
-// A coordinate as given: numbers pass (the core names non-finite ones), other
-// types are named here rather than turned into NaN.
-function number(v: unknown, i: number, axis: string): number {
-  if (typeof v !== 'number') throw new InputError(`point ${i}: ${axis} is ${describeValue(v)}, expected a number`);
-  return v;
+// x, y, z of each item, as `coordinates` reads them. Numbers pass (the core names
+// non-finite ones); other types are named here rather than turned into NaN.
+function gather(items: ArrayLike<unknown>, what: string, coordinates: (item: unknown, i: number) => ArrayLike<unknown>): Float64Array {
+  const xyz = new Float64Array(items.length * 3);
+  for (let i = 0; i < items.length; ++i) {
+    const c = coordinates(items[i], i);
+    for (let axis = 0; axis < 3; ++axis) {
+      const v = c[axis];
+      if (typeof v !== 'number') throw new InputError(`${what} ${i}: ${'xyz'[axis]} is ${describeValue(v)}, expected a number`);
+      xyz[3 * i + axis] = v;
+    }
+  }
+  return xyz;
 }
 
 function fromTriples(list: ArrayLike<unknown>, what: string): Float64Array {
-  const xyz = new Float64Array(list.length * 3);
-  for (let i = 0; i < list.length; ++i) {
-    const p = list[i] as ArrayLike<unknown>;
-    if (p == null || typeof p !== 'object' || typeof p.length !== 'number')
-      throw new InputError(`${what} ${i}: expected [x, y, z], got ${describeValue(p)}`);
-    if (p.length < 3)
-      throw new InputError(`${what} ${i}: has ${p.length} coordinates, expected [x, y, z] (z is the height)`);
-    xyz[3 * i] = number(p[0], i, 'x');
-    xyz[3 * i + 1] = number(p[1], i, 'y');
-    xyz[3 * i + 2] = number(p[2], i, 'z');
-  }
-  return xyz;
+  return gather(list, what, (p, i) => {
+    const c = p as ArrayLike<unknown>;
+    if (c == null || typeof c !== 'object' || typeof c.length !== 'number')
+      throw new InputError(`${what} ${i}: expected [x, y, z], got ${describeValue(c)}`);
+    if (c.length < 3) throw new InputError(`${what} ${i}: has ${c.length} coordinates, expected [x, y, z] (z is the height)`);
+    return c;
+  });
 }
 
 // Point and MultiPoint coordinates, in document order.
@@ -125,7 +117,7 @@ function fromGeoJson(g: GeoJsonPoints): Float64Array {
         return;
       case 'MultiPoint':
         if (!Array.isArray(o.coordinates)) throw new InputError(`GeoJSON ${where}: MultiPoint coordinates are not an array`);
-        coordinates.push(...o.coordinates);
+        for (const c of o.coordinates) coordinates.push(c);  // (no spread: a million arguments overflow the stack)
         return;
       default:
         throw new InputError(

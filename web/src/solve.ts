@@ -60,10 +60,11 @@ export function checkNumber(name: string, value: unknown): asserts value is numb
 
 const SOLVE_OPTIONS = ['method', 'epsilon', 'order', 'trace', 'progress', 'signal'] as const satisfies readonly (keyof SolveOptions)[];
 
-function checkOptions(objective: unknown, options: SolveOptions): void {
+// The options with their defaults, each checked for its type.
+function checkedOptions(objective: unknown, options: SolveOptions | null | undefined) {
   checkOptionNames('solve', options, SOLVE_OPTIONS);
   if (typeof objective !== 'string') throw new InputError(`objective is ${describeValue(objective)}, expected an objective id`);
-  const { method = 'auto', epsilon = 0.25, order = 1, progress, signal } = options;
+  const { method = 'auto', epsilon = 0.25, order = 1, trace = false, progress, signal } = options ?? {};
   if (progress !== undefined && typeof progress !== 'function')
     throw new InputError(`progress is ${describeValue(progress)}, expected a function`);
   if (signal !== undefined && (signal === null || typeof signal !== 'object' || typeof signal.aborted !== 'boolean'))
@@ -71,13 +72,12 @@ function checkOptions(objective: unknown, options: SolveOptions): void {
   if (typeof method !== 'string') throw new InputError(`method is ${describeValue(method)}, expected brute-force, exact, approx or auto`);
   checkNumber('epsilon', epsilon);
   checkNumber('order', order);
+  return { method, epsilon, order, trace, progress, signal };
 }
 
 /** Runs the raw solver with checked options, progress and cancellation. */
 export function solveRaw(raw: RawTerrain, objective: ObjectiveId, options: SolveOptions): RawResult {
-  checkOptions(objective, options);
-  options ??= {};
-  const { method = 'auto', epsilon = 0.25, order = 1, trace = false, progress, signal } = options;
+  const { method, epsilon, order, trace, progress, signal } = checkedOptions(objective, options);
   if (signal?.aborted) throw aborted(signal);
   // A JS exception must not unwind through the wasm frames: the callback catches
   // it, cancels the run, and it is rethrown here once the core has cleaned up.

@@ -140,8 +140,10 @@ export class Terrain implements Disposable {
   #raw: RawTerrain | null;
   #input: Float64Array;
   #solving = false;  // a solve() runs: the core holds references into the terrain
-  // The structure's arrays, read once per version of the terrain (edits clear them).
+  // The structure's arrays, read once per version of the terrain (#edited clears
+  // them), and whether `points` has handed #input out (then an edit copies it).
   #cache: { vertexIndex?: Uint32Array; quads?: Uint32Array; quadEdges?: Uint32Array; quadOfTriangle?: Int32Array } = {};
+  #inputShared = false;
 
   /** @internal use Hodt.terrain() or Hodt.fromTriangulation() */
   constructor(raw: RawTerrain, input: Float64Array) {
@@ -183,6 +185,7 @@ export class Terrain implements Disposable {
    * attribute, after conversion to Float32Array). */
   get points(): Float64Array {
     void this.#handle;
+    this.#inputShared = true;
     return this.#input;
   }
   /** Indices of the points that are vertices of the triangulation, ascending (all
@@ -240,8 +243,7 @@ export class Terrain implements Disposable {
     const grown = new Float64Array(this.#input.length + 3);
     grown.set(this.#input);
     grown.set([x, y, z], this.#input.length);
-    this.#input = grown;
-    this.#cache = {};
+    this.#edited(grown);
     return i;
   }
   /** Moves point `index` to (x, y, z); see addPoint. */
@@ -250,10 +252,11 @@ export class Terrain implements Disposable {
     checkIndex(index, this.#input.length / 3);
     checkCoordinates(index, x, y, z);
     guard(() => raw.movePoint(index, x, y, z));
-    // A new array: one read before the edit keeps the points it was read with.
-    this.#input = this.#input.slice();
-    this.#input[3 * index] = x, this.#input[3 * index + 1] = y, this.#input[3 * index + 2] = z;
-    this.#cache = {};
+    // In place, unless `points` handed the array out: a read before the edit
+    // keeps the points it was read with.
+    const moved = this.#inputShared ? this.#input.slice() : this.#input;
+    moved[3 * index] = x, moved[3 * index + 1] = y, moved[3 * index + 2] = z;
+    this.#edited(moved);
   }
   /** Removes point `index`; later points' indices go down by one. See addPoint.
    * A point dropped as a duplicate (`dedupe: 'first'`) can be removed too: only
@@ -265,7 +268,13 @@ export class Terrain implements Disposable {
     const shrunk = new Float64Array(this.#input.length - 3);
     shrunk.set(this.#input.subarray(0, 3 * index));
     shrunk.set(this.#input.subarray(3 * index + 3), 3 * index);
-    this.#input = shrunk;
+    this.#edited(shrunk);
+  }
+
+  // The points after an edit: the cached arrays describe the old terrain.
+  #edited(input: Float64Array): void {
+    this.#input = input;
+    this.#inputShared = false;
     this.#cache = {};
   }
 
@@ -333,7 +342,7 @@ export class Terrain implements Disposable {
       objective: s.objective as ObjectiveId,
       sense: s.sense,
       order: s.order ?? 1,
-      method: s.method as SolvedBy,
+      method: s.method,
       value: s.value,
       delaunayValue: s.delaunayValue,
       optimal: s.optimal,

@@ -94,14 +94,12 @@ class RegionTerms {
   // v measure at most floor()? Then no term reads t above the floor, and fans
   // need not keep it (in fills, signatures and vertex_done alike).
   bool harmless(uint32_t v, const Tri& t) const;
-  // Min-max objectives: the largest term that no region can change. The optimum
-  // is at least this, so every term is read as at least this (clip): the same
-  // optima, and far fewer apexes and signatures to tell apart.
+  // Min-max objectives: a bound on the optimum from what every triangulation
+  // has: the largest term that no region can change, each fixed edge's smallest
+  // possible term, and the objective's global bound. Every term is read as at
+  // least this (clip): the same optima, and far fewer apexes and signatures to
+  // tell apart.
   double floor() const { return floor_; }
-  // Min-max edge terms: every fixed edge is in every triangulation, with one
-  // candidate triangle on each side, so the largest over fixed edges of the
-  // smallest term its candidates allow bounds the optimum (at least floor()).
-  double fixed_edges_bound() const;
 
   // A whole triangulation of region r (counterclockwise triangles).
   StateKey key(uint32_t r, const std::vector<Tri>& triangulation) const;
@@ -118,6 +116,10 @@ class RegionTerms {
  private:
   double clip(double term) const { return d_.combine == TermCombine::Max && term < floor_ ? floor_ : term; }
   double fixed_terms_max() const;
+  // Edge terms: every fixed edge is in every triangulation, with one candidate
+  // triangle on each side: the largest over fixed edges of the smallest term its
+  // candidates allow, or at_least if that is larger.
+  double fixed_edges_least(double at_least) const;
   // Appends v's Delaunay triangles outside region r (fixed, when v is not shared).
   void add_outside(uint32_t r, uint32_t v, std::vector<Tri>& star) const;
 

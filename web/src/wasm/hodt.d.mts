@@ -1,5 +1,6 @@
 // Types of the Emscripten glue (hodt.mjs, built from wasm/bindings.cpp). Internal:
 // the public API is in ../index.ts.
+import type { SolvedBy } from '../objectives.js';
 export interface RawChoiceResult {
   triangles: Uint32Array;
   halfedges: Int32Array;
@@ -15,7 +16,7 @@ export interface RawMeasures {
 export interface RawSolution {
   objective: string;
   sense: 'min' | 'max';
-  method: string;
+  method: SolvedBy;
   value: number;
   delaunayValue: number;
   optimal: boolean;
