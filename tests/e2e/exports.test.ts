@@ -29,19 +29,19 @@ describe('exports', () => {
     expect(terrain.numQuads).toBeGreaterThan(0);
     const choice = new Uint8Array(terrain.numQuads).fill(1);
     const shown = analyse(terrain, structure, points, choice);
-    const obj = readOBJ(new TextDecoder().decode(meshFile('obj', shown, 'test').bytes));
+    const obj = readOBJ(new TextDecoder().decode(meshFile('obj', shown, 'test', false).bytes));
     expect(obj.points).toEqual(Array.from(points));
     expect(obj.triangles).toEqual(Array.from(shown.triangles));
-    const ply = readPLY(meshFile('ply', shown, 'test').bytes).elements;
+    const ply = readPLY(meshFile('ply', shown, 'test', false).bytes).elements;
     expect(ply.vertex!.rows.map((r) => r.class)).toEqual(Array.from(shown.vertexClass));
     expect(ply.face!.rows.filter((r) => r.non_delaunay === 1)).toHaveLength(2 * terrain.numQuads);
-    const geojson = meshFile('geojson', shown, 'test');
+    const geojson = meshFile('geojson', shown, 'test', false);
     expect(geojson.type).toBe('application/geo+json');
     expect(JSON.parse(new TextDecoder().decode(geojson.bytes)).features).toHaveLength(shown.triangles.length / 3);
-    expect(meshFile('glb', shown, 'test').type).toBe('model/gltf-binary');
+    expect(meshFile('glb', shown, 'test', false).type).toBe('model/gltf-binary');
     // An order-k result marks its non-Delaunay triangles the same way.
     const k = analyseTriangles(terrain, structure, points, shown.triangles);
-    expect(readPLY(meshFile('ply', k, 'test').bytes).elements.face!.rows.map((r) => r.non_delaunay)).toEqual(
+    expect(readPLY(meshFile('ply', k, 'test', false).bytes).elements.face!.rows.map((r) => r.non_delaunay)).toEqual(
       ply.face!.rows.map((r) => r.non_delaunay),
     );
   });

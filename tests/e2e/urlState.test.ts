@@ -12,6 +12,7 @@ const state = (points: Float64Array): SharedState => ({
   method: 'approx',
   epsilon: 0.1,
   order: 3,
+  maxEdge: 12.5,
   view: 'plan',
   source: { kind: 'fractal', count: 300, seed: 42 },
 });
@@ -66,6 +67,10 @@ describe('link state', () => {
     expect(decodeState(raw(ok, new Float64Array(9)))!.order).toBe(1);
     expect(decodeState(raw({ ...ok, order: 5 }, new Float64Array(9)))!.order).toBe(5);
     for (const order of [0, 9, 2.5, '2', null]) expect(decodeState(raw({ ...ok, order }, new Float64Array(9)))!.order).toBe(1);
+    // ... and no domain; a link's domain is a positive length, else none.
+    expect(decodeState(raw(ok, new Float64Array(9)))!.maxEdge).toBeNull();
+    expect(decodeState(raw({ ...ok, maxEdge: 3.25 }, new Float64Array(9)))!.maxEdge).toBe(3.25);
+    for (const maxEdge of [0, -1, '2', null, 1e400]) expect(decodeState(raw({ ...ok, maxEdge }, new Float64Array(9)))!.maxEdge).toBeNull();
     bad(raw({ ...ok, n: 4 }, new Float64Array(9)), /4 points need 96 bytes/);
     bad(raw({ ...ok, n: 2 }, new Float64Array(6)), /bad point count/);
     bad(raw({ ...ok, objective: 'nope' }, new Float64Array(9)), /unknown objective/);

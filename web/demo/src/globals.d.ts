@@ -16,6 +16,10 @@ export interface HodtTestHooks {
   method: string;
   /** Order k of the triangulations searched (1: first order). */
   order: number;
+  /** The domain's longest edge (null: none), and how many shown triangles lie
+   * outside it (greyed). */
+  maxEdge: number | null;
+  outsideTriangles: number;
   /** Number of useful order-k edges drawn, or null when they are hidden. */
   usefulEdges: number | null;
   /** The last solution in the CLI's JSON format (parsed), or null. */

@@ -17,6 +17,9 @@ export interface Analysis {
   /** Per input point: 0 none, 1 local minimum, 2 local maximum. */
   extremum: Uint8Array;
   degree: Uint32Array;
+  /** Per triangle: 1 inside the domain (every triangle without one), 0 outside
+   * (greyed, not measured). */
+  inside: Uint8Array;
   /** a, b (Delaunay diagonal), c, d per flippable quad, input indices. */
   quads: Uint32Array;
   quadOfTriangle: Int32Array;
@@ -66,6 +69,7 @@ export function analyse(
     vertexClass: m.vertexClass,
     extremum: m.extremum,
     degree: m.degree,
+    inside: m.inside,
     quads: structure.quads,
     quadOfTriangle: structure.quadOfTriangle,
     choice,
@@ -100,6 +104,7 @@ export function analyseTriangles(terrain: Terrain, structure: Structure, points:
     vertexClass: m.vertexClass,
     extremum: m.extremum,
     degree: m.degree,
+    inside: m.inside,
     quads: structure.quads,
     quadOfTriangle: new Int32Array(numTriangles).fill(-1),
     choice: new Uint8Array(0),

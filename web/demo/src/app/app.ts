@@ -1,4 +1,4 @@
-import { InputError, type Hodt, type ObjectiveInfo, type Solution } from 'hodt';
+import { InputError, type Hodt, type ObjectiveInfo, type ParsedPoints, type Solution } from 'hodt';
 import { Vector2 } from 'three';
 import { download } from '../io/download.ts';
 import { meshFile } from '../io/meshExport.ts';
@@ -44,7 +44,7 @@ function sameExcept(a: Float64Array, b: Float64Array, i: number): boolean {
 }
 
 export const DEFAULT_SOURCE: TerrainSource = { kind: 'volcano', count: 200, seed: 7 };
-const DEFAULT_SETTINGS: SolveSettings = { objective: 'min-mixed-vertices', method: 'auto', epsilon: 0.25, order: 1 };
+const DEFAULT_SETTINGS: SolveSettings = { objective: 'min-mixed-vertices', method: 'auto', epsilon: 0.25, order: 1, maxEdge: null };
 /** How long an edit waits for its solution before drawing Delaunay meanwhile. */
 const SOLUTION_GRACE_MS = 150;
 
@@ -69,7 +69,7 @@ export function startApp(hodt: Hodt): void {
   const initial = readInitialState();
   let points = initial.points;
   let source = initial.source;
-  let settings: SolveSettings = { objective: initial.objective, method: initial.method, epsilon: initial.epsilon, order: initial.order };
+  let settings: SolveSettings = settingsOf(initial);
   let view: ViewMode = initial.view;
   let selected: number | null = null;
   let current: Ready = initial.built;
@@ -83,7 +83,7 @@ export function startApp(hodt: Hodt): void {
   let cameraFramed = false;
   const history = createHistory({ points, source });
   const urlSync = createUrlSync(
-    (): SharedState => ({ points, objective: settings.objective, method: settings.method, epsilon: settings.epsilon, order: settings.order, view, source }),
+    (): SharedState => ({ points, ...settings, view, source }),
   );
 
   const plan = createPlanView(byId('view-plan'), {
@@ -233,7 +233,7 @@ export function startApp(hodt: Hodt): void {
       notice.show(`${o.refused ?? 'Refused'}: ${(next.length / 3).toLocaleString('en')} points; the demo takes at most ${MAX_POINTS.toLocaleString('en')}. Your points are unchanged.`);
       return false;
     }
-    const built = buildTerrain(hodt, next);
+    const built = buildTerrain(hodt, next, settings.maxEdge);
     if (!built.ok) {
       notice.show(`${o.refused ?? `Cannot ${label}`}: ${built.message}. Your points are unchanged.`);
       redraw();
@@ -280,7 +280,7 @@ export function startApp(hodt: Hodt): void {
         display(analyse(preview.terrain, preview.structure, target, new Uint8Array(preview.structure.quads.length / 4)));
         return;
       }
-      const built = buildTerrain(hodt, target, false);
+      const built = buildTerrain(hodt, target, settings.maxEdge, false);
       if (!built.ok) return; // e.g. on top of another point: keep the last good picture
       disposePreview();
       preview = built;
@@ -328,18 +328,27 @@ export function startApp(hodt: Hodt): void {
 
   async function importFile(file: File): Promise<void> {
     const refused = `Could not import ${file.name}`;
-    let parsed: Float64Array;
+    let read: ParsedPoints;
     try {
-      parsed = hodt.readPoints(await readTextFile(file), file.name).points;
+      read = hodt.readPoints(await readTextFile(file), file.name);
     } catch (e) {
       if (!(e instanceof InputError) && !(e instanceof Error)) throw e;
       notice.show(`${refused}: ${e.message}. Your points are unchanged.`);
       return;
     }
-    const { points: unique, removed } = dropDuplicateXY(parsed);
-    if (commit(unique, `import ${file.name}`, { reframe: true, select: null, refused }) && removed > 0) {
-      notice.show(`Imported ${file.name}: dropped ${removed} point${removed === 1 ? '' : 's'} at the same (x, y) as an earlier one.`, 'info');
+    const { points: unique, removed } = dropDuplicateXY(read.points);
+    // A raster with NODATA cells comes with its default domain; any other file
+    // keeps the page's.
+    const before = settings;
+    if (read.maxEdge !== undefined) setSettings({ ...settings, maxEdge: read.maxEdge });
+    if (!commit(unique, `import ${file.name}`, { reframe: true, select: null, refused })) {
+      setSettings(before);
+      return;
     }
+    const notes: string[] = [];
+    if (removed > 0) notes.push(`dropped ${removed} point${removed === 1 ? '' : 's'} at the same (x, y) as an earlier one`);
+    if (read.maxEdge !== undefined) notes.push(`it has NODATA cells, so triangles with an edge longer than ${read.maxEdge} are outside the domain (greyed, not measured; see Longest edge)`);
+    if (notes.length > 0) notice.show(`Imported ${file.name}: ${notes.join('; ')}.`, 'info');
   }
 
   function exportAs(format: ExportFormat): void {
@@ -347,7 +356,7 @@ export function startApp(hodt: Hodt): void {
     const about = solution ? `${solution.objective} = ${solution.value} (Delaunay ${solution.delaunayValue})` : 'Delaunay triangulation';
     if (format === 'csv') download('hodt-points.csv', pointsToCsv(points), 'text/csv');
     else if (format !== 'json') {
-      const { bytes, type } = meshFile(format, shown!, `hodt: ${about}`);
+      const { bytes, type } = meshFile(format, shown!, `hodt: ${about}`, settings.maxEdge !== null);
       download(`${base}.${format}`, bytes, type);
     } else if (solution) download(`${base}.json`, solutionToJson(solution), 'application/json');
     else notice.show('No solution to export yet: wait for the solver to finish.', 'info');
@@ -385,8 +394,7 @@ export function startApp(hodt: Hodt): void {
     settings: () => settings,
     load: (next, label, objective) => {
       if (objective && objective !== settings.objective) {
-        settings = { ...settings, objective, order: 1 };
-        objectivePanel.set(settings);
+        setSettings({ ...settings, objective, order: 1 });
       }
       commit(next, label, { reframe: true, select: null });
     },
@@ -394,15 +402,27 @@ export function startApp(hodt: Hodt): void {
     solver: createSolverClient(),
   });
 
+  /** Settings set by the page (a link, an import, a lesson), not the panel. */
+  function setSettings(s: SolveSettings): void {
+    settings = s;
+    objectivePanel.set(s);
+  }
+
   // ---- wiring ------------------------------------------------------------
   objectivePanel.set(settings);
   objectivePanel.onChange((s) => {
+    const domainChanged = s.maxEdge !== settings.maxEdge;
     settings = s;
+    if (domainChanged) {
+      // The same points in another domain: the values change, the quads do not.
+      current.terrain.maxEdge = s.maxEdge;
+      current = { ...current, structure: readStructure(current.terrain) };
+    }
     toolbar.hideLink();
     urlSync.changed();
     updateUseful();
     teach.changed();
-    solve(true);
+    solve(!domainChanged);
   });
   objectivePanel.onUseful(() => updateUseful());
   terrainPanel.set(source);
@@ -428,8 +448,7 @@ export function startApp(hodt: Hodt): void {
     try {
       const s = decodeState(location.hash);
       if (!s) return;
-      settings = { objective: s.objective, method: s.method, epsilon: s.epsilon, order: s.order };
-      objectivePanel.set(settings);
+      setSettings(settingsOf(s));
       setView(s.view);
       commit(s.points, 'open link', { source: s.source, reframe: true, select: null, refused: 'Cannot open the link' });
     } catch (e) {
@@ -466,6 +485,8 @@ export function startApp(hodt: Hodt): void {
       objective: settings.objective,
       method: settings.method,
       order: settings.order,
+      maxEdge: settings.maxEdge,
+      outsideTriangles: shown ? shown.inside.reduce((n, v) => n + (v === 0 ? 1 : 0), 0) : 0,
       usefulEdges: objectivePanel.showUseful && useful ? useful.edges.length / 2 : null,
       solution: solution ? JSON.parse(solutionToJson(solution)) : null,
       choice: shown ? Array.from(shown.choice).join('') : '',
@@ -496,7 +517,7 @@ export function startApp(hodt: Hodt): void {
     try {
       const s = decodeState(location.hash);
       if (s) {
-        const built = buildTerrain(hodt, s.points);
+        const built = buildTerrain(hodt, s.points, s.maxEdge);
         if (built.ok) return { ...s, built, message };
         message = `The link's points are not a valid terrain: ${built.message}. Showing the default terrain instead.`;
       }
@@ -505,8 +526,12 @@ export function startApp(hodt: Hodt): void {
       message = `${e.message[0]!.toUpperCase()}${e.message.slice(1)}. Showing the default terrain instead.`;
     }
     const pts = TERRAINS[DEFAULT_SOURCE.kind].make(DEFAULT_SOURCE.count, DEFAULT_SOURCE.seed);
-    const built = buildTerrain(hodt, pts);
+    const built = buildTerrain(hodt, pts, DEFAULT_SETTINGS.maxEdge);
     if (!built.ok) throw new Error(`the default terrain failed: ${built.message}`);
     return { points: pts, ...DEFAULT_SETTINGS, view: 'split', source: DEFAULT_SOURCE, built, message };
   }
+}
+
+function settingsOf(s: SharedState): SolveSettings {
+  return { objective: s.objective, method: s.method, epsilon: s.epsilon, order: s.order, maxEdge: s.maxEdge };
 }

@@ -7,14 +7,16 @@ function flippedTriangles(a: Analysis): Uint8Array {
 }
 
 /** The shown triangulation as a file of the library's writers (hodt/export), with
- * the vertex classes, extrema and non-Delaunay triangles the views show. */
-export function meshFile(format: MeshFormat, shown: Analysis, comment: string): { bytes: Uint8Array; type: string } {
+ * the vertex classes, extrema and non-Delaunay triangles the views show, and
+ * within a domain which triangles are outside. */
+export function meshFile(format: MeshFormat, shown: Analysis, comment: string, domain: boolean): { bytes: Uint8Array; type: string } {
   const bytes = exportMesh(format, {
     points: shown.points,
     triangles: shown.triangles,
     vertexClass: shown.vertexClass,
     extremum: shown.extremum,
     nonDelaunay: shown.changed ?? flippedTriangles(shown),
+    ...(domain ? { outside: shown.inside.map((v) => 1 - v) } : {}),
     comment,
   });
   return { bytes, type: MESH_FORMATS[format].mediaType };

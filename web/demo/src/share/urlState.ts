@@ -9,8 +9,9 @@ import { fromColumns, shuffleDoubles, toColumns, unshuffleDoubles } from './byte
 /**
  * The whole page state in the URL hash: `#v1=<base64url>`, the raw deflate of
  *   u32 (little-endian) length L of a JSON header,
- *   L bytes of UTF-8 JSON {n, objective, method, epsilon, order, view, source?}
- *     (order was added later: links without it mean order 1),
+ *   L bytes of UTF-8 JSON {n, objective, method, epsilon, order, view, source?,
+ *     maxEdge?} (order and maxEdge were added later: links without them mean
+ *     order 1 and no domain),
  *   24 n bytes: the 3n coordinates as doubles, by columns (all x, all y, all z),
  *   byte-shuffled.
  * The doubles are the exact bits of the points, so the link reproduces the exact
@@ -23,6 +24,8 @@ export interface SharedState {
   epsilon: number;
   /** Order k of the Delaunay triangulations searched (1: first order). */
   order: number;
+  /** The domain (Terrain.maxEdge), null for none. */
+  maxEdge: number | null;
   view: ViewMode;
   /** Where the points came from, for the terrain controls (optional). */
   source: { kind: TerrainKind; count: number; seed: number } | null;
@@ -47,6 +50,7 @@ export function encodeState(s: SharedState): string {
       order: s.order,
       view: s.view,
       ...(s.source ? { source: s.source } : {}),
+      ...(s.maxEdge !== null ? { maxEdge: s.maxEdge } : {}),
     }),
   );
   const coords = shuffleDoubles(toColumns(s.points));
@@ -109,7 +113,8 @@ export function decodeState(hash: string): SharedState | null {
   const epsilon = typeof header.epsilon === 'number' && header.epsilon > 0 && header.epsilon < 1 ? header.epsilon : 0.25;
   const order = isOrder(header.order) ? header.order : 1;
   const view = VIEW_MODES.find((v) => v === header.view) ?? 'split';
-  return { points, objective, method, epsilon, order, view, source: readSource(header.source) };
+  const maxEdge = typeof header.maxEdge === 'number' && Number.isFinite(header.maxEdge) && header.maxEdge > 0 ? header.maxEdge : null;
+  return { points, objective, method, epsilon, order, maxEdge, view, source: readSource(header.source) };
 }
 
 function readSource(s: unknown): SharedState['source'] {

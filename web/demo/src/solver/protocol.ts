@@ -11,6 +11,8 @@ export interface SolveRequest {
   epsilon: number;
   /** Order k (1: first order; k >= 2 leaves the method to the library). */
   order: number;
+  /** The domain (Terrain.maxEdge); absent or null: none. */
+  maxEdge?: number | null;
   /** Record the thresholds of a min-max search (Solution.trace). */
   trace?: boolean;
 }

@@ -12,6 +12,8 @@ export interface SolveJob {
   method: Method;
   epsilon: number;
   order: number;
+  /** The domain (Terrain.maxEdge); absent or null: none. */
+  maxEdge?: number | null;
   trace?: boolean;
 }
 

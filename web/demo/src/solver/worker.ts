@@ -10,9 +10,9 @@ const hodt = loadHodt();
 const reply = (message: WorkerReply) => scope.postMessage(message);
 
 scope.onmessage = async (event: MessageEvent<SolveRequest>) => {
-  const { id, points, objective, method, epsilon, order, trace } = event.data;
+  const { id, points, objective, method, epsilon, order, maxEdge = null, trace } = event.data;
   try {
-    const terrain = (await hodt).terrain(points);
+    const terrain = (await hodt).terrain(points, { maxEdge });
     let last = 0;
     const progress = (done: number, total: number) => {
       const now = performance.now();

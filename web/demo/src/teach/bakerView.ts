@@ -103,7 +103,7 @@ export function createBakerView(ctx: TeachContext): TeachView {
     player.pos = 0;
     canvas.fit(structure.points);
     render();
-    void ctx.solver.solve({ points: ctx.points(), objective: id, method: 'approx', epsilon: eps, order: 1 }).then((o) => {
+    void ctx.solver.solve({ points: ctx.points(), objective: id, method: 'approx', epsilon: eps, order: 1, maxEdge: ctx.settings().maxEdge }).then((o) => {
       if (my !== token || !state) return;
       if (o.status === 'solved') {
         state.solution = o.solution;

@@ -4,6 +4,7 @@ import {
   EDGE_COLORS,
   EXTREMUM_COLORS,
   FLIPPED_COLOR,
+  OUTSIDE_COLOR,
   QUAD_COLOR,
   VERTEX_COLORS,
 } from '../views/palette.ts';
@@ -37,6 +38,7 @@ export function renderLegend(): void {
       item(swatch('fill', QUAD_COLOR), 'flippable', 'Either diagonal gives a first order Delaunay triangulation'),
       item(swatch('fill strong', FLIPPED_COLOR), 'diagonal ≠ Delaunay', 'The dashed line (plan view) is the Delaunay diagonal it replaced'),
       item(swatch('fill', CRITICAL_COLOR), 'worst pair', 'The two triangles that attain a min-max objective'),
+      item(swatch('fill strong', OUTSIDE_COLOR), 'outside the domain', 'Triangles with an edge longer than the Longest edge setting: not measured by any objective'),
       item(h('i', { class: 'ramp', style: `background: ${hypsometricGradient()}` }), 'elevation (3D)'),
     ),
   );

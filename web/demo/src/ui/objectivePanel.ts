@@ -10,6 +10,9 @@ export interface SolveSettings {
   /** Order k: 1 for first order; k >= 2 searches the order-k Delaunay
    * triangulations (the library picks its method). */
   order: number;
+  /** The domain (Terrain.maxEdge): triangles with a longer edge are outside and
+   * not measured; null measures every triangle. */
+  maxEdge: number | null;
 }
 
 /** Objective picker with its help text, method and epsilon. */
@@ -47,6 +50,7 @@ export function createObjectivePanel(objectives: readonly ObjectiveInfo[]): Obje
   const order = byId<HTMLSelectElement>('order');
   const useful = byId<HTMLInputElement>('show-useful');
   const usefulCount = byId('useful-count');
+  const maxEdge = byId<HTMLInputElement>('max-edge');
   order.replaceChildren(
     ...Array.from({ length: MAX_ORDER }, (_, i) =>
       h('option', { value: i + 1, title: i === 0 ? 'First order: one diagonal per flippable quad' : `At most ${i + 1} points in every circumcircle` }, i === 0 ? '1 · first order' : String(i + 1)),
@@ -73,6 +77,7 @@ export function createObjectivePanel(objectives: readonly ObjectiveInfo[]): Obje
     method: method.value as Method,
     epsilon: clampEpsilon(Number(epsilon.value)),
     order: Number(order.value) || 1,
+    maxEdge: readMaxEdge(maxEdge.value),
   });
   const showHelp = () => {
     const id = select.value as ObjectiveId;
@@ -91,12 +96,14 @@ export function createObjectivePanel(objectives: readonly ObjectiveInfo[]): Obje
     enableEpsilon();
     const s = get();
     epsilon.value = String(s.epsilon);
+    maxEdge.value = s.maxEdge === null ? '' : String(s.maxEdge);
     for (const l of listeners) l(s);
   };
   select.addEventListener('change', changed);
   method.addEventListener('change', changed);
   epsilon.addEventListener('change', changed);
   order.addEventListener('change', changed);
+  maxEdge.addEventListener('change', changed);
   const usefulListeners: ((show: boolean) => void)[] = [];
   useful.addEventListener('change', () => usefulListeners.forEach((l) => l(useful.checked)));
 
@@ -106,6 +113,7 @@ export function createObjectivePanel(objectives: readonly ObjectiveInfo[]): Obje
       method.value = s.method;
       epsilon.value = String(s.epsilon);
       order.value = String(s.order);
+      maxEdge.value = s.maxEdge === null ? '' : String(s.maxEdge);
       showHelp();
       enableEpsilon();
     },
@@ -129,6 +137,12 @@ export function createObjectivePanel(objectives: readonly ObjectiveInfo[]): Obje
       usefulCount.textContent = text ?? '';
     },
   };
+}
+
+/** A positive finite length, else null (no domain). */
+export function readMaxEdge(text: string): number | null {
+  const v = Number(text);
+  return text.trim() !== '' && Number.isFinite(v) && v > 0 ? v : null;
 }
 
 function clampEpsilon(v: number): number {

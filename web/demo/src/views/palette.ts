@@ -33,5 +33,7 @@ export const FLIPPED_COLOR = '#ffb000';
 /** The two triangles that attain a min-max objective's value. */
 export const CRITICAL_COLOR = '#e5198a';
 export const SELECTION_COLOR = '#111111';
+/** Triangles outside the domain (an edge longer than maxEdge): not measured. */
+export const OUTSIDE_COLOR = '#59605d';
 /** Useful order-k Delaunay edges (edges of some order-k triangulation). */
 export const USEFUL_COLOR = '#7b3fe4';

@@ -5,6 +5,7 @@ import {
   EDGE_SHAPE_COLORS,
   EXTREMUM_COLORS,
   FLIPPED_COLOR,
+  OUTSIDE_COLOR,
   QUAD_COLOR,
   SELECTION_COLOR,
   USEFUL_COLOR,
@@ -22,7 +23,8 @@ export interface PlanDrawOptions {
 /**
  * Draws the plan (top) view: triangles in pale grey by mean elevation, flippable quads
  * (teal) and flipped ones (amber, with the Delaunay diagonal they replaced
- * dashed), the critical pair (pink outline), edges coloured by shape, vertices
+ * dashed), the critical pair (pink outline), triangles outside the domain
+ * (dark grey), edges coloured by shape, vertices
  * coloured by class, triangles on local minima and maxima, and the selection.
  */
 export function drawPlan(ctx: CanvasRenderingContext2D, a: Analysis, t: PlanTransform, o: PlanDrawOptions): void {
@@ -85,6 +87,12 @@ export function drawPlan(ctx: CanvasRenderingContext2D, a: Analysis, t: PlanTran
   for (const k of criticalTriangles(a)) addTriangle(critical, k);
   ctx.fillStyle = withAlpha(CRITICAL_COLOR, 0.35);
   ctx.fill(critical);
+
+  // Outside the domain: not measured, so drawn over whatever they would show.
+  const outside = new Path2D();
+  for (let k = 0; k < numTriangles; k++) if (a.inside[k] === 0) addTriangle(outside, k);
+  ctx.fillStyle = withAlpha(OUTSIDE_COLOR, 0.6);
+  ctx.fill(outside);
 
   // Useful order-k edges: a faint violet halo under the edges of the shown
   // triangulation, and violet lines for the others (drawn after the edges).

@@ -1,9 +1,11 @@
 import { BufferAttribute, BufferGeometry, Color, Mesh, MeshStandardMaterial } from 'three';
 import { hypsometric } from '../colormap.ts';
+import { OUTSIDE_COLOR } from '../palette.ts';
 
-/** The triangulated terrain as a flat-shaded mesh, vertex colours by elevation. */
+/** The triangulated terrain as a flat-shaded mesh, vertex colours by elevation;
+ * triangles outside the domain (group 1) in translucent grey. */
 export function createSurface(): Mesh {
-  const material = new MeshStandardMaterial({
+  const inside = new MeshStandardMaterial({
     vertexColors: true,
     flatShading: true, // every triangle shows: the triangulation is the point
     roughness: 0.92,
@@ -13,11 +15,23 @@ export function createSurface(): Mesh {
     polygonOffsetFactor: 1,
     polygonOffsetUnits: 1,
   });
-  return new Mesh(new BufferGeometry(), material);
+  const outside = new MeshStandardMaterial({
+    color: OUTSIDE_COLOR,
+    flatShading: true,
+    roughness: 1,
+    metalness: 0,
+    transparent: true,
+    opacity: 0.45,
+    polygonOffset: true,
+    polygonOffsetFactor: 1,
+    polygonOffsetUnits: 1,
+  });
+  return new Mesh(new BufferGeometry(), [inside, outside]);
 }
 
-/** Rebuilds the surface: world positions, heights (for colour) and triangles. */
-export function updateSurface(surface: Mesh, positions: Float32Array, xyz: Float64Array, triangles: Uint32Array): void {
+/** Rebuilds the surface: world positions, heights (for colour) and triangles,
+ * those inside the domain first (group 0), then those outside (group 1). */
+export function updateSurface(surface: Mesh, positions: Float32Array, xyz: Float64Array, triangles: Uint32Array, inside: Uint8Array): void {
   const n = xyz.length / 3;
   let zmin = Infinity;
   let zmax = -Infinity;
@@ -34,7 +48,16 @@ export function updateSurface(surface: Mesh, positions: Float32Array, xyz: Float
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', new BufferAttribute(positions, 3));
   geometry.setAttribute('color', new BufferAttribute(colors, 3));
-  geometry.setIndex(new BufferAttribute(triangles, 1));
+  const index = new Uint32Array(triangles.length);
+  let front = 0;
+  let back = triangles.length;
+  for (let k = 0; k < triangles.length / 3; k++) {
+    const at = inside[k] === 0 ? (back -= 3) : (front += 3) - 3;
+    index.set(triangles.subarray(3 * k, 3 * k + 3), at);
+  }
+  geometry.setIndex(new BufferAttribute(index, 1));
+  geometry.addGroup(0, front, 0);
+  geometry.addGroup(front, triangles.length - front, 1);
   geometry.computeBoundingBox();
   geometry.computeBoundingSphere();
   surface.geometry.dispose();

@@ -46,7 +46,7 @@ export function createTerrainScene(): TerrainScene {
       if (reframe || !frame) frame = frameOfReference(a.points);
       current = a;
       positions = worldPositions(a.points, frame);
-      updateSurface(surface, positions, a.points, a.triangles);
+      updateSurface(surface, positions, a.points, a.triangles, a.inside);
       updateEdgeLines(edges, positions, a);
       updateQuadFill(fill, positions, a);
       markers.update(positions, a, frame.extent * 0.011);
