@@ -309,6 +309,7 @@ val mesh_data(const TinData& tin) {
   out.set("nonDelaunay", copy_out("Uint8Array", tin.non_delaunay));
   if (!tin.outside.empty()) out.set("outside", copy_out("Uint8Array", tin.outside));
   out.set("comment", tin.comment);
+  if (!tin.crs.empty()) out.set("crs", tin.crs);
   return out;
 }
 

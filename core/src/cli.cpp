@@ -8,6 +8,7 @@
 
 #include "hodt/cli_help.hpp"
 #include "hodt/cli_progress.hpp"
+#include "hodt/crs.hpp"
 #include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/file_errors.hpp"
@@ -78,6 +79,29 @@ std::optional<std::string> degrees_warning(const std::vector<double>& xyz) {
          ": angles, slopes and areas mix units; reproject to a projected CRS in metres";
 }
 
+// The CRS of FILE's .prj sidecar (ESRI's habit for grids), if there is one; one
+// that is not WKT is named in a warning and ignored.
+std::optional<std::string> read_prj(const FileReader& read, const std::string& file, std::string* warnings) {
+  const std::string prj = prj_path(file);
+  if (prj == file) return std::nullopt;
+  std::string error;
+  const std::optional<std::string> text = read(prj, error);
+  if (!text) return std::nullopt;  // (no sidecar: the usual case)
+  std::optional<std::string> crs = text->size() <= kMaxCrsChars ? crs_of_wkt(*text) : std::nullopt;
+  if (warnings)
+    *warnings += crs ? "hodt: " + file + ": coordinates in " + (crs->rfind("EPSG:", 0) == 0 ? *crs : "the CRS") + " of " + prj +
+                           ", kept as read\n"
+                     : "hodt: warning: " + prj + ": not a WKT coordinate system (ignored)\n";
+  return crs;
+}
+
+// The CRS as the last member of a JSON document, when there is one.
+std::string with_crs_json(std::string document, const std::optional<std::string>& crs) {
+  if (!crs) return document;
+  document.pop_back();  // the closing brace
+  return document + ", \"crs\": " + json_string(*crs) + "}";
+}
+
 }  // namespace
 
 CliResult run_cli(const std::vector<std::string>& args, const FileReader& read) {
@@ -108,6 +132,7 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     Dedupe dedupe = Dedupe::Error;
     bool have_order = false;
     std::optional<double> nodata, max_edge;  // max_edge: infinity for none
+    std::optional<std::string> crs;           // as given (--crs), else FILE's .prj sidecar
     for (size_t i = 1; i < args.size(); ++i) {
       const std::string& a = args[i];
       auto value = [&]() -> const std::string& {
@@ -154,6 +179,10 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
       } else if (a == "--classes") {
         const std::string& c = value();  // (read by the npm CLI's LAS/LAZ loader)
         if (c != "ground" && c != "all") throw Usage("--classes expects 'ground' or 'all', got '" + c + "'");
+      } else if (a == "--crs") {
+        const std::string& c = value();
+        crs = crs_of_text(c);
+        if (!crs) throw Usage("--crs expects EPSG:N or a WKT definition (at most " + std::to_string(kMaxCrsChars) + " characters)");
       } else if (a == "--quiet") quiet = true;
       else if (a == "--progress") force_progress = true;
       else if (a.size() > 1 && a[0] == '-' && a != "-") throw Usage("unknown option '" + a + "' (hodt --help)");
@@ -180,6 +209,7 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     if (!text) throw InputError(file + ": " + file_error_message(error, FileAccess::Read));
     ParsedPoints parsed = read_points(*text, name);
     if (nodata) drop_nodata(parsed, *nodata, name);
+    if (!crs && file != "-") crs = read_prj(host.read, file, quiet ? nullptr : &r.err);
     times.read_ms = ms_since(started);
 
     started = Clock::now();
@@ -218,7 +248,7 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     std::optional<Mesh> solved;
     std::string comment;
     if (command == "stats") {
-      printed = stats_json(terrain, have_order ? options.order : 0);
+      printed = with_crs_json(stats_json(terrain, have_order ? options.order : 0), crs);
       // ("triangles" is already the count)
       if (json_output)
         written = with_triangles_json(printed, terrain.to_input(terrain.delaunay_mesh().triangles), "delaunayTriangles");
@@ -231,8 +261,8 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
       Solution s = solve(terrain.structure(), *objective, options);
       s.delaunay_value = terrain.delaunay_value(*objective);
       times.solve_ms = ms_since(started);
-      printed = solution_json(terrain, s, triangles, options.trace, &times);
-      if (json_output) written = solution_json(terrain, s, true, options.trace, &times);
+      printed = with_crs_json(solution_json(terrain, s, triangles, options.trace, &times), crs);
+      if (json_output) written = with_crs_json(solution_json(terrain, s, true, options.trace, &times), crs);
       if (s.mesh) solved = std::move(*s.mesh);
       else solved = triangulate(terrain.structure(), s.choice);
       comment = describe(s, name);
@@ -245,7 +275,7 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
       if (o.format == OutputFormat::Json) {
         ok = host.write(o.path, written + "\n", error);
       } else {
-        if (!tin) tin = tin_data(terrain, parsed.xyz, solved ? *solved : terrain.delaunay_mesh(), comment);
+        if (!tin) tin = tin_data(terrain, parsed.xyz, solved ? *solved : terrain.delaunay_mesh(), comment, crs.value_or(""));
         ok = host.write_mesh(o.path, o.format, *tin, error);
       }
       if (!ok) throw InputError("cannot write " + o.path + ": " + file_error_message(error, FileAccess::Write));

@@ -30,10 +30,10 @@ const char* objective_unit(Objective o) {
 std::string cli_help() {
   std::string s =
       "usage: hodt stats FILE [--order K] [--dedupe first] [--nodata V] [--classes C]\n"
-      "                  [--max-edge L|none] [--output OUT]...\n"
+      "                  [--max-edge L|none] [--crs CRS] [--output OUT]...\n"
       "       hodt solve FILE --objective ID [--method brute-force|exact|approx|auto]\n"
       "                  [--epsilon E] [--order K] [--triangles] [--trace] [--dedupe first]\n"
-      "                  [--nodata V] [--classes C] [--max-edge L|none]\n"
+      "                  [--nodata V] [--classes C] [--max-edge L|none] [--crs CRS]\n"
       "                  [--output OUT]... [--quiet | --progress]\n"
       "       hodt --help | --version\n"
       "\n"
@@ -61,6 +61,10 @@ std::string cli_help() {
       "                    the same. Rasters with NODATA cells (.asc, GeoTIFF) default to\n"
       "                    3 cells (a bridge over a gap of up to two cells stays inside);\n"
       "                    'none' measures every triangle\n"
+      "  --crs CRS         the coordinate system of x and y (EPSG:N or WKT), written to\n"
+      "                    the outputs that have a place for it; default: FILE's .prj\n"
+      "                    sidecar (dem.asc: dem.prj), GeoTIFF keys, LAS VLRs.\n"
+      "                    Coordinates are never reprojected\n"
       "  --output OUT      also write the triangulation to OUT; repeatable. By extension:\n"
       "                    .json (the printed JSON plus the triangles), .obj, .ply (binary,\n"
       "                    vertex class and extremum, non-Delaunay triangles), .geojson\n"

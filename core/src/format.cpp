@@ -30,4 +30,17 @@ std::string json_number(double v) {
   return format_number(v);
 }
 
+std::string json_string(std::string_view text) {
+  std::string s = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') s += '\\', s += c;
+    else if (static_cast<unsigned char>(c) < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
+      s += buf;
+    } else s += c;
+  }
+  return s + '"';
+}
+
 }  // namespace hodt

@@ -62,7 +62,8 @@ std::vector<uint8_t> non_delaunay_triangles(const std::vector<uint32_t>& triangl
   return out;
 }
 
-TinData tin_data(const Terrain& terrain, const std::vector<double>& input_xyz, const Mesh& mesh, std::string comment) {
+TinData tin_data(const Terrain& terrain, const std::vector<double>& input_xyz, const Mesh& mesh, std::string comment,
+                 std::string crs) {
   TinData d;
   d.points = input_xyz;
   d.triangles = terrain.to_input(mesh.triangles);
@@ -78,6 +79,7 @@ TinData tin_data(const Terrain& terrain, const std::vector<double>& input_xyz, c
   if (has_domain(mesh))
     for (uint8_t in : m.inside) d.outside.push_back(!in);
   d.comment = std::move(comment);
+  d.crs = std::move(crs);
   return d;
 }
 

@@ -55,6 +55,7 @@ describe('GeoTIFF', () => {
       const j = JSON.parse(out);
       delete j.timeMs;
       delete j.times;
+      delete j.crs; // (the GeoTIFF names one, the grid has no .prj)
       return j;
     };
     const args = ['--objective', 'min-local-minima'];
@@ -63,6 +64,8 @@ describe('GeoTIFF', () => {
     expect(tif.code).toBe(0);
     expect(strip(tif.out)).toEqual(strip(asc.out));
     expect(tif.err).toContain('coordinates in EPSG:32633');
+    expect(JSON.parse(tif.out).crs).toBe('EPSG:32633');
+    expect(JSON.parse(asc.out).crs).toBeUndefined();
     expect(npmCli(['solve', gis('dem-utm-int16-lzw.tif'), ...args, '--quiet']).err).toBe('');
   });
 
@@ -70,12 +73,30 @@ describe('GeoTIFF', () => {
     const dir = mkdtempSync(join(tmpdir(), 'hodt-loaders-'));
     try {
       const out = join(dir, 'tin.geojson');
-      const r = npmCli(['solve', gis('dem-utm-int16-lzw.tif'), '--objective', 'max-convex-edges', '--output', out, '--quiet']);
+      const json = join(dir, 'tin.json');
+      const r = npmCli(['solve', gis('dem-utm-int16-lzw.tif'), '--objective', 'max-convex-edges', '--output', out, '--output', json, '--quiet']);
       expect(r.code).toBe(0);
+      expect(JSON.parse(readFileSync(json, 'utf8')).crs).toBe('EPSG:32633');
       const features = JSON.parse(readFileSync(out, 'utf8')).features;
       expect(features.length).toBe(JSON.parse(r.out).triangles ?? features.length);
       expect(features[0].geometry.coordinates[0][0][0]).toBeGreaterThan(500000);
       expect(JSON.parse(readFileSync(out, 'utf8')).crs).toEqual({ type: 'name', properties: { name: 'urn:ogc:def:crs:EPSG::32633' } });
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
+  });
+
+  it("keeps an ASCII grid's .prj sidecar (ESRI's habit) in every output", () => {
+    const dir = mkdtempSync(join(tmpdir(), 'hodt-loaders-'));
+    try {
+      writeFileSync(join(dir, 'dem.asc'), bytes('dem-utm-40x30.asc'));
+      writeFileSync(join(dir, 'dem.prj'), 'PROJCS["WGS 84 / UTM zone 33N",GEOGCS["WGS 84",AUTHORITY["EPSG","4326"]],AUTHORITY["EPSG","32633"]]');
+      const ply = join(dir, 'tin.ply');
+      const r = npmCli(['solve', join(dir, 'dem.asc'), '--objective', 'min-local-minima', '--output', ply]);
+      expect(r.code).toBe(0);
+      expect(JSON.parse(r.out).crs).toBe('EPSG:32633');
+      expect(r.err).toContain(`coordinates in EPSG:32633 of ${join(dir, 'dem.prj')}`);
+      expect(readFileSync(ply).subarray(0, 400).toString('latin1')).toContain('\ncomment crs EPSG:32633\n');
     } finally {
       rmSync(dir, { recursive: true, force: true });
     }

@@ -56,7 +56,6 @@ hodt.runCli(
   { writeFile: unused, writeMesh: unused, progress: () => {}, stderrIsTerminal: false },
 );
 let input: Uint8Array | Error | undefined;
-let crs: string | undefined; // what the file names, written where the output format has a place
 const notes: string[] = [];
 if (path !== undefined) {
   input = read(path);
@@ -72,8 +71,11 @@ if (path !== undefined) {
         for (let i = 0; i < cloud.xyz.length; i += 3) lines.push(`${cloud.xyz[i]} ${cloud.xyz[i + 1]} ${cloud.xyz[i + 2]}`);
         input = Buffer.from(lines.join('\n') + '\n', 'utf8');
         for (const w of cloud.warnings) notes.push(`hodt: warning: ${path}: ${w}\n`);
-        crs = cloud.crs;
-        if (cloud.crs) notes.push(`hodt: ${path}: coordinates in ${cloud.crs}, kept as read\n`);
+        // The CRS the file names, written where the output format has a place.
+        if (cloud.crs && !args.includes('--crs')) {
+          args.push('--crs', cloud.crs);
+          notes.push(`hodt: ${path}: coordinates in ${cloud.crs}, kept as read\n`);
+        }
         // Point clouds repeat (x, y) across returns: keep the first unless told.
         if (format === 'las' && !args.includes('--dedupe')) args.push('--dedupe', 'first');
         // A raster with gaps gets its default domain, as the core gives ASCII grids.
@@ -95,7 +97,7 @@ const result = hodt.runCli(
   (p) => (p === path && input !== undefined ? input : read(p)),
   {
     writeFile: (path, text) => attempt(() => writeFileSync(path, text)),
-    writeMesh: (path, format, mesh) => attempt(() => writeMesh(path, format, crs ? { ...mesh, crs } : mesh)),
+    writeMesh: (path, format, mesh) => attempt(() => writeMesh(path, format, mesh)),
     progress: (text) => {
       writeSync(2, text);
     },

@@ -73,7 +73,7 @@ export interface CliIo {
   writeMesh?: (
     path: string,
     format: MeshFormat,
-    mesh: Required<Omit<MeshData, 'crs' | 'outside'>> & Pick<MeshData, 'outside'>,
+    mesh: Required<Omit<MeshData, 'crs' | 'outside'>> & Pick<MeshData, 'crs' | 'outside'>,
   ) => Error | undefined;
   /** Receives progress text for stderr as it happens (with its own line ends). */
   progress?: (text: string) => void;

@@ -32,11 +32,13 @@ struct TinData {
   std::vector<uint8_t> non_delaunay;   // per triangle: 1 if not a triangle of the Delaunay triangulation
   std::vector<uint8_t> outside;        // per triangle: 1 if outside the domain (empty: no domain)
   std::string comment;                 // one line: what this triangulation is
+  std::string crs;                     // the input's CRS (crs.hpp), empty if unknown
 };
 
 // mesh: a triangulation of the terrain's vertices (kept indices), e.g. a solution's.
 // input_xyz: every input point as read (dropped duplicates included).
-TinData tin_data(const Terrain& terrain, const std::vector<double>& input_xyz, const Mesh& mesh, std::string comment);
+TinData tin_data(const Terrain& terrain, const std::vector<double>& input_xyz, const Mesh& mesh, std::string comment,
+                 std::string crs = "");
 
 // Per triangle of `triangles`: 1 if it is not a triangle of `delaunay` (both three
 // vertex indices per counterclockwise triangle, any rotation and order).

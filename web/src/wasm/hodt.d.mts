@@ -80,6 +80,10 @@ export interface RawMesh {
   extremum: Uint8Array;
   nonDelaunay: Uint8Array;
   comment: string;
+  /** Within a domain: per triangle, 1 if outside. */
+  outside?: Uint8Array;
+  /** The input's CRS (EPSG:N or WKT), when known. */
+  crs?: string;
 }
 export interface RawCliIo {
   writeFile?: (path: string, text: string) => Error | undefined;
