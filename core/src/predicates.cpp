@@ -5,7 +5,9 @@
 
 #include <CGAL/MP_Float.h>
 
+#include "hodt/accurate_det.hpp"
 #include "hodt/kernel.hpp"
+#include "hodt/wide_int.hpp"
 
 namespace hodt {
 namespace {
@@ -17,21 +19,42 @@ constexpr double kOrient3dBound = (7.0 + 56.0 * kEps) * kEps;
 inline int sign_of(double d) { return (d > 0) - (d < 0); }
 
 // Exact integer arithmetic for the cases the filter cannot decide and that are
-// common in practice: grids, whose coordinates are small integers after scaling by
-// a power of two (cell sizes like 10, 0.5, 30). Returns false if the coordinates
-// are not of that kind; CGAL's exact arithmetic decides those.
-bool integer_coords(const double* const* p, int count, int64_t* out) {
-  for (double scale = 1; scale <= 256; scale *= 2) {
-    bool ok = true;
-    for (int i = 0; i < count && ok; ++i)
-      for (int k = 0; k < 2 && ok; ++k) {
-        const double v = p[i][k] * scale;  // exact: a power of two
-        ok = v == std::floor(v) && std::abs(v) < 0x1p24;
-        if (ok) out[2 * i + k] = static_cast<int64_t>(v);
-      }
-    if (ok) return true;
+// common in practice: grids and quantised point clouds, in any coordinates. The
+// predicates read only differences to the last point; between nearby points of
+// one binade those are exact doubles (Sterbenz), and then all of them are
+// integers times one power of two: a georeferenced grid (x = 731012.3456789 +
+// 74.98765 i) as much as an integer one. Scaled to integers below 2^62 they give
+// the determinants exactly in 128 or 256 bits (wide_int.hpp), with no allocation.
+// Returns false if a difference is not exact or the integers would be too wide;
+// CGAL's exact arithmetic decides those.
+constexpr int kMaxPoints = 4;
+struct Scaled {
+  int64_t v[3 * kMaxPoints];  // per point but the last: its differences to the last, scaled
+  int64_t largest = 0;        // the largest |v| of the coordinates asked
+};
+bool scaled_differences(const double* const* p, int count, int first, int dims, Scaled& out) {
+  double d[3 * kMaxPoints];
+  int low = INT32_MAX;  // the smallest ulp exponent among the nonzero differences
+  const double* last = p[count - 1];
+  for (int i = 0; i + 1 < count; ++i)
+    for (int k = first; k < first + dims; ++k) {
+      const Difference diff = difference(p[i][k], last[k]);
+      if (diff.e != 0) return false;
+      d[dims * i + k - first] = diff.d;
+      if (diff.d != 0) low = std::min(low, std::ilogb(diff.d) - 52);
+    }
+  out.largest = 0;
+  for (int j = 0; j < dims * (count - 1); ++j) {
+    if (d[j] == 0) {
+      out.v[j] = 0;
+      continue;
+    }
+    const double v = std::ldexp(d[j], -low);  // an integer, exactly (a power of two)
+    if (!(std::abs(v) < 0x1p62)) return false;
+    out.v[j] = static_cast<int64_t>(v);
+    out.largest = std::max(out.largest, std::abs(out.v[j]));
   }
-  return false;
+  return true;
 }
 
 Point2 p2(const double* p) { return Point2(p[0], p[1]); }
@@ -41,13 +64,29 @@ int sign(CGAL::Sign s) { return static_cast<int>(s); }
 
 int detail::orient2d_exact(const double* a, const double* b, const double* c) {
   const double* pts[3] = {a, b, c};
-  int64_t v[6];
-  if (integer_coords(pts, 3, v)) {  // |differences| < 2^25: products fit in 64 bits
-    const int64_t d = (v[0] - v[4]) * (v[3] - v[5]) - (v[1] - v[5]) * (v[2] - v[4]);
+  Scaled s;
+  if (scaled_differences(pts, 3, 0, 2, s)) {  // products below 2^124
+    const int64_t* v = s.v;
+    const Int128 d = static_cast<Int128>(v[0]) * v[3] - static_cast<Int128>(v[1]) * v[2];
     return (d > 0) - (d < 0);
   }
   return sign(CGAL::orientation(p2(a), p2(b), p2(c)));
 }
+
+namespace {
+// The 3x3 determinant of rows (x, y, z) per point, exactly; `lift` true takes z =
+// x^2 + y^2 (the in-circle test). Below 2^30 everything fits in 128 bits.
+template <typename Z>
+int det3_sign(const int64_t* x, const int64_t* y, Z z, bool narrow) {
+  const auto minor = [&](int i, int j) { return static_cast<Int128>(x[i]) * y[j] - static_cast<Int128>(x[j]) * y[i]; };
+  const Int128 bc = minor(1, 2), ca = minor(2, 0), ab = minor(0, 1);
+  if (narrow) {
+    const Int128 d = z(0) * bc + z(1) * ca + z(2) * ab;
+    return (d > 0) - (d < 0);
+  }
+  return (Int256::product(z(0), bc) + Int256::product(z(1), ca) + Int256::product(z(2), ab)).sign();
+}
+}  // namespace
 
 int orient3d(const double* a, const double* b, const double* c, const double* d) {
   const double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
@@ -61,6 +100,14 @@ int orient3d(const double* a, const double* b, const double* c, const double* d)
                       (std::abs(cdx * ady) + std::abs(adx * cdy)) * std::abs(bdz) +
                       (std::abs(adx * bdy) + std::abs(bdx * ady)) * std::abs(cdz);
   if (std::abs(det) > kOrient3dBound * perm && perm > kTiny) return -sign_of(det);
+  // Exactly: xy and z scaled apart (the sign does not change).
+  const double* pts[4] = {a, b, c, d};
+  Scaled xy, z;
+  if (scaled_differences(pts, 4, 0, 2, xy) && scaled_differences(pts, 4, 2, 1, z)) {
+    const int64_t x[3] = {xy.v[0], xy.v[2], xy.v[4]}, y[3] = {xy.v[1], xy.v[3], xy.v[5]};
+    const bool narrow = xy.largest < (int64_t{1} << 30) && z.largest < (int64_t{1} << 30);
+    return -det3_sign(x, y, [&](int i) { return static_cast<Int128>(z.v[i]); }, narrow);
+  }
   return sign(CGAL::orientation(p3(a), p3(b), p3(c), p3(d)));
 }
 
@@ -82,13 +129,11 @@ int compare_xy(const double* a, const double* b) {  // comparisons of doubles ar
 
 int detail::in_circle_exact(const double* a, const double* b, const double* c, const double* d) {
   const double* pts[4] = {a, b, c, d};
-  int64_t v[8];
-  if (integer_coords(pts, 4, v)) {  // |differences| < 2^25, lifts < 2^51: 128 bits suffice
-    using I = __int128;
-    const I ax = v[0] - v[6], ay = v[1] - v[7], bx = v[2] - v[6], by = v[3] - v[7], cx = v[4] - v[6], cy = v[5] - v[7];
-    const I al = ax * ax + ay * ay, bl = bx * bx + by * by, cl = cx * cx + cy * cy;
-    const I det_exact = al * (bx * cy - cx * by) + bl * (cx * ay - ax * cy) + cl * (ax * by - bx * ay);
-    return (det_exact > 0) - (det_exact < 0);
+  Scaled s;
+  if (scaled_differences(pts, 4, 0, 2, s)) {  // lifts below 2^125, the determinant below 2^252
+    const int64_t x[3] = {s.v[0], s.v[2], s.v[4]}, y[3] = {s.v[1], s.v[3], s.v[5]};
+    const auto lift = [&](int i) { return static_cast<Int128>(x[i]) * x[i] + static_cast<Int128>(y[i]) * y[i]; };
+    return det3_sign(x, y, lift, s.largest < (int64_t{1} << 30));
   }
   return sign(CGAL::side_of_oriented_circle(p2(a), p2(b), p2(c), p2(d)));
 }
