@@ -144,6 +144,12 @@ int diametral_sign(const double* p, const double* q, const double* r) {
   // Each product is within eps of exact (the differences are rounded too: 3 eps in
   // all per term), the sum adds one more rounding: 4 eps of the sum is safe.
   if (std::abs(dot) > 4.5 * kEps * sum && sum > kTiny) return dot < 0 ? 1 : -1;
+  const double* pts[3] = {p, q, r};
+  Scaled sd;
+  if (scaled_differences(pts, 3, 0, 2, sd)) {  // (right angles of grid cells come here)
+    const Int128 exact = static_cast<Int128>(sd.v[0]) * sd.v[2] + static_cast<Int128>(sd.v[1]) * sd.v[3];
+    return exact < 0 ? 1 : exact == 0 ? 0 : -1;
+  }
   const CGAL::Bounded_side s = CGAL::side_of_bounded_circle(p2(p), p2(q), p2(r));
   return s == CGAL::ON_BOUNDED_SIDE ? 1 : s == CGAL::ON_BOUNDARY ? 0 : -1;
 }
