@@ -17,7 +17,8 @@ const dir = `${root}build/sanitize`;
 const args = process.argv.slice(2);
 const buildOnly = args.includes('--build-only');
 const seconds = Number(args.find((a) => /^\d+$/.test(a)) ?? 20);
-const targets = ['fuzz_cli', 'fuzz_solve', 'fuzz_edit'];
+export const FUZZ_TARGETS = ['fuzz_cli', 'fuzz_solve', 'fuzz_edit'];
+const targets = FUZZ_TARGETS;
 const chosen = args.filter((a) => targets.includes(a));
 
 export function buildSanitized() {

@@ -8,6 +8,14 @@ import { fileURLToPath } from 'node:url';
 const root = fileURLToPath(new URL('..', import.meta.url));
 mkdirSync(`${root}/test-results`, { recursive: true });
 let passed = 0, failed = 0;
+// doctest cases left out under the sanitizers: the long brute-force and
+// order-k sweeps (seconds natively, up to ten minutes there) and the three that
+// time progress and cancellation. The native run has them all.
+const SANITIZER_SKIP = [
+  'heuristic at order k*', 'heuristic bounds at order k*', 'large instances*', 'exact k-OD optimisation*',
+  'exact at order k equals*', 'near-degenerate: solves*', 'fill DP: the best*', 'long regions*',
+  'bounds every triangulation*', 'progress comes*', 'cancelling*', 'wheels*',
+];
 
 function run(title, cmd, args) {
   console.log(`\n== ${title}`);
@@ -16,11 +24,9 @@ function run(title, cmd, args) {
 }
 
 // doctest: the console shows progress, the JUnit report gives the counts.
-{
-  const status = run('doctest (native core)', `${root}/build/native/hodt_tests`, [
-    '--reporters=console,junit', `--out=${root}/test-results/doctest.xml`, '--no-intro=true',
-  ]);
-  const xml = existsSync(`${root}/test-results/doctest.xml`) ? readFileSync(`${root}/test-results/doctest.xml`, 'utf8') : '';
+function doctest(title, binary, report, extra = []) {
+  const status = run(title, binary, ['--reporters=console,junit', `--out=${root}/test-results/${report}`, '--no-intro=true', ...extra]);
+  const xml = existsSync(`${root}/test-results/${report}`) ? readFileSync(`${root}/test-results/${report}`, 'utf8') : '';
   const cases = (xml.match(/<testcase /g) ?? []).length;
   const bad = (xml.match(/<failure/g) ?? []).length;
   if (cases) {
@@ -29,6 +35,7 @@ function run(title, cmd, args) {
   } else failed += status === 0 ? 0 : 1;
   if (status !== 0 && !bad) failed += 1;
 }
+doctest('doctest (native core)', `${root}/build/native/hodt_tests`, 'doctest.xml');
 
 function vitest(title, config, report) {
   const status = run(title, 'npx', ['vitest', 'run', '--config', config, '--reporter=default', '--reporter=json', `--outputFile.json=${root}/test-results/${report}`]);
@@ -43,6 +50,31 @@ function vitest(title, config, report) {
 vitest('vitest (library and CLI, real wasm in Node)', 'vitest.config.ts', 'vitest.json');
 vitest('browser (Playwright + Chromium)', 'tests/e2e/vitest.config.ts', 'e2e.json');
 vitest('npm package (pack, offline install, Node, CLI, types, Vite + Chromium under CSP)', 'tests/pack/vitest.config.ts', 'pack.json');
+
+// Sanitizers: the core built by clang with AddressSanitizer and
+// UndefinedBehaviorSanitizer (build/sanitize, incremental), its doctest suite but
+// for the long brute-force sweeps (the native run has them), and a short run of
+// every fuzzer (scripts/fuzz.mjs runs them as long as asked).
+{
+  const { buildSanitized, fuzz, FUZZ_TARGETS } = await import('./fuzz.mjs');
+  console.log('\n== sanitizer build (clang, ASan + UBSan)');
+  let built = true;
+  try {
+    buildSanitized();
+  } catch {
+    built = false;
+    failed += 1;
+  }
+  if (built) {
+    doctest('doctest (ASan + UBSan)', `${root}/build/sanitize/hodt_tests`, 'doctest-sanitize.xml', [`--test-case-exclude=${SANITIZER_SKIP.join(',')}`]);
+    for (const target of FUZZ_TARGETS) {
+      const r = fuzz(target, 20);
+      console.log(`fuzz: ${target}: ${r.runs.toLocaleString('en')} inputs in 20 s, ${r.ok ? 'no findings' : 'FINDING'}`);
+      if (r.ok) passed += 1;
+      else failed += 1;
+    }
+  }
+}
 
 console.log(`\ntests: ${passed} passed, ${failed} failed`);
 process.exitCode = failed ? 1 : 0;
