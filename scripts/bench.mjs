@@ -28,7 +28,10 @@ function rng(seed) {
   return () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
 }
 // Point sets: uniform; DEM-like (smooth hills sampled at random places); a grid
-// (every cell cocircular) with DEM heights.
+// (every cell cocircular) with DEM heights; and real data's two shapes: a DEM
+// raster after reprojection (a grid at a UTM offset, a cell size not round in
+// binary: no coordinate is an integer) and LiDAR-like ground points (random
+// places quantised to 1 cm at UTM offsets, duplicates dropped).
 const hill = (x, y) => Math.sin(3 * x) * Math.cos(2.3 * y) + 0.5 * Math.sin(7.1 * x + 5.3 * y) + 0.2 * Math.cos(13 * x * y);
 const KINDS = {
   uniform(n, r) { return Float64Array.from({ length: 3 * n }, r); },
@@ -42,7 +45,29 @@ const KINDS = {
     for (let j = 0; j < w; ++j) for (let i = 0; i < w; ++i) p.set([i, j, hill(i / w, j / w)], 3 * (j * w + i));
     return p;
   },
+  'utm-grid'(n) {
+    const w = Math.round(Math.sqrt(n)), p = new Float64Array(3 * w * w);
+    for (let j = 0; j < w; ++j)
+      for (let i = 0; i < w; ++i) p.set([731012.3456789 + 74.98765 * i, 4100000.25 + 74.98765 * j, 300 + 200 * hill(i / w, j / w)], 3 * (j * w + i));
+    return p;
+  },
+  lidar(n, r) {
+    const side = Math.sqrt(n); // metres: a point per square metre
+    const seen = new Set(), out = [];
+    for (let i = 0; i < n; ++i) {
+      const qx = Math.round(r() * side * 100), qy = Math.round(r() * side * 100);
+      const key = qx * 1e9 + qy;
+      if (seen.has(key)) continue;
+      seen.add(key);
+      out.push(500000 + qx / 100, 4100000 + qy / 100, Math.round((150 + 40 * hill(qx / (100 * side), qy / (100 * side))) * 100) / 100);
+    }
+    return Float64Array.from(out);
+  },
 };
+// Real-data kinds: every objective, and each one's time per point against the
+// uniform run of the same size.
+const REAL = new Set(['utm-grid', 'lidar']);
+const uniformPerPoint = {};
 
 // A fresh module per run (its heap size is that run's peak), warmed up on a small
 // terrain first: V8 compiles wasm in tiers, and the first call of a big function
@@ -73,6 +98,7 @@ for (const kind of Object.keys(KINDS)) {
     const reps = n >= 1e5 ? 3 : 5;
     const xyz = KINDS[kind](n, rng(n + kind.length));
     const objectives = kind === 'grid' ? [PIPELINE_OBJECTIVE] : EXACT;
+    const nPoints = xyz.length / 3;
     // delaunator: the triangulation everyone knows, alone.
     const coords = new Float64Array(2 * (xyz.length / 3));
     for (let i = 0; i < xyz.length / 3; ++i) coords[2 * i] = xyz[3 * i], coords[2 * i + 1] = xyz[3 * i + 1];
@@ -108,8 +134,19 @@ for (const kind of Object.keys(KINDS)) {
     summary.runs.push(run);
     log(`\n${kind} n=${run.n} (${quads} quads): delaunator ${dl.toFixed(1)} ms | hodt terrain native ${nat.terrain.toFixed(1)} ms, wasm ${wasm.terrain.toFixed(1)} ms`);
     log(`  pipeline (terrain + ${PIPELINE_OBJECTIVE}): native ${pipeNative.toFixed(1)} ms, wasm ${pipeWasm.toFixed(1)} ms; wasm/delaunator ${run.wasmOverDelaunator.toFixed(2)}, wasm/native ${run.wasmOverNative.toFixed(2)}; wasm heap ${run.heapBytesPerPoint.toFixed(0)} B/point`);
-    for (const o of objectives)
-      log(`  exact ${o.padEnd(30)} native ${String(nat.objectives[o]?.toFixed(1)).padStart(9)} ms   wasm ${String(wasm.objectives[o]?.toFixed(1)).padStart(9)} ms`);
+    // Per point, terrain + solve, against uniform points of the same size.
+    const perPoint = (side, o) => (side.terrain + side.objectives[o]) / nPoints;
+    if (kind === 'uniform') uniformPerPoint[n] = { native: nat, wasm, n: nPoints };
+    const base = uniformPerPoint[n];
+    run.perPointOverUniform = {};
+    for (const o of objectives) {
+      const ratio = REAL.has(kind) && base
+        ? { native: perPoint(nat, o) / perPoint(base.native, o), wasm: perPoint(wasm, o) / perPoint(base.wasm, o) }
+        : null;
+      if (ratio) run.perPointOverUniform[o] = ratio;
+      log(`  exact ${o.padEnd(30)} native ${String(nat.objectives[o]?.toFixed(1)).padStart(9)} ms   wasm ${String(wasm.objectives[o]?.toFixed(1)).padStart(9)} ms` +
+        (ratio ? `   per point / uniform: native ${ratio.native.toFixed(2)}, wasm ${ratio.wasm.toFixed(2)}` : ''));
+    }
   }
 }
 // The NP-hard objectives' approximation schemes on grids up to 200 x 200: DEM

@@ -146,10 +146,19 @@ export class Hodt {
   }
 
   /** Runs the `hodt` command line in-process (the npm bin uses it); `read`
-   * returns a file's text or bytes, or an Error (with a Node `code` such as
-   * 'ENOENT', or a message) that the CLI reports. */
+   * returns a file's text or bytes, or returns or throws an Error (with a Node
+   * `code` such as 'ENOENT', or a message) that the CLI reports: `(path) =>
+   * readFileSync(path)` will do. (Besides FILE, the CLI looks for its `.prj`
+   * sidecar, and a missing one is no error.) */
   runCli(args: string[], read: (path: string) => string | Uint8Array | Error, io?: CliIo): CliResult {
-    return this.#module.runCli(args, read, io);
+    const reader = (path: string) => {
+      try {
+        return read(path);
+      } catch (e) {
+        return e instanceof Error ? e : new Error(String(e));
+      }
+    };
+    return this.#module.runCli(args, reader, io);
   }
 }
 
