@@ -8,6 +8,7 @@
 #include <set>
 
 #include "generators.hpp"
+#include "input_triangles.hpp"
 #include "hodt/error.hpp"
 #include "hodt/solve.hpp"
 #include "hodt/terrain.hpp"
@@ -18,18 +19,6 @@ using namespace hodt::test;
 namespace {
 
 using Edge = std::pair<uint32_t, uint32_t>;
-
-std::set<std::array<uint32_t, 3>> triangles_in_input(const Terrain& t) {
-  std::set<std::array<uint32_t, 3>> out;
-  const Mesh& m = t.structure().base;
-  for (uint32_t k = 0; k < m.num_triangles(); ++k) {
-    std::array<uint32_t, 3> v = {t.to_input(m.triangles[3 * k]), t.to_input(m.triangles[3 * k + 1]),
-                                 t.to_input(m.triangles[3 * k + 2])};
-    std::rotate(v.begin(), std::min_element(v.begin(), v.end()), v.end());
-    out.insert(v);
-  }
-  return out;
-}
 
 std::set<Edge> flippable_in_input(const Terrain& t) {
   std::set<Edge> out;

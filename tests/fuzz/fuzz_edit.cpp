@@ -1,32 +1,16 @@
 // Live edits against rebuilding: adds, moves and removes from the input on a
 // small terrain; after each edit the terrain equals one built from the edited
 // points (same triangles), and a refused edit changes nothing.
-#include <algorithm>
-#include <array>
 #include <cstdio>
-#include <set>
 
 #include "fuzz_input.hpp"
 #include "hodt/error.hpp"
 #include "hodt/terrain.hpp"
+#include "input_triangles.hpp"
 
 using namespace hodt;
 
-namespace {
-
-std::set<std::array<uint32_t, 3>> triangles(const Terrain& t) {
-  std::set<std::array<uint32_t, 3>> out;
-  const Mesh& m = t.structure().base;
-  for (uint32_t k = 0; k < m.num_triangles(); ++k) {
-    std::array<uint32_t, 3> v = {t.to_input(m.triangles[3 * k]), t.to_input(m.triangles[3 * k + 1]),
-                                 t.to_input(m.triangles[3 * k + 2])};
-    std::rotate(v.begin(), std::min_element(v.begin(), v.end()), v.end());
-    out.insert(v);
-  }
-  return out;
-}
-
-}  // namespace
+using test::triangles_in_input;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   fuzz::Bytes in{data, size};
@@ -44,13 +28,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const uint32_t i = in.byte() % (count + 1);  // one past the end: refused
     std::vector<double> p = fuzz::points(in, 1);
     std::vector<double> next = xyz;
-    const auto before = triangles(t);
+    const auto before = triangles_in_input(t);
     try {
       if (op == 0) t.add_point(p[0], p[1], p[2]), next.insert(next.end(), p.begin(), p.end());
       else if (op == 1) t.move_point(i, p[0], p[1], p[2]), std::copy(p.begin(), p.end(), next.begin() + 3 * i);
       else t.remove_point(i), next.erase(next.begin() + 3 * i, next.begin() + 3 * i + 3);
     } catch (const InputError&) {
-      if (triangles(t) != before) {
+      if (triangles_in_input(t) != before) {
         std::fprintf(stderr, "fuzz_edit: a refused edit changed the terrain\n");
         __builtin_trap();
       }
@@ -58,7 +42,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
     xyz = next;
     const Terrain fresh = Terrain::from_points(xyz);  // (an edit the terrain took must be a valid terrain)
-    if (triangles(t) != triangles(fresh)) {
+    if (triangles_in_input(t) != triangles_in_input(fresh)) {
       std::fprintf(stderr, "fuzz_edit: edit %d (op %d) differs from a rebuild\n", step, op);
       __builtin_trap();
     }
