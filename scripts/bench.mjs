@@ -1,6 +1,7 @@
 // `npm run bench`: hodt native, hodt wasm (in this Node process) and delaunator on
 // the same points, side by side, in one run. Medians of several repetitions.
-// `npm run bench -- --json` prints only the JSON summary.
+// `npm run bench -- --json` prints only the JSON summary. `--kinds=uniform,lidar`
+// `--sizes=1e5` runs only those point sets (the first table) at those sizes.
 import { spawnSync } from 'node:child_process';
 import { mkdtempSync, writeFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -15,6 +16,8 @@ import { runOrderK } from '../bench/order_k.mjs';
 const root = fileURLToPath(new URL('..', import.meta.url));
 const jsonOnly = process.argv.includes('--json');
 const quick = process.argv.includes('--quick');
+const argValue = (name) => process.argv.find((a) => a.startsWith(`${name}=`))?.slice(name.length + 1);
+const onlyKinds = argValue('--kinds')?.split(',');
 const log = (...a) => { if (!jsonOnly) console.log(...a); };
 const tmp = mkdtempSync(join(tmpdir(), 'hodt-bench-'));
 
@@ -91,9 +94,9 @@ const time = (f) => { const t0 = performance.now(); const r = f(); return [perfo
 }
 
 const summary = { date: new Date().toISOString(), machine: `${process.platform} ${process.arch}, node ${process.version}`, runs: [] };
-const sizes = quick ? [1e3, 1e4] : [1e3, 1e4, 1e5, 1e6];
+const sizes = argValue('--sizes')?.split(',').map(Number) ?? (quick ? [1e3, 1e4] : [1e3, 1e4, 1e5, 1e6]);
 
-for (const kind of Object.keys(KINDS)) {
+for (const kind of Object.keys(KINDS).filter((k) => !onlyKinds || onlyKinds.includes(k))) {
   for (const n of sizes) {
     const reps = n >= 1e5 ? 3 : 5;
     const xyz = KINDS[kind](n, rng(n + kind.length));
@@ -135,19 +138,27 @@ for (const kind of Object.keys(KINDS)) {
     log(`\n${kind} n=${run.n} (${quads} quads): delaunator ${dl.toFixed(1)} ms | hodt terrain native ${nat.terrain.toFixed(1)} ms, wasm ${wasm.terrain.toFixed(1)} ms`);
     log(`  pipeline (terrain + ${PIPELINE_OBJECTIVE}): native ${pipeNative.toFixed(1)} ms, wasm ${pipeWasm.toFixed(1)} ms; wasm/delaunator ${run.wasmOverDelaunator.toFixed(2)}, wasm/native ${run.wasmOverNative.toFixed(2)}; wasm heap ${run.heapBytesPerPoint.toFixed(0)} B/point`);
     // Per point, terrain + solve, against uniform points of the same size.
-    const perPoint = (side, o) => (side.terrain + side.objectives[o]) / nPoints;
+    // (null for a refusal, such as exact max-convex-edges on a grid: one wide component)
+    const perPoint = (side, o) => (Number.isFinite(side.objectives[o]) ? (side.terrain + side.objectives[o]) / nPoints : NaN);
     if (kind === 'uniform') uniformPerPoint[n] = { native: nat, wasm, n: nPoints };
     const base = uniformPerPoint[n];
     run.perPointOverUniform = {};
     for (const o of objectives) {
       const ratio = REAL.has(kind) && base
-        ? { native: perPoint(nat, o) / perPoint(base.native, o), wasm: perPoint(wasm, o) / perPoint(base.wasm, o) }
+        ? { native: perPoint(nat, o) / perPoint(base.native, o) || null, wasm: perPoint(wasm, o) / perPoint(base.wasm, o) || null }
         : null;
       if (ratio) run.perPointOverUniform[o] = ratio;
-      log(`  exact ${o.padEnd(30)} native ${String(nat.objectives[o]?.toFixed(1)).padStart(9)} ms   wasm ${String(wasm.objectives[o]?.toFixed(1)).padStart(9)} ms` +
-        (ratio ? `   per point / uniform: native ${ratio.native.toFixed(2)}, wasm ${ratio.wasm.toFixed(2)}` : ''));
+      const ms = (v) => (Number.isFinite(v) ? `${v.toFixed(1)} ms` : 'refused').padStart(12);
+      log(`  exact ${o.padEnd(30)} native ${ms(nat.objectives[o])}   wasm ${ms(wasm.objectives[o])}` +
+        (ratio ? `   per point / uniform: native ${ratio.native?.toFixed(2) ?? 'refused'}, wasm ${ratio.wasm?.toFixed(2) ?? 'refused'}` : ''));
     }
   }
+}
+if (onlyKinds) {
+  rmSync(tmp, { recursive: true, force: true });
+  writeFileSync(`${root}/bench-results.json`, JSON.stringify(summary, null, 2) + '\n');
+  if (jsonOnly) console.log(JSON.stringify(summary));
+  process.exit(0);
 }
 // The NP-hard objectives' approximation schemes on grids up to 200 x 200: DEM
 // heights, and the paper's hardness surface f = xy - (x^2 + y^2) / 10 where the
