@@ -44,12 +44,16 @@ bool scaled_differences(const double* const* p, int count, int first, int dims, 
       if (diff.d != 0) low = std::min(low, std::ilogb(diff.d) - 52);
     }
   out.largest = 0;
+  // 2^-low is a normal double: nonzero differences lie within 2^-202 .. 2^151 in
+  // the coordinate range (points.hpp), so low is within -254 .. 99, and scaling
+  // by a power of two is exact.
+  const double scale = low == INT32_MAX ? 1 : std::ldexp(1.0, -low);
   for (int j = 0; j < dims * (count - 1); ++j) {
     if (d[j] == 0) {
       out.v[j] = 0;
       continue;
     }
-    const double v = std::ldexp(d[j], -low);  // an integer, exactly (a power of two)
+    const double v = d[j] * scale;  // an integer, exactly (a power of two)
     if (!(std::abs(v) < 0x1p62)) return false;
     out.v[j] = static_cast<int64_t>(v);
     out.largest = std::max(out.largest, std::abs(out.v[j]));
