@@ -7,6 +7,7 @@
 #include "hodt/brute_force.hpp"
 #include "hodt/cli.hpp"
 #include "hodt/error.hpp"
+#include "hodt/explain.hpp"
 #include "hodt/higher_order.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/read_points.hpp"
@@ -14,6 +15,7 @@
 #include "hodt/solve.hpp"
 #include "hodt/solve_options.hpp"
 #include "hodt/terrain.hpp"
+#include "vector_binding.hpp"
 
 using emscripten::val;
 using namespace hodt;
@@ -139,7 +141,30 @@ class TerrainHandle {
     return out;
   }
 
+  static SolveOptions options_of(const std::string& method, double epsilon, bool trace, double order, val progress) {
+    SolveOptions options;
+    const auto m = parse_method(method);
+    if (!m) throw InputError("unknown method '" + method + "'; valid methods: " + method_ids());
+    options.method = *m;
+    options.epsilon = epsilon;
+    options.order = order_from_number(order);
+    options.trace = trace;
+    if (progress.typeOf().as<std::string>() == "function")
+      options.progress = paced([progress](double done, double total) {
+        const val r = progress(done, total);
+        return !(r.isFalse());
+      });
+    check_options(options);
+    return options;
+  }
+
   // The JS object of a solution (all arrays copied out of the heap).
+  val solution_object(const Solution& s) const {
+    val out = solution_value(s);
+    out.set("order", s.order);
+    if (s.mesh) out.set("triangles", copy_out("Uint32Array", t_.to_input(s.mesh->triangles)));
+    return out;
+  }
   val solution_value(const Solution& s) const {
     const Objective o = s.objective;
     val out = val::object();
@@ -185,27 +210,34 @@ class TerrainHandle {
   val solve(const std::string& objective, const std::string& method, double epsilon, bool trace, double order,
             val progress) const {
     return guarded([&] {
-      SolveOptions options;
-      const auto m = parse_method(method);
-      if (!m) throw InputError("unknown method '" + method + "'; valid methods: " + method_ids());
-      options.method = *m;
-      options.epsilon = epsilon;
-      options.order = order_from_number(order);
-      options.trace = trace;
-      if (progress.typeOf().as<std::string>() == "function")
-        options.progress = paced([progress](double done, double total) {
-          const val r = progress(done, total);
-          return !(r.isFalse());
-        });
       const Objective o = objective_of(objective);
-      check_options(options);
+      const SolveOptions options = options_of(method, epsilon, trace, order, progress);
       // Measured first, where progress can still stop it.
       const double delaunay_value = t_.delaunay_value(o, options.progress);
       Solution s = hodt::solve(t_.structure(), o, options);
       s.delaunay_value = delaunay_value;
-      val out = solution_value(s);
-      out.set("order", s.order);
-      if (s.mesh) out.set("triangles", copy_out("Uint32Array", t_.to_input(s.mesh->triangles)));
+      return solution_object(s);
+    });
+  }
+  // The same solve, with the structures its solvers built (explain.hpp) beside the
+  // solution; vertex indices are input indices.
+  val explain(const std::string& objective, const std::string& method, double epsilon, double order, val progress) const {
+    return guarded([&] {
+      const Objective o = objective_of(objective);
+      const SolveOptions options = options_of(method, epsilon, true, order, progress);
+      const double delaunay_value = t_.delaunay_value(o, options.progress);
+      Explanation e = hodt::explain(t_.structure(), o, options);
+      e.solution.delaunay_value = delaunay_value;
+      if (e.regions) {
+        RegionExplanation& r = *e.regions;
+        r.useful = t_.to_input(r.useful), r.fixed = t_.to_input(r.fixed), r.triangles = t_.to_input(r.triangles);
+      }
+      val out = val::object();
+      out.set("solution", solution_object(e.solution));
+      out.set("search", e.search ? val(*e.search) : val::null());
+      out.set("baker", e.baker ? val(*e.baker) : val::null());
+      out.set("exact", e.exact ? val(*e.exact) : val::null());
+      out.set("regions", e.regions ? val(*e.regions) : val::null());
       return out;
     });
   }
@@ -389,10 +421,50 @@ EMSCRIPTEN_BINDINGS(hodt) {
       .function("evaluateTriangles", &TerrainHandle::evaluateTriangles)
       .function("measuresOfTriangles", &TerrainHandle::measuresOfTriangles)
       .function("solve", &TerrainHandle::solve)
+      .function("explain", &TerrainHandle::explain)
       .function("enumerateAll", &TerrainHandle::enumerateAll)
       .function("statsJson", &TerrainHandle::statsJson)
       .function("usefulEdges", &TerrainHandle::usefulEdges)
       .function("usefulTriangles", &TerrainHandle::usefulTriangles);
+  emscripten::value_object<ThresholdTest>("ThresholdTest")
+      .field("threshold", &ThresholdTest::threshold)
+      .field("satisfiable", &ThresholdTest::satisfiable)
+      .field("immediateNo", &ThresholdTest::immediate_no)
+      .field("forced", &ThresholdTest::forced)
+      .field("blocked", &ThresholdTest::blocked)
+      .field("clauses", &ThresholdTest::clauses)
+      .field("component", &ThresholdTest::component)
+      .field("conflicts", &ThresholdTest::conflicts)
+      .field("assignment", &ThresholdTest::assignment);
+  emscripten::value_object<SearchExplanation>("SearchExplanation")
+      .field("floor", &SearchExplanation::floor)
+      .field("candidates", &SearchExplanation::candidates)
+      .field("tests", &SearchExplanation::tests);
+  emscripten::value_object<BakerShiftExplanation>("BakerShiftExplanation")
+      .field("shift", &BakerShiftExplanation::shift)
+      .field("relaxed", &BakerShiftExplanation::relaxed)
+      .field("value", &BakerShiftExplanation::value)
+      .field("bound", &BakerShiftExplanation::bound)
+      .field("dropped", &BakerShiftExplanation::dropped)
+      .field("choice", &BakerShiftExplanation::choice);
+  emscripten::value_object<BakerExplanation>("BakerExplanation")
+      .field("lambda", &BakerExplanation::lambda)
+      .field("width", &BakerExplanation::width)
+      .field("layer", &BakerExplanation::layer)
+      .field("shifts", &BakerExplanation::shifts);
+  emscripten::value_object<ExactExplanation>("ExactExplanation")
+      .field("width", &ExactExplanation::width)
+      .field("numComponents", &ExactExplanation::num_components)
+      .field("order", &ExactExplanation::order)
+      .field("component", &ExactExplanation::component);
+  emscripten::value_object<RegionExplanation>("RegionExplanation")
+      .field("order", &RegionExplanation::order)
+      .field("useful", &RegionExplanation::useful)
+      .field("fixed", &RegionExplanation::fixed)
+      .field("triangles", &RegionExplanation::triangles)
+      .field("regionOfTriangle", &RegionExplanation::region_of_triangle)
+      .field("triangulations", &RegionExplanation::triangulations)
+      .field("complete", &RegionExplanation::complete);
   emscripten::function("fromPoints", &fromPoints, emscripten::allow_raw_pointers());
   emscripten::function("fromTriangulation", &fromTriangulation, emscripten::allow_raw_pointers());
   emscripten::function("readPoints", &readPoints);

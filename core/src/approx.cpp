@@ -4,6 +4,7 @@
 
 #include "hodt/baker.hpp"
 #include "hodt/error.hpp"
+#include "hodt/explain.hpp"
 #include "hodt/factor_models.hpp"
 #include "hodt/min_max_degree.hpp"
 #include "hodt/skeleton.hpp"
@@ -43,8 +44,21 @@ Solution baker_solution(const FirstOrder& fo, Objective o, const SolveOptions& o
   s.objective = o;
   s.method = "approx";
   double bound;
+  const uint32_t interior = fo.base.num_vertices() - static_cast<uint32_t>(fo.base.hull.size());
+  // The scheme maximises non-mixed vertices; the fewest mixed is interior - that.
+  auto units = [&](double x) { return mixed ? interior - x : x; };
   try {
-    BakerResult r = baker(g, quad_layers(fo, limits.progress), options.epsilon, limits);
+    std::vector<uint32_t> layer = quad_layers(fo, limits.progress);
+    BakerResult r = baker(g, layer, options.epsilon, limits, UINT32_MAX, options.explanation != nullptr);
+    if (options.explanation) {
+      BakerExplanation& e = options.explanation->baker.emplace();
+      e.lambda = r.lambda, e.width = r.width, e.layer = std::move(layer);
+      for (size_t i = 0; i < r.shifts.size(); ++i) {
+        const BakerShift& b = r.shifts[i];
+        e.shifts.push_back({b.shift, units(b.relaxed), evaluate(o, triangulate(fo, r.shift_choices[i]), limits.progress),
+                            units(b.bound), b.dropped, std::move(r.shift_choices[i])});
+      }
+    }
     s.choice = std::move(r.choice);
     bound = r.bound;
     s.details = "lambda " + std::to_string(r.lambda) + ", " + std::to_string(r.shifts.size()) +
@@ -63,8 +77,7 @@ Solution baker_solution(const FirstOrder& fo, Objective o, const SolveOptions& o
   prefer_delaunay(g, s.choice, options.progress);
   s.local_search_improved = improved;
   s.value = evaluate(o, triangulate(fo, s.choice), options.progress);
-  const uint32_t interior = fo.base.num_vertices() - static_cast<uint32_t>(fo.base.hull.size());
-  s.bound = mixed ? interior - bound : bound;  // mixed: a lower bound on the fewest mixed
+  s.bound = units(bound);  // mixed: a lower bound on the fewest mixed
   s.optimal = s.value == *s.bound;
   return s;
 }

@@ -33,7 +33,7 @@ std::vector<uint32_t> quad_layers(const FirstOrder& fo, const Progress& progress
 }
 
 BakerResult baker(const FactorGraph& g, const std::vector<uint32_t>& layer, double epsilon, const DpLimits& limits,
-                  uint32_t max_scope) {
+                  uint32_t max_scope, bool keep_shift_choices) {
   if (g.sense != Sense::Max || g.combine != Combine::Sum)
     throw std::logic_error("baker: expects a maximised sum of non-negative factors");
   const size_t nf = g.factors.size();
@@ -85,6 +85,7 @@ BakerResult baker(const FactorGraph& g, const std::vector<uint32_t>& layer, doub
     r.width = std::max(r.width, dp.decomposition.width);
     BakerShift s{shift, dp.value, g.evaluate(dp.choice), dp.value + dropped_top, dropped};
     r.shifts.push_back(s);
+    if (keep_shift_choices) r.shift_choices.push_back(dp.choice);
     r.bound = std::min(r.bound, s.bound);
     if (s.value > r.value) r.value = s.value, r.choice = dp.choice;
   }

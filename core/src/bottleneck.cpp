@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hodt/explain.hpp"
 #include "hodt/two_sat.hpp"
 
 namespace hodt {
@@ -88,11 +89,14 @@ namespace {
 // Is there a choice with every term at most t? The paper's eliminations (a pair
 // over the threshold between fixed triangles, or in both states of a quad: "no";
 // in one state: the quad is forced) become unit clauses; the rest 2-SAT.
+// test (optional) records what the test saw, in full.
 std::optional<Choice> feasible(const BottleneckModel& m, double t, ThresholdStep& step, const Progress& progress,
-                               double done, double total) {
+                               double done, double total, ThresholdTest* test) {
   step = ThresholdStep{t, false, 0, 0, false};
+  if (test) test->threshold = t;
   if (m.floor > t) {
     step.immediate_no = true;
+    if (test) test->immediate_no = true;
     return std::nullopt;
   }
   TwoSat sat(m.num_quads);
@@ -104,11 +108,13 @@ std::optional<Choice> feasible(const BottleneckModel& m, double t, ThresholdStep
       const bool over0 = term.v[0] > t, over1 = term.v[1] > t;
       if (over0 && over1) {
         step.immediate_no = true;
+        if (test) test->immediate_no = true, test->blocked.push_back(q);
         return std::nullopt;
       }
       if (over0 || over1) {
         ++step.forced;
         sat.forbid(q, over1);
+        if (test) test->forced.insert(test->forced.end(), {q, over1 ? 0u : 1u});
       }
       continue;
     }
@@ -117,14 +123,21 @@ std::optional<Choice> feasible(const BottleneckModel& m, double t, ThresholdStep
         if (term.v[x + 2 * y] > t) sat.forbid(q, x, term.r, y);
   }
   step.clauses = static_cast<uint32_t>(sat.num_clauses());
-  auto a = sat.solve(progress, done, total);
+  auto a = sat.solve(progress, done, total, test ? &test->component : nullptr);
   step.satisfiable = a.has_value();
+  if (test) {
+    test->satisfiable = step.satisfiable;
+    for (const TwoSat::Clause& c : sat.clauses()) test->clauses.insert(test->clauses.end(), {c.a, c.b});
+    for (uint32_t q = 0; q < m.num_quads; ++q)
+      if (test->component[2 * q] >= 0 && test->component[2 * q] == test->component[2 * q + 1]) test->conflicts.push_back(q);
+    if (a) test->assignment = *a;
+  }
   return a;
 }
 
 }  // namespace
 
-BottleneckResult solve_bottleneck(const BottleneckModel& m, const Progress& progress) {
+BottleneckResult solve_bottleneck(const BottleneckModel& m, const Progress& progress, SearchExplanation* record) {
   // Bounds: every term takes one of its values (lower), Delaunay achieves upper.
   double lower = m.floor, upper = m.floor;
   report(progress, 0, 1);
@@ -141,6 +154,7 @@ BottleneckResult solve_bottleneck(const BottleneckModel& m, const Progress& prog
   std::sort(cand.begin(), cand.end());
   cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
 
+  if (record) record->floor = m.floor, record->candidates = cand;
   BottleneckResult r;
   r.choice.assign(m.num_quads, 0);  // Delaunay: feasible at `upper`
   size_t lo = 0, hi = cand.size() - 1;
@@ -151,7 +165,8 @@ BottleneckResult solve_bottleneck(const BottleneckModel& m, const Progress& prog
     ThresholdStep step;
     const double done = static_cast<double>(r.trace.size());
     report(progress, done, steps);
-    auto a = feasible(m, cand[mid], step, progress, done, steps);
+    ThresholdTest* test = record ? &record->tests.emplace_back() : nullptr;
+    auto a = feasible(m, cand[mid], step, progress, done, steps, test);
     r.trace.push_back(step);
     if (a) {
       hi = mid;

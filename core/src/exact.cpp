@@ -123,7 +123,7 @@ Solution solve_polynomial(const FirstOrder& fo, Objective o, const ExactOptions&
     case Objective::MinmaxEdgeEnclosingCircle:
     case Objective::MinmaxVertexAreaRatio:
     case Objective::MinmaxVertexNormalAngle: {
-      BottleneckResult r = solve_bottleneck(pair_model(fo, o, progress), progress);
+      BottleneckResult r = solve_bottleneck(pair_model(fo, o, progress), progress, options.search);
       s.choice = std::move(r.choice);
       if (options.trace) s.trace = std::move(r.trace);
       break;

@@ -10,6 +10,7 @@
 #include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/exact.hpp"
+#include "hodt/explain.hpp"
 #include "hodt/fill_enumerator.hpp"
 #include "hodt/factor_models.hpp"
 #include "hodt/k_order.hpp"
@@ -52,7 +53,12 @@ Solution solve_factor_graph(const FirstOrder& fo, Objective objective, const Sol
     s.choice = min_max_degree_exact(fo, limits);
   } else {
     const FactorGraph g = factor_model(fo, objective, limits);
-    s.choice = solve_exact(g, limits).choice;
+    DpResult dp = solve_exact(g, limits);
+    if (options.explanation) {
+      const Decomposition& d = dp.decomposition;
+      options.explanation->exact = ExactExplanation{d.width, d.num_components, d.order, d.component};
+    }
+    s.choice = std::move(dp.choice);
     prefer_delaunay(g, s.choice, limits.progress);
   }
   s.optimal = true;
@@ -64,7 +70,9 @@ Solution dispatch(const FirstOrder& fo, Objective objective, const SolveOptions&
   if (options.method == Method::BruteForce) return brute_force(fo, objective, options.progress);
   // Polynomial objectives are always solved exactly (approx would only be worse).
   if (has_polynomial_exact(objective))
-    return solve_polynomial(fo, objective, ExactOptions{options.trace, dp_limits(options)});
+    return solve_polynomial(fo, objective,
+                            ExactOptions{options.trace, dp_limits(options),
+                                         options.explanation && is_pair_objective(objective) ? &options.explanation->search.emplace() : nullptr});
   switch (options.method) {
     case Method::Exact:
       return solve_factor_graph(fo, objective, options);

@@ -4,7 +4,8 @@
 
 namespace hodt {
 
-std::optional<std::vector<uint8_t>> TwoSat::solve(const Progress& progress, double done, double total) const {
+std::optional<std::vector<uint8_t>> TwoSat::solve(const Progress& progress, double done, double total,
+                                                  std::vector<int32_t>* components) const {
   WorkCounter work;
   work.every = 65536;  // a unit: one literal or edge visited (a few nanoseconds)
   // Only variables in some clause, renumbered in order: a free variable's literals
@@ -73,6 +74,10 @@ std::optional<std::vector<uint8_t>> TwoSat::solve(const Progress& progress, doub
       edge.pop_back();
       if (!call.empty()) low[call.back()] = std::min(low[call.back()], low[v]);
     }
+  }
+  if (components) {
+    components->assign(2 * static_cast<size_t>(n_), -1);
+    for (uint32_t i = 0; i < nl; ++i) (*components)[2 * used[i >> 1] + (i & 1)] = static_cast<int32_t>(comp[i]);
   }
   std::vector<uint8_t> value(n_, 0);
   for (uint32_t i = 0; i < used.size(); ++i) {

@@ -27,6 +27,7 @@ export {
   type SolvedBy,
 } from './objectives.js';
 export * from './terrain.js';
+export type * from './explain.js';
 export type { LoadOptions } from './load.js';
 export type { Accessor, GeoJsonPoints, Point3, PointInput } from './points.js';
 export type { ProgressCallback, SolveOptions } from './solve.js';

@@ -1,7 +1,7 @@
 import { CancelledError, describeValue, InputError, toHodtError } from './errors.js';
 import type { Method, ObjectiveId } from './objectives.js';
 import { checkOptionNames } from './options.js';
-import type { RawSolution, RawTerrain } from './wasm/hodt.mjs';
+import type { RawExplanation, RawSolution, RawTerrain } from './wasm/hodt.mjs';
 
 /** The raw result, with the triangles when the core gives them (order >= 2). */
 export type RawResult = RawSolution & { order?: number; triangles?: Uint32Array };
@@ -77,7 +77,19 @@ function checkedOptions(objective: unknown, options: SolveOptions | null | undef
 
 /** Runs the raw solver with checked options, progress and cancellation. */
 export function solveRaw(raw: RawTerrain, objective: ObjectiveId, options: SolveOptions): RawResult {
-  const { method, epsilon, order, trace, progress, signal } = checkedOptions(objective, options);
+  return runChecked(objective, options, (o, tick) => raw.solve(objective, o.method, o.epsilon, o.trace, o.order, tick));
+}
+
+/** The same solve, with what its solvers built (Terrain.explain). */
+export function explainRaw(raw: RawTerrain, objective: ObjectiveId, options: SolveOptions): RawExplanation {
+  return runChecked(objective, options, (o, tick) => raw.explain(objective, o.method, o.epsilon, o.order, tick));
+}
+
+type Tick = ((done: number, total: number) => boolean) | undefined;
+
+function runChecked<T>(objective: ObjectiveId, options: SolveOptions, call: (o: ReturnType<typeof checkedOptions>, tick: Tick) => T): T {
+  const checked = checkedOptions(objective, options);
+  const { progress, signal } = checked;
   if (signal?.aborted) throw aborted(signal);
   // A JS exception must not unwind through the wasm frames: the callback catches
   // it, cancels the run, and it is rethrown here once the core has cleaned up.
@@ -96,7 +108,7 @@ export function solveRaw(raw: RawTerrain, objective: ObjectiveId, options: Solve
         }
       : undefined;
   try {
-    return raw.solve(objective, method, epsilon, trace, order, tick);
+    return call(checked, tick);
   } catch (e) {
     if (thrown) throw (thrown as { error: unknown }).error;
     const error = toHodtError(e);

@@ -3,8 +3,9 @@
 /// <reference lib="esnext.disposable" preserve="true" />
 import { BusyError, describeValue, guard, InputError } from './errors.js';
 import { type ObjectiveId, type ObjectiveValues, type SolvedBy, toValues } from './objectives.js';
-import { checkNumber, type RawResult, type SolveOptions, solveRaw } from './solve.js';
-import type { RawMeasures, RawTerrain } from './wasm/hodt.mjs';
+import type { Explanation } from './explain.js';
+import { checkNumber, explainRaw, type RawResult, type SolveOptions, solveRaw } from './solve.js';
+import type { RawExplanation, RawMeasures, RawTerrain } from './wasm/hodt.mjs';
 
 /** One byte per flippable quad: 0 keeps the Delaunay diagonal, 1 flips it. */
 export type Choice = Uint8Array;
@@ -337,6 +338,27 @@ export class Terrain implements Disposable {
     } finally {
       this.#solving = false;
     }
+    return this.#solution(raw, s);
+  }
+  /**
+   * The same solve as solve(objective, options), with the structures its solvers
+   * built beside the solution (Explanation): the bottleneck search's tests with
+   * their clauses and components, Baker's layers and shifts, the exact engine's
+   * decomposition, the regions of the order. For teaching and checking; it costs
+   * more than solve() (the shifts' triangulations, the regions' counts).
+   */
+  explain(objective: ObjectiveId, options: Omit<SolveOptions, 'trace'> = {}): Explanation {
+    const raw = this.#idle('explain');
+    let e: RawExplanation;
+    this.#solving = true;
+    try {
+      e = explainRaw(raw, objective, options);
+    } finally {
+      this.#solving = false;
+    }
+    return { ...e, solution: this.#solution(raw, e.solution) };
+  }
+  #solution(raw: RawTerrain, s: RawResult): Solution {
     const triangles = s.triangles ?? guard(() => raw.triangulation(s.choice).triangles);
     return {
       objective: s.objective as ObjectiveId,

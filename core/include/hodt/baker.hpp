@@ -38,6 +38,7 @@ struct BakerResult {
   std::vector<BakerShift> shifts;
   uint32_t width;        // widest thick-layer decomposition solved
   bool local_search_improved = false;
+  std::vector<Choice> shift_choices;  // per shift its choice, when asked for (explain)
 };
 
 // g: Sense::Max, Combine::Sum, non-negative tables (throws std::logic_error else).
@@ -45,7 +46,7 @@ struct BakerResult {
 // paper's degree cap for non-mixed vertices). Throws LimitError if a thick layer is
 // wider than limits.max_width.
 BakerResult baker(const FactorGraph& g, const std::vector<uint32_t>& layer, double epsilon,
-                  const DpLimits& limits, uint32_t max_scope = UINT32_MAX);
+                  const DpLimits& limits, uint32_t max_scope = UINT32_MAX, bool keep_shift_choices = false);
 
 // Local search that only improves: single flips, then pairs of quads sharing a
 // factor, until no move helps. Returns true if it improved the value.

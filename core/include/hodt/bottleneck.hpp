@@ -49,7 +49,10 @@ BottleneckModel edge_pair_model(const FirstOrder& fo, Measure measure, const Pro
 template <class Measure>
 BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure, const Progress& progress = {});
 
-BottleneckResult solve_bottleneck(const BottleneckModel& model, const Progress& progress = {});
+struct SearchExplanation;  // explain.hpp
+// record (optional): the candidates and every test in full (clauses, components).
+BottleneckResult solve_bottleneck(const BottleneckModel& model, const Progress& progress = {},
+                                  SearchExplanation* record = nullptr);
 
 // Models are assembled term by term; terms over the same quads are merged (max).
 // Pruned, a model keeps only values above its floor: every candidate threshold is

@@ -9,6 +9,8 @@ namespace hodt {
 
 enum class Method : uint8_t { BruteForce, Exact, Approx, Auto };
 
+struct Explanation;  // explain.hpp
+
 struct SolveOptions {
   uint32_t order = 1;     // k: optimise over the k-th order Delaunay triangulations
   Method method = Method::Auto;
@@ -19,6 +21,8 @@ struct SolveOptions {
   // progress is called at least at every phase and at most every this often
   // (paced(); 0: at every progress point of the solvers, for tests).
   double progress_interval_ms = kProgressIntervalMs;
+  // explain(): where the solvers that run record what they built (not owned).
+  Explanation* explanation = nullptr;
 };
 
 const char* method_id(Method m);

@@ -24,10 +24,14 @@ class TwoSat {
   size_t num_clauses() const { return clauses_.size(); }
   // A satisfying assignment (one byte per variable), or nothing. progress is
   // called with (done, total) as given, to pace a long search.
-  std::optional<std::vector<uint8_t>> solve(const Progress& progress = {}, double done = 0, double total = 1) const;
+  // components (optional): per literal its strongly connected component (Tarjan's
+  // numbering, a reverse topological order), -1 for literals in no clause.
+  std::optional<std::vector<uint8_t>> solve(const Progress& progress = {}, double done = 0, double total = 1,
+                                            std::vector<int32_t>* components = nullptr) const;
+  struct Clause { uint32_t a, b; };
+  const std::vector<Clause>& clauses() const { return clauses_; }
 
  private:
-  struct Clause { uint32_t a, b; };
   uint32_t n_;
   std::vector<Clause> clauses_;
 };

@@ -1,5 +1,6 @@
 // Types of the Emscripten glue (hodt.mjs, built from wasm/bindings.cpp). Internal:
 // the public API is in ../index.ts.
+import type { BakerExplanation, ExactExplanation, RegionExplanation, SearchExplanation } from '../explain.js';
 import type { SolvedBy } from '../objectives.js';
 export interface RawChoiceResult {
   triangles: Uint32Array;
@@ -28,6 +29,13 @@ export interface RawSolution {
   localSearchImproved: boolean;
   details: string;
   trace: { threshold: number; satisfiable: boolean; clauses: number; forced: number; immediateNo: boolean }[];
+}
+export interface RawExplanation {
+  solution: RawSolution & { order: number; triangles?: Uint32Array };
+  search: SearchExplanation | null;
+  baker: BakerExplanation | null;
+  exact: ExactExplanation | null;
+  regions: RegionExplanation | null;
 }
 export interface RawTerrain {
   numPoints(): number;
@@ -59,6 +67,13 @@ export interface RawTerrain {
     order: number,
     progress: ((done: number, total: number) => boolean | void) | undefined,
   ): RawSolution & { order: number; triangles?: Uint32Array };
+  explain(
+    objective: string,
+    method: string,
+    epsilon: number,
+    order: number,
+    progress: ((done: number, total: number) => boolean | void) | undefined,
+  ): RawExplanation;
   enumerateAll(): Float64Array;
   statsJson(order: number): string;
   usefulEdges(order: number): Uint32Array;

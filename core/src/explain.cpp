@@ -1,0 +1,39 @@
+#include "hodt/explain.hpp"
+
+#include "hodt/regions.hpp"
+
+namespace hodt {
+
+namespace {
+
+// The regions of order k with their triangulations counted by plain enumeration
+// (no objective: each region's own k-OD triangulations, up to the budget).
+RegionExplanation region_explanation(const Mesh& dt, uint32_t k, const Progress& progress) {
+  RegionLimits limits;
+  limits.progress = progress;
+  const Regions r = k_order_regions(dt, k, limits);
+  RegionExplanation e;
+  e.order = k;
+  for (auto [u, v] : r.useful) e.useful.insert(e.useful.end(), {u, v});
+  for (uint32_t h = 0; h < dt.halfedges.size(); ++h)
+    if (r.fixed[h] && dt.halfedges[h] < static_cast<int32_t>(h)) e.fixed.insert(e.fixed.end(), {dt.origin(h), dt.target(h)});
+  e.triangles = dt.triangles;
+  e.region_of_triangle.assign(r.region_of_triangle.begin(), r.region_of_triangle.end());
+  for (const Region& region : r.regions) {
+    e.triangulations.push_back(static_cast<uint32_t>(region.states.size()));
+    e.complete.push_back(region.complete);
+  }
+  return e;
+}
+
+}  // namespace
+
+Explanation explain(const FirstOrder& fo, Objective objective, SolveOptions options) {
+  Explanation e;
+  options.explanation = &e;
+  e.solution = solve(fo, objective, options);
+  if (fo.is_delaunay) e.regions = region_explanation(fo.base, options.order, options.progress);
+  return e;
+}
+
+}  // namespace hodt
