@@ -2,39 +2,40 @@
 // quads are nodes, joined when they share an edge; a quad's layer is its peeling
 // depth. For each shift, the edges between layers l and l + 1 with l = shift
 // (mod lambda) are cut; the thick layers left are solved exactly and the best
-// shift wins. The library runs the scheme; the per-shift numbers are recomputed
-// here (the same factor models as the core) because the API reports only the
-// best shift's value and the smallest bound.
-import type { ObjectiveId, Solution } from 'hodt';
+// shift wins. Everything shown (layers, lambda, each shift's cut, optimum,
+// value, bound and triangulation) is what the library's run recorded
+// (terrain.explain); this view only draws it.
+import type { BakerExplanation, ObjectiveId, Solution } from 'hodt';
 import { h } from '../ui/dom.ts';
 import { formatValue, OBJECTIVE_HELP } from '../ui/objectiveHelp.ts';
 import { FLIPPED_COLOR } from '../views/palette.ts';
 import { withAlpha } from '../views/plan/planRenderer.ts';
 import { createFittedCanvas, drawBackdrop, layerColor, type FittedCanvas } from './canvas.ts';
 import { button, createPane, paperLink, type TeachContext, type TeachView } from './common.ts';
-import { bakerShift, convexEdgeModel, isCut, nonMixedModel, TooWideError, type BakerShift, type FactorGraph } from './convexModel.ts';
 import { readStructure, trianglesOf, type QuadStructure } from './structure.ts';
 import { StepPlayer } from './stepPlayer.ts';
 
 const OBJECTIVES = ['max-convex-edges', 'min-mixed-vertices'] as const satisfies readonly ObjectiveId[];
-/** Per-shift values are recomputed in the browser up to this many quads. */
-const MAX_QUADS_FOR_SHIFTS = 4000;
 const CUT_COLOR = '#d62728';
 
 interface State {
   structure: QuadStructure;
   objective: (typeof OBJECTIVES)[number];
   epsilon: number;
+  /** The library's run, once it has answered. */
+  baker: BakerExplanation | null;
   layers: number;
   lambda: number | null;
   solution: Solution | null;
   failure: string | null;
-  /** The maximised sum the scheme runs on (non-mixed vertices for the fewest
-   * mixed), and how its numbers read in the objective's units. */
-  model: FactorGraph | null;
-  units: (x: number) => number;
-  shifts: (BakerShift | null)[];
-  shiftsNote: string | null;
+}
+
+/** Does a cut of this shift (after the layers l with l mod lambda == shift)
+ * separate two quads in layers lo <= hi? (Drawing only: the library decided
+ * which terms each shift dropped.) */
+function isCut(lo: number, hi: number, shift: number, lambda: number): boolean {
+  const firstCut = lo + ((((shift - lo) % lambda) + lambda) % lambda);
+  return firstCut < hi;
 }
 
 export function createBakerView(ctx: TeachContext): TeachView {
@@ -97,57 +98,30 @@ export function createBakerView(ctx: TeachContext): TeachView {
     const id = objective.value as State['objective'];
     const terrain = ctx.terrain();
     const structure = readStructure(terrain);
-    let layers = 0;
-    for (const d of structure.quadDepth) layers = Math.max(layers, d + 1);
-    state = { structure, objective: id, epsilon: eps, layers, lambda: null, solution: null, failure: null, model: null, units: (x) => x, shifts: [], shiftsNote: null };
+    state = { structure, objective: id, epsilon: eps, baker: null, layers: 0, lambda: null, solution: null, failure: null };
     player.pos = 0;
     canvas.fit(structure.points);
     render();
-    void ctx.solver.solve({ points: ctx.points(), objective: id, method: 'approx', epsilon: eps, order: 1, maxEdge: ctx.settings().maxEdge }).then((o) => {
-      if (my !== token || !state) return;
-      if (o.status === 'solved') {
-        state.solution = o.solution;
-        const m = /lambda (\d+)/.exec(o.solution.details);
-        state.lambda = m ? Number(m[1]) : Math.ceil(1 / eps);
-      } else {
-        state.failure = o.status === 'failed' ? o.message : 'cancelled';
-        state.lambda = Math.ceil(1 / eps - 1e-9);
-      }
-      state.shifts = Array.from({ length: state.lambda }, () => null);
-      if (structure.m > MAX_QUADS_FOR_SHIFTS) {
-        state.shiftsNote = `Per-shift values are recomputed in the browser up to ${MAX_QUADS_FOR_SHIFTS} quads; this terrain has ${structure.m}.`;
-      } else if (id === 'max-convex-edges') {
-        state.model = convexEdgeModel(structure);
-        computeShifts(my, 0);
-      } else {
-        // The scheme maximises the non-mixed vertices: mixed = interior - that.
-        const { graph, interior } = nonMixedModel(structure);
-        state.model = graph;
-        state.units = (x) => interior - x;
-        computeShifts(my, 0);
-      }
-      render();
-    });
-  }
-
-  /** The shifts one per task, so the page stays responsive. */
-  function computeShifts(my: number, i: number): void {
-    const s = state;
-    if (my !== token || !s || !s.model || i >= s.shifts.length) return;
+    // After a frame, so that "Running" shows while the library works.
     window.setTimeout(() => {
-      if (my !== token) return;
+      if (my !== token || !state) return;
       try {
-        s.shifts[i] = bakerShift(s.model!, s.structure.quadDepth, s.lambda!, i);
-      } catch (e) {
-        if (!(e instanceof TooWideError)) throw e;
-        s.shiftsNote = `${e.message}: per-shift values not shown.`;
-        s.model = null;
+        const e = terrain.explain(id, { method: 'approx', epsilon: eps });
+        state.solution = e.solution;
+        state.baker = e.baker;
+        if (!e.baker) state.failure = `the library did not run Baker's scheme (${e.solution.details})`;
+        else {
+          state.lambda = e.baker.lambda;
+          state.layers = e.baker.layer.reduce((a, b) => Math.max(a, b + 1), 0);
+        }
+      } catch (err) {
+        state.failure = err instanceof Error ? err.message : String(err);
       }
       render();
-      computeShifts(my, i + 1);
     }, 0);
   }
 
+  const shifts = (s: State) => s.baker?.shifts ?? [];
   const last = () => (state?.lambda ? state.lambda + 1 : 0);
 
   function render(): void {
@@ -155,10 +129,10 @@ export function createBakerView(ctx: TeachContext): TeachView {
     const s = state;
     if (!s) return;
     const fmt = (v: number) => formatValue(s.objective, v);
-    const u = s.units;
     const max = s.objective === 'max-convex-edges';
+    const shifts = s.baker?.shifts ?? [];
     lambdaOut.textContent = s.lambda ? `λ = ${s.lambda}` : 'λ = …';
-    lambdaOut.title = `⌈1/ε⌉ = ${Math.ceil(1 / s.epsilon - 1e-9)}; the library takes λ = ⌈span/ε⌉ where span is the most layers one of its factors straddles`;
+    lambdaOut.title = `⌈1/ε⌉ = ${Math.ceil(1 / s.epsilon - 1e-9)}; the library takes λ = ⌈span/ε⌉ where span is the most layers one of its terms straddles`;
     counter.textContent = !s.lambda ? '' : player.pos === 0 ? 'layers' : player.pos > s.lambda ? 'result' : `shift ${player.pos - 1} of 0–${s.lambda - 1}`;
     caption.textContent =
       !s.lambda || player.pos === 0
@@ -171,28 +145,28 @@ export function createBakerView(ctx: TeachContext): TeachView {
       ...Array.from({ length: s.layers }, (_, l) => h('i', { style: `background: ${layerColor(l, s.layers)}`, title: `layer ${l}` }, String(l))),
     );
     // Per-shift table.
-    const rows = s.shifts.map((x, i) => {
+    const rows = shifts.map((x, i) => {
       const tr = h(
         'tr',
         { class: i + 1 === player.pos ? 'current' : '', 'data-shift': String(i) },
         h('td', {}, String(i)),
-        h('td', {}, x ? String(x.dropped.length) : s.model ? '…' : '—'),
-        h('td', {}, x ? fmt(u(x.relaxed)) : '—'),
-        h('td', {}, x ? fmt(u(x.value)) : '—'),
-        h('td', {}, x ? fmt(u(x.bound)) : '—'),
+        h('td', {}, String(x.dropped)),
+        h('td', {}, fmt(x.relaxed)),
+        h('td', {}, fmt(x.value)),
+        h('td', {}, fmt(x.bound)),
       );
       tr.addEventListener('click', () => player.go(i + 1));
       return tr;
     });
-    const done = s.shifts.filter((x): x is BakerShift => x !== null);
-    if (done.length) {
-      // In the maximised sum: the best value is the largest, the bound the smallest.
-      const best = Math.max(...done.map((x) => x.value));
-      const bound = Math.min(...done.map((x) => x.bound));
+    const pick = (values: number[], most: boolean) => (most ? Math.max(...values) : Math.min(...values));
+    if (shifts.length) {
+      // Most convex edges: the best value is the largest, the bound the smallest;
+      // fewest mixed vertices the other way round.
+      const best = pick(shifts.map((x) => x.value), max);
+      const bound = pick(shifts.map((x) => x.bound), !max);
       rows.forEach((tr, i) => {
-        const x = s.shifts[i];
-        if (x && x.value === best) tr.children[3]!.classList.add('best');
-        if (x && x.bound === bound) tr.children[4]!.classList.add('best');
+        if (shifts[i]!.value === best) tr.children[3]!.classList.add('best');
+        if (shifts[i]!.bound === bound) tr.children[4]!.classList.add('best');
       });
     }
     table.replaceChildren(
@@ -203,15 +177,15 @@ export function createBakerView(ctx: TeachContext): TeachView {
           'tr',
           {},
           h('th', {}, 'shift'),
-          h('th', { title: 'factors cut (convex edges: edges between quads; mixed vertices: vertices whose quads straddle the cut)' }, 'cut'),
-          h('th', { title: max ? 'optimum of what the shift keeps (cut factors count 0)' : 'mixed vertices if every cut vertex were mixed, at the optimum of what the shift keeps' }, 'kept opt.'),
+          h('th', { title: 'terms the cuts dropped (convex edges: edges between quads; mixed vertices: vertices whose quads straddle a cut)' }, 'cut'),
+          h('th', { title: max ? 'optimum of what the shift keeps (cut terms count 0)' : 'mixed vertices if every cut vertex were mixed, at the optimum of what the shift keeps' }, 'kept opt.'),
           h('th', { title: max ? 'convex edges of that triangulation' : 'mixed vertices of that triangulation' }, 'value'),
-          h('th', { title: max ? 'kept optimum + the most the cut factors could add: the optimum is at most this' : 'the fewest mixed vertices are at least this' }, 'bound'),
+          h('th', { title: max ? 'kept optimum + the most the cut terms could add: the optimum is at most this' : 'the fewest mixed vertices are at least this' }, 'bound'),
         ),
       ),
       h('tbody', {}, ...rows),
     );
-    table.hidden = s.shifts.length === 0;
+    table.hidden = shifts.length === 0;
     // The library's result.
     if (s.solution) {
       const sol = s.solution;
@@ -221,34 +195,32 @@ export function createBakerView(ctx: TeachContext): TeachView {
         sol.bound !== null ? ` · optimum ${sol.sense === 'max' ? '≤' : '≥'} ` : '',
         sol.bound !== null ? h('b', { id: 'baker-bound', 'data-value': String(sol.bound) }, fmt(sol.bound)) : ' · proven optimal',
         ` · Delaunay ${fmt(sol.delaunayValue)} · ${sol.details}${sol.localSearchImproved ? ' · local search improved the best shift' : ''}.`,
-        s.shiftsNote ? h('span', { class: 'muted' }, ` ${s.shiftsNote}`) : '',
       );
     } else {
       libraryLine.textContent = s.failure ? `The library could not run the approximation: ${s.failure}` : 'Running the approximation…';
     }
     // What the current position shows.
     if (player.pos === 0) {
-      status.replaceChildren(`${s.structure.m} quads in ${s.layers} layers (depth of a quad: fewest Delaunay edges from the hull to one of its corners). `, s.lambda ? 'Press Next for the shifts.' : '');
+      status.replaceChildren(
+        s.lambda ? `${s.structure.m} quads in ${s.layers} layers (depth of a quad: fewest Delaunay edges from the hull to one of its corners). Press Next for the shifts.` : `${s.structure.m} quads.`,
+      );
     } else if (s.lambda && player.pos <= s.lambda) {
       const i = player.pos - 1;
       const cuts: number[] = [];
       for (let l = i; l < s.layers - 1; l += s.lambda) cuts.push(l);
-      const x = s.shifts[i];
+      const x = shifts[i]!;
       status.replaceChildren(
         h('b', {}, `Shift ${i}: `),
         cuts.length ? `cut between layers ${cuts.map((l) => `${l}|${l + 1}`).join(', ')} (red dashes). ` : 'no cut falls inside this terrain’s layers. ',
-        x
-          ? max
-            ? `The thick layers' optimum keeps ${fmt(x.relaxed)}; its triangulation (amber flips) has ${fmt(x.value)}; the optimum is at most ${fmt(x.bound)}.`
-            : `The thick layers' optimum, with every cut vertex counted as mixed, has ${fmt(u(x.relaxed))} mixed vertices; its triangulation (amber flips) has ${fmt(u(x.value))}; the fewest possible are at least ${fmt(u(x.bound))}.`
-          : '',
+        max
+          ? `The thick layers' optimum keeps ${fmt(x.relaxed)}; its triangulation (amber flips) has ${fmt(x.value)}; the optimum is at most ${fmt(x.bound)}.`
+          : `The thick layers' optimum, with every cut vertex counted as mixed, has ${fmt(x.relaxed)} mixed vertices; its triangulation (amber flips) has ${fmt(x.value)}; the fewest possible are at least ${fmt(x.bound)}.`,
       );
     } else if (s.lambda) {
-      const done2 = s.shifts.filter((x): x is BakerShift => x !== null);
-      const best = done2.length ? done2.reduce((a, b) => (b.value > a.value ? b : a)) : null;
+      const best = shifts.length ? shifts.reduce((a, b) => ((max ? b.value > a.value : b.value < a.value) ? b : a)) : null;
       status.replaceChildren(
         h('b', { id: 'baker-done' }, 'Result: '),
-        best ? `the best shift is ${best.shift} with ${fmt(u(best.value))}; the tightest bound is ${fmt(u(Math.min(...done2.map((x) => x.bound))))}. ` : '',
+        best ? `the best shift is ${best.shift} with ${fmt(best.value)}; the tightest bound is ${fmt(pick(shifts.map((x) => x.bound), !max))}. ` : '',
         s.solution ? `The library returns ${fmt(s.solution.value)} (amber flips)${s.solution.bound !== null ? `, proven within ${fmt(s.solution.bound)}` : ', proven optimal'}.` : '',
       );
     }
@@ -260,13 +232,14 @@ export function createBakerView(ctx: TeachContext): TeachView {
     const st = s.structure;
     const p = st.points;
     const shift = s.lambda && player.pos >= 1 && player.pos <= s.lambda ? player.pos - 1 : null;
-    const choice = shift !== null ? s.shifts[shift]?.choice : player.pos > 0 && s.solution ? s.solution.choice : null;
+    const choice = shift !== null ? shifts(s)[shift]?.choice : player.pos > 0 && s.solution ? s.solution.choice : null;
     drawBackdrop(c, f, p, trianglesOf(st, choice ?? new Uint8Array(st.m)), 0.25);
     // Quads filled by layer; flipped ones hatched amber.
-    const byLayer = Array.from({ length: s.layers }, () => new Path2D());
+    const layer = s.baker?.layer ?? new Uint32Array(st.m);
+    const byLayer = Array.from({ length: Math.max(1, s.layers) }, () => new Path2D());
     const flipped = new Path2D();
     for (let q = 0; q < st.m; q++) {
-      const path = byLayer[st.quadDepth[q]!]!;
+      const path = byLayer[layer[q]!]!;
       const corners = [st.quads[4 * q]!, st.quads[4 * q + 2]!, st.quads[4 * q + 1]!, st.quads[4 * q + 3]!];
       for (const target of choice?.[q] ? [path, flipped] : [path]) {
         corners.forEach((v, j) => (j === 0 ? target.moveTo(f.sx(p[3 * v]!), f.sy(p[3 * v + 1]!)) : target.lineTo(f.sx(p[3 * v]!), f.sy(p[3 * v + 1]!))));
@@ -274,7 +247,7 @@ export function createBakerView(ctx: TeachContext): TeachView {
       }
     }
     byLayer.forEach((path, l) => {
-      c.fillStyle = layerColor(l, s.layers).replace('rgb(', 'rgba(').replace(')', ', 0.42)');
+      c.fillStyle = layerColor(l, Math.max(1, s.layers)).replace('rgb(', 'rgba(').replace(')', ', 0.42)');
       c.fill(path);
     });
     c.strokeStyle = withAlpha(FLIPPED_COLOR, 0.95);
@@ -285,7 +258,7 @@ export function createBakerView(ctx: TeachContext): TeachView {
     const cy = (q: number) => f.sy(st.centroid[2 * q + 1]!);
     const kept = new Path2D(), cut = new Path2D();
     for (const [q, r] of st.quadEdges) {
-      const lo = Math.min(st.quadDepth[q]!, st.quadDepth[r]!), hi = Math.max(st.quadDepth[q]!, st.quadDepth[r]!);
+      const lo = Math.min(layer[q]!, layer[r]!), hi = Math.max(layer[q]!, layer[r]!);
       const target = shift !== null && isCut(lo, hi, shift, s.lambda!) ? cut : kept;
       target.moveTo(cx(q), cy(q));
       target.lineTo(cx(r), cy(r));
@@ -302,7 +275,7 @@ export function createBakerView(ctx: TeachContext): TeachView {
     for (let q = 0; q < st.m; q++) {
       c.beginPath();
       c.arc(cx(q), cy(q), r, 0, 2 * Math.PI);
-      c.fillStyle = layerColor(st.quadDepth[q]!, s.layers);
+      c.fillStyle = layerColor(layer[q]!, Math.max(1, s.layers));
       c.fill();
       c.strokeStyle = '#fff';
       c.lineWidth = 1;
@@ -342,9 +315,9 @@ export function createBakerView(ctx: TeachContext): TeachView {
         position: player.pos,
         atEnd: s !== null && s.lambda !== null && player.pos === last(),
         // In the objective's units (mixed vertices: value and lower bound).
-        shifts: s?.shifts.map((x) => (x ? { shift: x.shift, cut: x.dropped.length, relaxed: s.units(x.relaxed), value: s.units(x.value), bound: s.units(x.bound) } : null)) ?? [],
+        shifts: s ? shifts(s).map((x) => ({ shift: x.shift, cut: x.dropped, relaxed: x.relaxed, value: x.value, bound: x.bound })) : [],
         library: s?.solution ? { value: s.solution.value, bound: s.solution.bound, details: s.solution.details } : null,
-        note: s?.shiftsNote ?? null,
+        failure: s?.failure ?? null,
       };
     },
   };

@@ -1,7 +1,8 @@
-// Teaching view 1: the bottleneck search of Section 2.1 step by step. The library
-// solves with { trace: true }; for each threshold it tested, this view rebuilds
-// the eliminations and the 2-SAT instance in TypeScript and draws them.
-import type { Solution } from 'hodt';
+// Teaching view 1: the bottleneck search of Section 2.1 step by step, as the
+// library ran it: terrain.explain gives every threshold it tested with the quads
+// it forced, its 2-SAT clauses, their strongly connected components and the
+// assignment. This view only draws them.
+import type { ObjectiveId, SearchExplanation, Solution, ThresholdTest } from 'hodt';
 import { h } from '../ui/dom.ts';
 import { formatValue, OBJECTIVE_HELP } from '../ui/objectiveHelp.ts';
 import { CRITICAL_COLOR, FLIPPED_COLOR, QUAD_COLOR } from '../views/palette.ts';
@@ -9,23 +10,29 @@ import { withAlpha } from '../views/plan/planRenderer.ts';
 import { createFittedCanvas, drawBackdrop, trianglePath, type FittedCanvas } from './canvas.ts';
 import { jitteredGridPoints } from '../terrains/jitteredGrid.ts';
 import { button, COMPONENT_COLORS, createPane, paperLink, type TeachContext, type TeachView } from './common.ts';
-import { analyseStep, buildPairModel, isPairObjective, PAIR_OBJECTIVES, type PairModel, type PairObjective, type Source, type StepAnalysis } from './pairModel.ts';
 import { readStructure, trianglesOf, type QuadStructure } from './structure.ts';
 import { StepPlayer } from './stepPlayer.ts';
 
-const OVER_COLOR = '#f28e2b';
+const PAIR_OBJECTIVES = [
+  'minmax-edge-area-ratio',
+  'minmax-edge-normal-angle',
+  'minmax-edge-enclosing-circle',
+  'minmax-vertex-area-ratio',
+  'minmax-vertex-normal-angle',
+] as const satisfies readonly ObjectiveId[];
+type PairObjective = (typeof PAIR_OBJECTIVES)[number];
+const isPairObjective = (id: string): id is PairObjective => (PAIR_OBJECTIVES as readonly string[]).includes(id);
+
 const BLOCK_COLOR = '#c62828';
 const SVG = 'http://www.w3.org/2000/svg';
 
 interface State {
   structure: QuadStructure;
-  model: PairModel;
+  objective: PairObjective;
+  search: SearchExplanation;
   solution: Solution;
-  steps: (StepAnalysis | null)[];
-  /** Index in model.candidates of each tested threshold. */
+  /** Index in search.candidates of each tested threshold. */
   rank: number[];
-  /** Steps whose analysis here disagrees with the library's trace. */
-  mismatches: number[];
 }
 
 export function createSatView(ctx: TeachContext): TeachView {
@@ -74,9 +81,10 @@ export function createSatView(ctx: TeachContext): TeachView {
     item('fill', QUAD_COLOR, 'forced to keep its Delaunay diagonal'),
     item('fill', FLIPPED_COLOR, 'forced (or chosen) to flip'),
     item('fill', BLOCK_COLOR, 'both diagonals over t: no'),
-    item('line', OVER_COLOR, 'pair over t (depends on quads)'),
-    item('line', BLOCK_COLOR, 'fixed pair over t: no'),
-    item('line', '#4d5753', 'clause between two quads (component colour)'),
+    item('line', '#4d5753', 'clauses between two quads: each diagonal implies one of the other’s (arrows both ways)'),
+    item('line', COMPONENT_COLORS[0]!, 'quads whose diagonals lie in one strongly connected component share a colour'),
+    item('cross', BLOCK_COLOR, 'both diagonals of a quad in one component: unsatisfiable'),
+    item('line', CRITICAL_COLOR, 'at the end: the worst pair of triangles (the optimum)'),
   );
   side.append(h('div', { class: 'row' }, objective, small), line, controls, status, list, legend);
   const canvas = createFittedCanvas(main, (c, f) => draw(c, f), '2-SAT step: the terrain, forced quads, pairs over the threshold and the implication graph');
@@ -94,10 +102,10 @@ export function createSatView(ctx: TeachContext): TeachView {
     try {
       const terrain = ctx.terrain();
       const structure = readStructure(terrain);
-      const model = buildPairModel(structure, id);
-      const solution = terrain.solve(id, { trace: true });
-      const rank = solution.trace.map((t) => nearest(model.candidates, t.threshold));
-      state = { structure, model, solution, steps: solution.trace.map(() => null), rank, mismatches: [] };
+      const { search, solution } = terrain.explain(id);
+      if (!search) throw new Error(`the library ran no threshold search for ${id}`);
+      const rank = search.tests.map((t) => search.candidates.indexOf(t.threshold));
+      state = { structure, objective: id, search, solution, rank };
       error = null;
       canvas.fit(structure.points);
     } catch (e) {
@@ -108,18 +116,7 @@ export function createSatView(ctx: TeachContext): TeachView {
     render();
   }
 
-  function stepAt(i: number): StepAnalysis {
-    const s = state!;
-    let a = s.steps[i];
-    if (!a) {
-      const t = s.solution.trace[i]!;
-      a = analyseStep(s.model, s.structure.m, t.threshold);
-      s.steps[i] = a;
-      const same = a.satisfiable === t.satisfiable && a.immediateNo === t.immediateNo && (t.immediateNo || (a.clauses === t.clauses && a.forced.length === t.forced));
-      if (!same && !s.mismatches.includes(i)) s.mismatches.push(i);
-    }
-    return a;
-  }
+  const stepAt = (i: number): ThresholdTest => state!.search.tests[i]!;
 
   const last = () => (state ? state.solution.trace.length + 1 : 0);
 
@@ -133,7 +130,7 @@ export function createSatView(ctx: TeachContext): TeachView {
       return;
     }
     const s = state;
-    const id = s.model.objective;
+    const id = s.objective;
     const fmt = (v: number) => formatValue(id, v);
     const n = s.solution.trace.length;
     counter.textContent = player.pos === 0 ? 'start' : player.pos > n ? 'done' : `step ${player.pos} of ${n}`;
@@ -168,25 +165,25 @@ export function createSatView(ctx: TeachContext): TeachView {
       );
     } else if (player.pos === 0) {
       status.replaceChildren(
-        `${s.model.candidates.length} candidate values lie between the lower bound (${fmt(s.model.candidates[0]!)}) and the Delaunay value (${fmt(s.solution.delaunayValue)}). `,
+        `${s.search.candidates.length} candidate values lie between the lower bound (${fmt(s.search.candidates[0]!)}) and the Delaunay value (${fmt(s.solution.delaunayValue)}). `,
         `Binary search tests ${n} of them. Press Next.`,
       );
     } else if (player.pos <= n) {
       const t = s.solution.trace[player.pos - 1]!;
       const a = stepAt(player.pos - 1);
       const parts: (string | Node)[] = [h('b', {}, `Is there a triangulation with ${measure} ≤ ${fmt(t.threshold)}? `)];
-      if (a.fixedOver.length) parts.push(`${a.fixedOver.length} pair${a.fixedOver.length === 1 ? '' : 's'} of fixed triangles exceed it: no, immediately. `);
-      else if (a.blocked.length) parts.push(`${a.blocked.length} quad${a.blocked.length === 1 ? ' has' : 's have'} both diagonals over it: no, immediately. `);
+      const forced = a.forced.length / 2, pairs = quadPairs(a).length;
+      if (a.immediateNo && a.blocked.length === 0) parts.push(`A pair of fixed triangles measures ${fmt(s.search.floor)}, over it: no, immediately. `);
+      else if (a.immediateNo) parts.push(`Quad ${a.blocked[0]} has both diagonals over it: no, immediately. `);
       else {
         parts.push(
-          `${a.forced.length} quad${a.forced.length === 1 ? ' is' : 's are'} forced, ${a.constraints.length} pair${a.constraints.length === 1 ? '' : 's'} of quads constrain each other (${a.clauses} clauses in all). `,
+          `${forced} quad${forced === 1 ? ' is' : 's are'} forced, ${pairs} pair${pairs === 1 ? '' : 's'} of quads constrain each other (${a.clauses.length / 2} clauses in all). `,
           a.satisfiable
             ? 'The implication graph has no quad whose two diagonals are in one strongly connected component: yes, satisfiable (the diagonals shown). '
-            : `${a.sat!.conflicts.length} quad${a.sat!.conflicts.length === 1 ? ' has' : 's have'} both diagonals in one strongly connected component (✕): no. `,
+            : `${a.conflicts.length} quad${a.conflicts.length === 1 ? ' has' : 's have'} both diagonals in one strongly connected component (✕): no. `,
         );
       }
       parts.push(t.satisfiable ? 'The optimum is at most t: search below.' : 'The optimum is above t: search above.');
-      if (s.mismatches.includes(player.pos - 1)) parts.push(h('span', { class: 'warn' }, ' (this page’s doubles disagree with the library here; the library is right)'));
       status.replaceChildren(...parts);
     } else {
       status.replaceChildren(
@@ -206,7 +203,7 @@ export function createSatView(ctx: TeachContext): TeachView {
    * row per step: the interval still open before it (blue) and the threshold it
    * tested (green yes, red no); the optimum marked at the end. */
   function drawLine(s: State): void {
-    const N = s.model.candidates.length;
+    const N = s.search.candidates.length;
     const x = (i: number) => 20 + (290 * i) / Math.max(1, N - 1);
     const el = (tag: string, attrs: Record<string, string | number>, text?: string) => {
       const e = document.createElementNS(SVG, tag);
@@ -219,9 +216,9 @@ export function createSatView(ctx: TeachContext): TeachView {
     const height = rowY(steps) + 10;
     line.setAttribute('viewBox', `0 0 320 ${height}`);
     const nodes: SVGElement[] = [];
-    const fmt = (v: number) => formatValue(s.model.objective, v);
-    nodes.push(el('text', { x: 16, y: 10, 'font-size': 10, fill: '#5d6b66' }, `${fmt(s.model.candidates[0]!)} (lower bound)`));
-    nodes.push(el('text', { x: 314, y: 10, 'font-size': 10, 'text-anchor': 'end', fill: '#5d6b66' }, `${fmt(s.model.candidates[N - 1]!)} (Delaunay)`));
+    const fmt = (v: number) => formatValue(s.objective, v);
+    nodes.push(el('text', { x: 16, y: 10, 'font-size': 10, fill: '#5d6b66' }, `${fmt(s.search.candidates[0]!)} (lower bound)`));
+    nodes.push(el('text', { x: 314, y: 10, 'font-size': 10, 'text-anchor': 'end', fill: '#5d6b66' }, `${fmt(s.search.candidates[N - 1]!)} (Delaunay)`));
     nodes.push(el('line', { x1: 16, x2: 314, y1: 22, y2: 22, stroke: '#8a9691', 'stroke-width': 1 }));
     const stride = Math.max(1, Math.ceil(N / 120));
     for (let i = 0; i < N; i += stride) nodes.push(el('line', { x1: x(i), x2: x(i), y1: 18, y2: 26, stroke: '#aab3af', 'stroke-width': 0.8 }));
@@ -244,7 +241,7 @@ export function createSatView(ctx: TeachContext): TeachView {
     });
     if (player.pos > steps) {
       const y = rowY(steps);
-      const cx = x(nearest(s.model.candidates, s.solution.value));
+      const cx = x(Math.max(0, s.search.candidates.indexOf(s.solution.value)));
       nodes.push(el('path', { d: `M${cx} ${y - 6} l5 9 h-10 z`, fill: '#111' }));
       nodes.push(el('text', { x: cx + (cx > 200 ? -8 : 8), y: y + 3, 'font-size': 10, 'font-weight': 700, 'text-anchor': cx > 200 ? 'end' : 'start', fill: '#111' }, `optimum ${fmt(s.solution.value)}`));
     }
@@ -258,7 +255,7 @@ export function createSatView(ctx: TeachContext): TeachView {
     const p = st.points;
     const n = s.solution.trace.length;
     const a = player.pos >= 1 && player.pos <= n ? stepAt(player.pos - 1) : null;
-    const choice = player.pos > n ? s.solution.choice : a?.sat?.assignment ?? new Uint8Array(st.m);
+    const choice = player.pos > n ? s.solution.choice : a && a.assignment.length ? a.assignment : new Uint8Array(st.m);
     const triangles = trianglesOf(st, choice);
     drawBackdrop(c, f, p, triangles);
     // Quads: faint; flipped amber; forced strong; blocked red.
@@ -270,7 +267,7 @@ export function createSatView(ctx: TeachContext): TeachView {
     };
     for (let q = 0; q < st.m; q++) quadPath(choice[q] ? flipped : faint, q);
     if (a) {
-      for (const [q, x] of a.forced) quadPath(x ? flip : keep, q);
+      for (let k = 0; k < a.forced.length; k += 2) quadPath(a.forced[k + 1] ? flip : keep, a.forced[k]!);
       for (const q of a.blocked) quadPath(blocked, q);
     }
     c.fillStyle = withAlpha(QUAD_COLOR, 0.16);
@@ -304,47 +301,22 @@ export function createSatView(ctx: TeachContext): TeachView {
       c.stroke(crit);
     }
     if (!a) return;
-    // Pairs over the threshold.
-    const drawSources = (sources: Source[], color: string, width: number) => {
-      c.beginPath();
-      for (const src of sources) {
-        if (src.kind === 'edge') {
-          c.moveTo(f.sx(p[3 * src.u]!), f.sy(p[3 * src.u + 1]!));
-          c.lineTo(f.sx(p[3 * src.v]!), f.sy(p[3 * src.v + 1]!));
-        } else if (src.kind === 'vertex') {
-          const x = f.sx(p[3 * src.v]!), y = f.sy(p[3 * src.v + 1]!);
-          c.moveTo(x + 7, y);
-          c.arc(x, y, 7, 0, 2 * Math.PI);
-        }
-      }
-      c.strokeStyle = color;
-      c.lineWidth = width;
-      c.lineCap = 'round';
-      c.stroke();
-    };
-    const overSources: Source[] = [];
-    for (const k of a.constraints) overSources.push(...k.term.sources.filter((x) => x.kind !== 'quad'));
-    for (const [q] of a.forced) {
-      const t = s.model.terms.find((x) => x.r < 0 && x.q === q);
-      if (t) overSources.push(...t.sources.filter((x) => x.kind !== 'quad'));
-    }
-    drawSources(overSources, withAlpha(OVER_COLOR, 0.9), 3);
-    drawSources(a.fixedOver, BLOCK_COLOR, 4);
     // The implication graph: a segment per pair of constrained quads, coloured by
     // strongly connected component.
+    const size = new Map<number, number>();
+    for (const comp of a.component) if (comp >= 0) size.set(comp, (size.get(comp) ?? 0) + 1);
     const colorOf = (q: number): string | null => {
-      if (!a.sat) return null;
       for (const lit of [2 * q + 1, 2 * q]) {
-        const comp = a.sat.component[lit]!;
-        if (a.sat.componentSize[comp]! > 1) return COMPONENT_COLORS[comp % COMPONENT_COLORS.length]!;
+        const comp = a.component[lit] ?? -1;
+        if (comp >= 0 && size.get(comp)! > 1) return COMPONENT_COLORS[comp % COMPONENT_COLORS.length]!;
       }
       return null;
     };
+    const pairs = quadPairs(a);
     const cx = (q: number) => f.sx(st.centroid[2 * q]!);
     const cy = (q: number) => f.sy(st.centroid[2 * q + 1]!);
     c.lineWidth = 2.2;
-    for (const k of a.constraints) {
-      const { q, r } = k.term;
+    for (const [q, r] of pairs) {
       const cq = colorOf(q), cr = colorOf(r);
       c.strokeStyle = cq && cq === cr ? cq : '#4d5753';
       c.beginPath();
@@ -355,7 +327,7 @@ export function createSatView(ctx: TeachContext): TeachView {
       arrowHead(c, cx(r), cy(r), cx(q), cy(q));
     }
     const involved = new Set<number>();
-    for (const k of a.constraints) involved.add(k.term.q).add(k.term.r);
+    for (const [q, r] of pairs) involved.add(q).add(r);
     for (const q of involved) {
       c.beginPath();
       c.arc(cx(q), cy(q), 4.2, 0, 2 * Math.PI);
@@ -365,7 +337,7 @@ export function createSatView(ctx: TeachContext): TeachView {
       c.lineWidth = 1.2;
       c.stroke();
     }
-    for (const q of a.sat?.conflicts ?? []) {
+    for (const q of a.conflicts) {
       const x = cx(q), y = cy(q);
       c.strokeStyle = BLOCK_COLOR;
       c.lineWidth = 3;
@@ -409,8 +381,7 @@ export function createSatView(ctx: TeachContext): TeachView {
         position: player.pos,
         atEnd: s !== null && player.pos === last(),
         value: s?.solution.value ?? null,
-        trace: s?.solution.trace ?? [],
-        mismatches: s?.mismatches ?? [],
+        tests: s?.search.tests.map((t) => ({ threshold: t.threshold, satisfiable: t.satisfiable, clauses: t.clauses.length / 2, conflicts: t.conflicts.length })) ?? [],
         error,
       };
     },
@@ -421,10 +392,17 @@ function quadSlots(st: QuadStructure): number[] {
   return Array.from(st.quadSlots).filter((k) => k >= 0);
 }
 
-function nearest(sorted: number[], v: number): number {
-  let best = 0;
-  for (let i = 1; i < sorted.length; i++) if (Math.abs(sorted[i]! - v) < Math.abs(sorted[best]! - v)) best = i;
-  return best;
+/** The pairs of distinct quads the test's clauses join, each once. */
+function quadPairs(t: ThresholdTest): [number, number][] {
+  const seen = new Set<number>();
+  const out: [number, number][] = [];
+  for (let k = 0; k < t.clauses.length; k += 2) {
+    const q = Math.min(t.clauses[k]! >> 1, t.clauses[k + 1]! >> 1), r = Math.max(t.clauses[k]! >> 1, t.clauses[k + 1]! >> 1);
+    if (q === r || seen.has(q * 0x100000 + r)) continue;
+    seen.add(q * 0x100000 + r);
+    out.push([q, r]);
+  }
+  return out;
 }
 
 function arrowHead(c: CanvasRenderingContext2D, x0: number, y0: number, x1: number, y1: number): void {
@@ -441,6 +419,7 @@ function arrowHead(c: CanvasRenderingContext2D, x0: number, y0: number, x1: numb
   c.fill();
 }
 
-function item(kind: 'fill' | 'line', color: string, label: string): HTMLLIElement {
-  return h('li', {}, h('i', { class: kind === 'fill' ? 'fill' : 'line thick', style: `--c: ${color}` }), label);
+function item(kind: 'fill' | 'line' | 'cross', color: string, label: string): HTMLLIElement {
+  const mark = kind === 'cross' ? h('i', { class: 'cross', style: `color: ${color}` }, '✕') : h('i', { class: kind === 'fill' ? 'fill' : 'line thick', style: `--c: ${color}` });
+  return h('li', {}, mark, label);
 }
