@@ -227,4 +227,43 @@ describe('teaching views', () => {
     expect(errors).toEqual([]);
     await context.close();
   });
+
+  test('order k: the regions, fixed edges and optimum are the library’s, and regions merge as k grows', async () => {
+    const { page, context, errors } = await openPage(demo);
+    await openTeach(page, 'order');
+    const at = async (k: number) => {
+      await page.waitForFunction((n) => {
+        const v = window.__hodtTeach!.view('order')!;
+        return v.order === n && (v.value !== null || v.failure !== null);
+      }, k, { timeout: 60_000 });
+      return teachView(page, 'order');
+    };
+    const points = await pagePoints(page);
+    using terrain = hodt.terrain(points);
+    const seen: Record<string, any>[] = [];
+    for (const k of [1, 2, 3]) {
+      if (k > 1) await page.click('#order-next');
+      const v = await at(k);
+      expect(v.failure).toBeNull();
+      const e = terrain.explain('min-local-minima', { order: k });
+      const r = e.regions!;
+      expect(v.value).toBe(e.solution.value);
+      expect(v.optimal).toBe(e.solution.optimal);
+      expect(v.regions).toBe(r.triangulations.length);
+      expect(v.withChoice).toBe(Array.from(r.triangulations).filter((c) => c > 1).length);
+      expect(v.useful).toBe(r.useful.length / 2);
+      expect(v.fixed).toBe(r.fixed.length / 2);
+      // The minima drawn are the library's measure of the optimum: their count is its value.
+      expect(v.minima).toBe(e.solution.value);
+      if (k === 1) expect(v.withChoice).toBe(terrain.numQuads);
+      seen.push(v);
+    }
+    expect(seen[2]!.regions).toBeLessThanOrEqual(seen[0]!.regions);
+    expect(seen[2]!.value).toBeLessThanOrEqual(seen[0]!.value);
+    await page.waitForTimeout(250);
+    await screenshot(page, 'teach-order.png');
+    keep('teach-order.png');
+    expect(errors).toEqual([]);
+    await context.close();
+  });
 });

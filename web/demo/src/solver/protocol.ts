@@ -1,4 +1,4 @@
-import type { Method, ObjectiveId, Solution } from 'hodt';
+import type { Explanation, Method, ObjectiveId, Solution } from 'hodt';
 
 /** Messages between the page and the solver worker (solver/worker.ts). */
 export interface SolveRequest {
@@ -15,10 +15,12 @@ export interface SolveRequest {
   maxEdge?: number | null;
   /** Record the thresholds of a min-max search (Solution.trace). */
   trace?: boolean;
+  /** Solve through terrain.explain: the reply carries what the solvers built. */
+  explain?: boolean;
 }
 
 export type WorkerReply =
   /** Work done out of total in the current phase (phases restart the count). */
   | { type: 'progress'; id: number; done: number; total: number }
-  | { type: 'solved'; id: number; solution: Solution }
+  | { type: 'solved'; id: number; solution: Solution; explanation?: Explanation }
   | { type: 'failed'; id: number; name: string; message: string };

@@ -1,8 +1,8 @@
-import type { Method, ObjectiveId, Solution } from 'hodt';
+import type { Explanation, Method, ObjectiveId, Solution } from 'hodt';
 import type { SolveRequest, WorkerReply } from './protocol.ts';
 
 export type SolveOutcome =
-  | { status: 'solved'; solution: Solution }
+  | { status: 'solved'; solution: Solution; explanation?: Explanation }
   | { status: 'failed'; name: string; message: string }
   | { status: 'cancelled' };
 
@@ -15,6 +15,8 @@ export interface SolveJob {
   /** The domain (Terrain.maxEdge); absent or null: none. */
   maxEdge?: number | null;
   trace?: boolean;
+  /** Through terrain.explain (the outcome then carries the explanation). */
+  explain?: boolean;
 }
 
 /** Runs one solve at a time in a Web Worker. A new solve or cancel() while one
@@ -42,7 +44,7 @@ export function createSolverClient(): SolverClient {
       }
       const { resolve } = pending;
       pending = null;
-      resolve(r.type === 'solved' ? { status: 'solved', solution: r.solution } : { status: 'failed', name: r.name, message: r.message });
+      resolve(r.type === 'solved' ? { status: 'solved', solution: r.solution, explanation: r.explanation } : { status: 'failed', name: r.name, message: r.message });
     };
     w.onerror = (event) => {
       event.preventDefault();

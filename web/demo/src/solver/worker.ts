@@ -10,7 +10,7 @@ const hodt = loadHodt();
 const reply = (message: WorkerReply) => scope.postMessage(message);
 
 scope.onmessage = async (event: MessageEvent<SolveRequest>) => {
-  const { id, points, objective, method, epsilon, order, maxEdge = null, trace } = event.data;
+  const { id, points, objective, method, epsilon, order, maxEdge = null, trace, explain } = event.data;
   try {
     const terrain = (await hodt).terrain(points, { maxEdge });
     let last = 0;
@@ -23,7 +23,12 @@ scope.onmessage = async (event: MessageEvent<SolveRequest>) => {
     try {
       // Order k >= 2 chooses its method itself: the library refuses one.
       const options = order > 1 ? { order, progress } : { method, epsilon, trace, progress };
-      reply({ type: 'solved', id, solution: terrain.solve(objective, options) });
+      if (explain) {
+        const explanation = terrain.explain(objective, options);
+        reply({ type: 'solved', id, solution: explanation.solution, explanation });
+      } else {
+        reply({ type: 'solved', id, solution: terrain.solve(objective, options) });
+      }
     } finally {
       terrain.dispose();
     }
