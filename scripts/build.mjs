@@ -1,7 +1,7 @@
 // Builds everything, incrementally: the native core, tests and CLI (g++), the wasm
 // module (Emscripten), and the TypeScript library and CLI (tsc) into dist/.
 import { execSync } from 'node:child_process';
-import { chmodSync, existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { chmodSync, cpSync, existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
@@ -45,3 +45,6 @@ run(`npx tsc -p tsconfig.json`);
 mkdirSync(`${root}/dist/wasm`, { recursive: true });
 for (const f of ['hodt.mjs', 'hodt.wasm', 'hodt.d.mts']) copyIfChanged(`${root}/web/src/wasm/${f}`, `${root}/dist/wasm/${f}`);
 chmodSync(`${root}/dist/cli.js`, 0o755);
+// The demo as a static site (relative paths), also shipped for `npx hodt demo`.
+run(`npx vite build --config web/demo/vite.config.ts --logLevel warn`);
+cpSync(`${root}/build/demo`, `${root}/dist/demo`, { recursive: true });

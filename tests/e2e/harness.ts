@@ -16,18 +16,9 @@ export interface Demo {
   close(): Promise<void>;
 }
 
-export async function startDemo(): Promise<Demo> {
-  if (!existsSync(`${root}web/src/wasm/hodt.wasm`)) throw new Error('web/src/wasm/hodt.wasm is missing: run `npm run build`');
-  const server: ViteDevServer = await createServer({
-    configFile: `${root}web/demo/vite.config.ts`,
-    logLevel: 'warn',
-    clearScreen: false,
-    // No file watching: a concurrent build rewriting the wasm must not reload the page.
-    server: { host: '127.0.0.1', port: 0, strictPort: false, hmr: false, watch: null },
-  });
-  await server.listen();
-  const { port } = server.httpServer!.address() as AddressInfo;
-  const browser = await chromium.launch({
+/** Debian's Chromium, headless, with software WebGL. */
+export function launchChromium(): Promise<Browser> {
+  return chromium.launch({
     executablePath: '/usr/bin/chromium',
     args: [
       '--headless',
@@ -40,6 +31,20 @@ export async function startDemo(): Promise<Demo> {
       '--enable-unsafe-swiftshader', // software WebGL without a GPU
     ],
   });
+}
+
+export async function startDemo(): Promise<Demo> {
+  if (!existsSync(`${root}web/src/wasm/hodt.wasm`)) throw new Error('web/src/wasm/hodt.wasm is missing: run `npm run build`');
+  const server: ViteDevServer = await createServer({
+    configFile: `${root}web/demo/vite.config.ts`,
+    logLevel: 'warn',
+    clearScreen: false,
+    // No file watching: a concurrent build rewriting the wasm must not reload the page.
+    server: { host: '127.0.0.1', port: 0, strictPort: false, hmr: false, watch: null },
+  });
+  await server.listen();
+  const { port } = server.httpServer!.address() as AddressInfo;
+  const browser = await launchChromium();
   return {
     url: `http://127.0.0.1:${port}/`,
     browser,

@@ -1,7 +1,7 @@
 // The npm package end to end: npm pack, npm install of the tarball in an empty
 // project (no network), then Node, the CLI, TypeScript and a bundled page in
 // Chromium under a Content-Security-Policy without 'unsafe-eval'.
-import { execFileSync, spawnSync } from 'node:child_process';
+import { execFileSync, spawn, spawnSync } from 'node:child_process';
 import { cpSync, readdirSync, readFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { getIssues } from '@placemarkio/check-geojson';
@@ -45,7 +45,8 @@ describe('the tarball', () => {
     for (const f of ['package.json', 'README.md', 'dist/index.js', 'dist/index.d.ts', 'dist/three.js', 'dist/three.d.ts', 'dist/export.js', 'dist/export.d.ts', 'dist/cli.js', 'dist/wasm/hodt.mjs', 'dist/wasm/hodt.d.mts', 'dist/wasm/hodt.wasm']) {
       expect(paths).toContain(f);
     }
-    for (const p of paths) expect(p).toMatch(/^(package\.json|README\.md|docs\/(api|objectives)\.md|dist\/.+\.(js|d\.ts|mjs|d\.mts|wasm))$/);
+    for (const p of paths) expect(p).toMatch(/^(package\.json|README\.md|docs\/(api|objectives)\.md|dist\/.+\.(js|d\.ts|mjs|d\.mts|wasm)|dist\/demo\/(index\.html|assets\/[\w-]+\.(js|css|wasm)))$/);
+    expect(paths).toContain('dist/demo/index.html');
     const cli = project.files.find((f) => f.path === 'dist/cli.js')!;
     expect(cli.mode & 0o111).not.toBe(0);
   });
@@ -90,8 +91,9 @@ describe('the tarball', () => {
     const text = readFileSync(join(project.dir, 'node_modules/hodt', path), 'utf8');
     return [...text.matchAll(/(?:^|[\s;])(?:import|export)\b[^'"]*?from\s*['"]([^'"]+)['"]|import\(\s*['"]([^'"]+)['"]/gm)].map((m) => (m[1] ?? m[2])!);
   };
-  it('the library never imports three or Node built-ins statically (the CLI may)', () => {
-    for (const f of project.files.filter((f) => f.path.endsWith('.js') && f.path !== 'dist/cli.js')) {
+  it('the library never imports three or Node built-ins statically (the CLI and its demo server may)', () => {
+    const cli = ['dist/cli.js', 'dist/demoServer.js'];
+    for (const f of project.files.filter((f) => f.path.endsWith('.js') && !cli.includes(f.path))) {
       const allowed = f.path.startsWith('dist/loaders/') ? /^(\.\.?\/|geotiff$|laz-perf$)/ : /^\.\.?\//;
       for (const s of importsOf(f.path)) expect(s, `${f.path} imports ${s}`).toMatch(allowed);
     }
@@ -193,6 +195,58 @@ describe('CLI (npm bin)', () => {
     const bad = inProject('npx', ['--no', 'hodt', 'stats', join(repo, 'tests/fixtures/bad-nan.csv')]);
     expect(bad.status).toBe(2);
     expect(bad.stderr).toMatch(/bad-nan\.csv/);
+  });
+});
+
+describe('npx hodt demo', () => {
+  it('serves the teaching demo from the installed package: it renders, solves, and a copied link reproduces it', async () => {
+    const child = spawn('npx', ['--no', 'hodt', 'demo', '--port', '0', '--no-open'], { cwd: project.dir, env: { ...process.env, NODE_OPTIONS: '' } });
+    try {
+      const url = await new Promise<string>((resolve, reject) => {
+        let out = '';
+        child.stdout.on('data', (d: Buffer) => {
+          out += d.toString();
+          const m = /hodt demo: (http:\/\/\S+)/.exec(out);
+          if (m) resolve(m[1]!);
+        });
+        child.on('exit', (code) => reject(new Error(`hodt demo exited with ${code}: ${out}`)));
+      });
+      browser ??= await launch();
+      const open = async (hash: string) => {
+        const w = await watchedPage(browser!);
+        await w.page.goto(url + hash);
+        await w.page.waitForFunction(() => {
+          const h = (window as { __hodt?: { ready: boolean; solving: boolean; solves: number } }).__hodt;
+          return h?.ready === true && !h.solving && h.solves > 0;
+        }, null, { timeout: 60_000 });
+        return w;
+      };
+      const first = await open('');
+      const state = () => first.page.evaluate(() => {
+        const h = (window as unknown as { __hodt: { pointsCsv(): string; solution: { value: number } | null; link(): string | null } }).__hodt;
+        return { points: h.pointsCsv(), value: h.solution?.value, link: h.link() };
+      });
+      const a = await state();
+      expect(a.value).toBeTypeOf('number');
+      const second = await open(new URL(a.link!).hash);
+      const b = await second.page.evaluate(() => {
+        const h = (window as unknown as { __hodt: { pointsCsv(): string; solution: { value: number } | null } }).__hodt;
+        return { points: h.pointsCsv(), value: h.solution?.value };
+      });
+      expect(b).toEqual({ points: a.points, value: a.value });
+      expect(first.errors).toEqual([]);
+      expect(second.errors).toEqual([]);
+      await first.page.close();
+      await second.page.close();
+    } finally {
+      child.kill('SIGINT');
+    }
+  }, 120_000);
+
+  it('refuses a bad option in one line', () => {
+    const r = inProject('npx', ['--no', 'hodt', 'demo', '--port', 'eighty']);
+    expect(r.status).toBe(2);
+    expect(r.stderr.trim().split('\n').filter((l) => !l.startsWith('npm warn'))).toEqual(["hodt demo: --port needs a port number 0 to 65535, got 'eighty'; usage: hodt demo [--port N] [--no-open]"]);
   });
 });
 

@@ -56,8 +56,9 @@ export function packAndInstall(): Project {
   const project = join(dir, 'project');
   mkdirSync(project);
   writeFileSync(join(project, 'package.json'), JSON.stringify({ name: 'hodt-smoke', private: true, type: 'module' }, null, 2));
-  // --offline: the package has no dependencies, so installing it needs no network.
-  run('npm', ['install', '--no-audit', '--no-fund', '--offline', tarball], project);
+  // --prefer-offline: the dependencies (the loaders' geotiff and laz-perf) come from
+  // npm's cache, which the repository's own install filled; the registry only if not.
+  run('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', tarball], project);
   return { dir: project, tarball, files: info!.files, remove: () => rmSync(dir, { recursive: true, force: true }) };
 }
 

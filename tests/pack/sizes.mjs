@@ -24,7 +24,7 @@ const row = (what, buffers) => {
 };
 const read = (f) => readFileSync(join(dist, f));
 
-const library = readdirSync(dist).filter((f) => f.endsWith('.js') && !['cli.js', 'three.js', 'export.js'].includes(f));
+const library = readdirSync(dist).filter((f) => f.endsWith('.js') && !['cli.js', 'demoServer.js', 'three.js', 'export.js'].includes(f));
 const exporters = ['export.js', ...readdirSync(join(dist, 'export')).filter((f) => f.endsWith('.js')).map((f) => `export/${f}`)];
 row('`dist/wasm/hodt.wasm`', [read('wasm/hodt.wasm')]);
 row('`dist/wasm/hodt.mjs` (Emscripten glue)', [read('wasm/hodt.mjs')]);

@@ -1,4 +1,5 @@
-// Vite config of the demo (web/demo). Used by scripts/serve.mjs and tests/e2e.
+// Vite config of the demo (web/demo). Used by scripts/serve.mjs, tests/e2e and
+// scripts/build.mjs (the static site: build/demo, shipped as dist/demo).
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vite';
 
@@ -7,6 +8,9 @@ const repo = here('../../');
 
 export default defineConfig({
   root: here('.'),
+  // Relative URLs: the built site works from any static host, in any subfolder,
+  // and from the npm package (`npx hodt demo`).
+  base: './',
   resolve: {
     alias: [
       // The demo uses the library only through its public entry points.

@@ -2,7 +2,7 @@
 // `hodt` on the command line: the core's CLI (core/src/cli.cpp) run in wasm, with
 // Node's file system to read FILE or standard input (GeoTIFF and LAS/LAZ through
 // hodt/loaders) and to write --output files (the mesh formats with hodt/export's
-// writers), and stderr for progress.
+// writers), and stderr for progress. `hodt demo` serves the teaching demo.
 import { closeSync, openSync, readFileSync, writeFileSync, writeSync } from 'node:fs';
 import { exportMeshParts, type MeshData, type MeshFormat } from './export.js';
 import { loadHodt } from './index.js';
@@ -32,8 +32,25 @@ function writeMesh(path: string, format: MeshFormat, mesh: MeshData): void {
   }
 }
 
-const hodt = await loadHodt();
 const args = process.argv.slice(2);
+// `hodt demo`: the teaching demo shipped in the package, served by Node alone.
+if (args[0] === 'demo') {
+  const { demoOptions, serveDemo } = await import('./demoServer.js');
+  const options = demoOptions(args.slice(1));
+  if (typeof options === 'string') {
+    process.stderr.write(`${options}\n`);
+    process.exit(2);
+  }
+  try {
+    await serveDemo(options);
+    process.exit(0);
+  } catch (e) {
+    const error = failure(e) as NodeJS.ErrnoException;
+    process.stderr.write(`hodt demo: cannot serve on port ${options.port}: ${error.code ?? error.message}\n`);
+    process.exit(1);
+  }
+}
+const hodt = await loadHodt();
 const read = (path: string): Uint8Array | Error => {
   try {
     return readFileSync(path === '-' ? 0 : path); // bytes: the core decodes text itself

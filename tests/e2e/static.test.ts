@@ -1,0 +1,71 @@
+// The demo as a static site (npm run build: build/demo, relative paths), served
+// from a subfolder of a plain static host, as a teacher would put it on a school
+// server: the page renders, solves, and a copied link reproduces the instance.
+import { existsSync } from 'node:fs';
+import { readFile } from 'node:fs/promises';
+import { createServer, type Server } from 'node:http';
+import type { AddressInfo } from 'node:net';
+import { extname, join } from 'node:path';
+import { afterAll, beforeAll, describe, expect, test } from 'vitest';
+import { hooks, launchChromium, openPage, root, screenshot, settled, type Demo } from './harness.ts';
+
+const SUBFOLDER = '/courses/geometry/hodt/';
+const TYPES: Record<string, string> = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.wasm': 'application/wasm' };
+
+let demo: Demo;
+let server: Server;
+beforeAll(async () => {
+  const dir = `${root}build/demo`;
+  if (!existsSync(`${dir}/index.html`)) throw new Error('build/demo is missing: run `npm run build`');
+  server = createServer(async (req, res) => {
+    const path = new URL(req.url ?? '/', 'http://x').pathname;
+    if (!path.startsWith(SUBFOLDER)) return void res.writeHead(404).end();
+    const rest = path.slice(SUBFOLDER.length) || 'index.html';
+    try {
+      const body = await readFile(join(dir, rest));
+      res.writeHead(200, { 'content-type': TYPES[extname(rest)] ?? 'application/octet-stream' }).end(body);
+    } catch {
+      res.writeHead(404).end();
+    }
+  });
+  await new Promise<void>((resolve) => server.listen(0, '127.0.0.1', resolve));
+  const browser = await launchChromium();
+  demo = {
+    url: `http://127.0.0.1:${(server.address() as AddressInfo).port}${SUBFOLDER}`,
+    browser,
+    close: async () => {
+      await browser.close();
+      await new Promise<void>((resolve) => server.close(() => resolve()));
+    },
+  };
+});
+afterAll(async () => {
+  await demo?.close();
+});
+
+describe('static build', () => {
+  test('served from a subfolder: renders, solves, and a copied link reproduces the instance', async () => {
+    const { page, context, errors } = await openPage(demo);
+    const before = (await hooks(page)).solves;
+    await page.selectOption('#objective', 'min-local-minima');
+    await settled(page, before);
+    const first = await hooks(page);
+    expect(first.points).toBeGreaterThan(100);
+    expect(first.solution?.value).toBeTypeOf('number');
+    await page.click('#copy-link');
+    await expect.poll(() => page.locator('#link').inputValue()).toMatch(/#v1=[A-Za-z0-9_-]+$/);
+    const link = await page.locator('#link').inputValue();
+    expect(link.startsWith(demo.url)).toBe(true);
+    const other = await openPage(demo, link.slice(link.indexOf('#')));
+    const second = await hooks(other.page);
+    expect(second.pointsCsv).toBe(first.pointsCsv);
+    expect(second.objective).toBe('min-local-minima');
+    expect(second.solution?.value).toBe(first.solution?.value);
+    expect(second.choice).toBe(first.choice);
+    await screenshot(other.page, 'demo-static.png');
+    expect(errors).toEqual([]);
+    expect(other.errors).toEqual([]);
+    await context.close();
+    await other.context.close();
+  });
+});
