@@ -231,10 +231,14 @@ describe('teaching views', () => {
   test('order k: the regions, fixed edges and optimum are the library’s, and regions merge as k grows', async () => {
     const { page, context, errors } = await openPage(demo);
     await openTeach(page, 'order');
+    // The view shows the sidebar's objective; choosing another moves the sidebar too.
+    expect((await teachView(page, 'order')).objective).toBe((await hooks(page)).objective);
+    await page.selectOption('#order-objective', 'min-local-minima');
+    await expect.poll(async () => (await hooks(page)).objective).toBe('min-local-minima');
     const at = async (k: number) => {
       await page.waitForFunction((n) => {
         const v = window.__hodtTeach!.view('order')!;
-        return v.order === n && (v.value !== null || v.failure !== null);
+        return v.order === n && v.objective === 'min-local-minima' && (v.value !== null || v.failure !== null);
       }, k, { timeout: 60_000 });
       return teachView(page, 'order');
     };
@@ -263,6 +267,22 @@ describe('teaching views', () => {
     await page.waitForTimeout(250);
     await screenshot(page, 'teach-order.png');
     keep('teach-order.png');
+    expect(errors).toEqual([]);
+    await context.close();
+  });
+
+  test('the lesson route opens each tab in order, and every view has a legend', async () => {
+    const { page, context, errors } = await openPage(demo);
+    await page.click('.segmented button[data-view="teach"]');
+    await page.click('#teach-lesson summary');
+    for (const tab of ['brute', 'sat', 'baker', 'gadget', 'order']) {
+      await page.click(`#lesson-${tab}`);
+      await page.waitForFunction((t) => window.__hodtTeach?.visible && window.__hodtTeach.tab === t, tab);
+      expect(await page.locator(`#teach-${tab} .teach-legend li`).count(), tab).toBeGreaterThan(2);
+    }
+    // The 2-SAT step loaded its example (a 60-point jittered grid) into the page.
+    await expect.poll(async () => (await hooks(page)).points).toBe(60);
+    await screenshot(page, 'teach-lesson.png');
     expect(errors).toEqual([]);
     await context.close();
   });

@@ -399,6 +399,16 @@ export function startApp(hodt: Hodt): void {
       commit(next, label, { reframe: true, select: null });
     },
     showViews: () => setView('split'),
+    choose: (change) => {
+      const next = { ...settings, ...change };
+      if (next.objective === settings.objective && next.epsilon === settings.epsilon) return;
+      setSettings(next);
+      toolbar.hideLink();
+      urlSync.changed();
+      updateUseful();
+      teach.changed();
+      solve(true);
+    },
     solver: createSolverClient(),
   });
 

@@ -11,7 +11,7 @@ import { formatValue, OBJECTIVE_HELP } from '../ui/objectiveHelp.ts';
 import { FLIPPED_COLOR } from '../views/palette.ts';
 import { withAlpha } from '../views/plan/planRenderer.ts';
 import { createFittedCanvas, drawBackdrop, layerColor, type FittedCanvas } from './canvas.ts';
-import { button, createPane, paperLink, type TeachContext, type TeachView } from './common.ts';
+import { button, createPane, legend, paperLink, type TeachContext, type TeachView } from './common.ts';
 import { readStructure, trianglesOf, type QuadStructure } from './structure.ts';
 import { StepPlayer } from './stepPlayer.ts';
 
@@ -53,6 +53,8 @@ export function createBakerView(ctx: TeachContext): TeachView {
   for (const el of [objective, epsilon]) {
     el.addEventListener('change', () => {
       stale = true;
+      // The sidebar follows the view's objective and epsilon.
+      ctx.choose({ objective: objective.value as State['objective'], epsilon: Math.min(0.95, Math.max(0.05, Number(epsilon.value) || 0.34)) });
       update();
     });
   }
@@ -81,6 +83,12 @@ export function createBakerView(ctx: TeachContext): TeachView {
     table,
     libraryLine,
     layerKey,
+    legend([
+      ['dot', layerColor(0, 2), 'a quad, coloured by its layer (key above: hull side first)'],
+      ['line', 'rgba(30, 42, 38, 0.55)', 'two quads sharing an edge (a term of the objective joins them)'],
+      ['dash', CUT_COLOR, 'cut by this shift: the terms across it are dropped'],
+      ['line', FLIPPED_COLOR, 'outline: a quad this shift’s (or the result’s) triangulation flips'],
+    ]),
   );
   const canvas = createFittedCanvas(main, (c, f) => draw(c, f), 'Quad graph coloured by layer, with the edges cut by the current shift');
 
@@ -88,6 +96,13 @@ export function createBakerView(ctx: TeachContext): TeachView {
   let stale = true;
   let state: State | null = null;
   let token = 0;
+
+  /** The sidebar's objective (when this view shows it) and epsilon. */
+  function follow(): void {
+    const page = ctx.settings();
+    if ((OBJECTIVES as readonly string[]).includes(page.objective)) objective.value = page.objective;
+    epsilon.value = String(page.epsilon);
+  }
 
   function update(): void {
     if (!active || !stale) return;
@@ -289,10 +304,7 @@ export function createBakerView(ctx: TeachContext): TeachView {
     root,
     activate() {
       active = true;
-      if (!state) {
-        const page = ctx.settings();
-        if ((OBJECTIVES as readonly string[]).includes(page.objective)) objective.value = page.objective;
-      }
+      follow();
       update();
       canvas.redraw();
     },
@@ -301,6 +313,7 @@ export function createBakerView(ctx: TeachContext): TeachView {
       player.stop();
     },
     changed() {
+      follow();
       stale = true;
       token++;
       update();

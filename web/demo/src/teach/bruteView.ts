@@ -4,10 +4,10 @@
 import { OBJECTIVE_IDS, type ObjectiveId, type Terrain } from 'hodt';
 import { h } from '../ui/dom.ts';
 import { formatValue, OBJECTIVE_HELP } from '../ui/objectiveHelp.ts';
-import { EDGE_SHAPE_COLORS, EXTREMUM_COLORS, FLIPPED_COLOR, QUAD_COLOR, VERTEX_CLASS_COLORS } from '../views/palette.ts';
+import { EDGE_COLORS, EDGE_SHAPE_COLORS, EXTREMUM_COLORS, FLIPPED_COLOR, QUAD_COLOR, VERTEX_CLASS_COLORS, VERTEX_COLORS } from '../views/palette.ts';
 import { withAlpha } from '../views/plan/planRenderer.ts';
 import { fitTransform, toScreenX, toScreenY } from '../views/plan/planTransform.ts';
-import { button, createPane, paperLink, smallTerrain, type TeachContext, type TeachView } from './common.ts';
+import { button, createPane, legend, paperLink, smallTerrain, type TeachContext, type TeachView } from './common.ts';
 import { readStructure, trianglesOf, type QuadStructure } from './structure.ts';
 
 /** Up to 2^10 = 1024 thumbnails. */
@@ -37,7 +37,17 @@ export function createBruteView(ctx: TeachContext): TeachView {
     ctx.load(smallTerrain(ctx.hodt, 16, 7, 7, 11), 'load a small terrain'),
   );
   const histogram = h('div', { class: 'brute-histogram', id: 'brute-histogram' });
-  side.append(status, h('div', { class: 'buttons' }, small), histogram);
+  side.append(
+    status,
+    h('div', { class: 'buttons' }, small),
+    histogram,
+    legend([
+      ['fill', FLIPPED_COLOR, 'a quad using its other diagonal (amber); teal: its Delaunay diagonal'],
+      ['line', EDGE_COLORS.convex, 'convex edge; blue reflex, grey flat, dark the hull'],
+      ['dot', VERTEX_COLORS.mixed, 'vertex by class (the page’s colours); large dark blue / dark red: a pit / a peak'],
+      ['fill', '#d4a017', 'gold frame: an optimal triangulation (the cards are sorted, best first)'],
+    ]),
+  );
   const grid = h('div', { class: 'brute-grid', id: 'brute-grid' });
   main.classList.add('scroll');
   caption.hidden = true;

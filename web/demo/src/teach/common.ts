@@ -16,6 +16,9 @@ export interface TeachContext {
   load(points: Float64Array, label: string, objective?: ObjectiveId): void;
   /** Switches the page to its 3D and plan views. */
   showViews(): void;
+  /** Sets the sidebar's objective or epsilon (a view's selector changed): the
+   * page re-solves and every view hears changed(). */
+  choose(change: { objective?: ObjectiveId; epsilon?: number }): void;
   /** The teaching views' own solver worker (the page's keeps running). */
   solver: SolverClient;
 }
@@ -52,6 +55,20 @@ export function createPane(id: string, title: string, lead: (Node | string)[]): 
 
 /** Colours of strongly connected components (no red: red marks contradictions). */
 export const COMPONENT_COLORS = ['#1f77b4', '#9467bd', '#2ca02c', '#17becf', '#8c564b', '#e377c2', '#bcbd22', '#3f51b5'] as const;
+
+/** A mark in a view's legend: a filled area, a line, a dashed line, a cross, a dot. */
+export type LegendMark = 'fill' | 'line' | 'dash' | 'cross' | 'dot';
+
+/** The legend of a view: every mark it draws, with what it means. */
+export function legend(items: readonly (readonly [LegendMark, string, string])[]): HTMLUListElement {
+  return h(
+    'ul',
+    { class: 'teach-legend' },
+    ...items.map(([mark, color, label]) =>
+      h('li', {}, mark === 'cross' ? h('i', { class: 'cross', style: `color: ${color}` }, '✕') : h('i', { class: mark === 'line' ? 'line thick' : mark, style: `--c: ${color}` }), label),
+    ),
+  );
+}
 
 export function button(id: string, label: string, title: string, onClick: () => void, secondary = true): HTMLButtonElement {
   const b = h('button', { type: 'button', id, class: secondary ? 'secondary small' : 'small', title }, label);

@@ -4,7 +4,7 @@ import type { Solution, Terrain } from 'hodt';
 import { h } from '../ui/dom.ts';
 import { EDGE_COLORS } from '../views/palette.ts';
 import { CATEGORICAL, createFittedCanvas, type FittedCanvas } from './canvas.ts';
-import { button, createPane, paperLink, type TeachContext, type TeachView } from './common.ts';
+import { button, createPane, legend, paperLink, type TeachContext, type TeachView } from './common.ts';
 import { clauseTrue, countSatisfied, formatClause, FormulaError, maxSatisfiable, parseFormula, type Formula } from './formula.ts';
 import { buildGadget, LayoutError, type Gadget } from './gadget.ts';
 import { canonicalStates, cellStates, choiceFor, mapCells, readBack, type CellQuads, type GadgetCertificate, type Readback } from './gadgetCheck.ts';
@@ -59,6 +59,14 @@ export function createGadgetView(ctx: TeachContext): TeachView {
     verdict,
     vars,
     clauses,
+    legend([
+      ['fill', CATEGORICAL[0]!, 'a variable’s pool and its tentacles (one colour per variable)'],
+      ['line', EDGE_COLORS.convex, 'a quad using its convex diagonal'],
+      ['line', EDGE_COLORS.reflex, 'a quad using its reflex diagonal'],
+      ['dash', '#111', 'a tentacle cell that skips a column'],
+      ['line', '#17804a', 'clause edge that scores (its clause is satisfied); grey: it does not'],
+      ['dot', 'rgba(90, 100, 96, 0.6)', 'coating points (high, they fix everything else)'],
+    ]),
     honesty,
   );
   const canvas = createFittedCanvas(main, (c, f) => draw(c, f), 'The hardness gadget: variable pools, tentacles and clause edges');

@@ -11,7 +11,7 @@ import { formatValue, OBJECTIVE_HELP } from '../ui/objectiveHelp.ts';
 import { FLIPPED_COLOR } from '../views/palette.ts';
 import { withAlpha } from '../views/plan/planRenderer.ts';
 import { createFittedCanvas, type FittedCanvas } from './canvas.ts';
-import { button, COMPONENT_COLORS, createPane, paperLink, type TeachContext, type TeachView } from './common.ts';
+import { button, COMPONENT_COLORS, createPane, legend, paperLink, type TeachContext, type TeachView } from './common.ts';
 import { StepPlayer } from './stepPlayer.ts';
 
 const MAX_ORDER = 8;
@@ -38,9 +38,9 @@ export function createOrderView(ctx: TeachContext): TeachView {
   ]);
   const objective = h('select', { id: 'order-objective', 'aria-label': 'Objective' });
   objective.replaceChildren(...OBJECTIVE_IDS.map((id) => h('option', { value: id }, OBJECTIVE_HELP[id].name)));
-  objective.value = 'min-local-minima';
   objective.addEventListener('change', () => {
     stale = true;
+    ctx.choose({ objective: objective.value as ObjectiveId }); // the sidebar follows
     update();
   });
   const counter = h('span', { class: 'teach-counter', id: 'order-counter' });
@@ -62,16 +62,15 @@ export function createOrderView(ctx: TeachContext): TeachView {
   );
   const status = h('p', { class: 'teach-status', id: 'order-status', 'aria-live': 'polite' });
   const table = h('table', { class: 'teach-table', id: 'order-table' });
-  const legend = h(
-    'ul',
-    { class: 'teach-legend' },
-    h('li', {}, h('i', { class: 'line thick', style: `--c: ${FIXED_COLOR}` }), 'fixed edge: in every k-OD triangulation'),
-    h('li', {}, h('i', { class: 'line', style: `--c: #8a9691` }), 'useful edge that is not fixed (dashed)'),
-    h('li', {}, h('i', { class: 'fill', style: `--c: ${COMPONENT_COLORS[0]}` }), 'a region with a choice; its number: its k-OD triangulations (+: at least)'),
-    h('li', {}, h('i', { class: 'line thick', style: `--c: ${FLIPPED_COLOR}` }), 'edge of the optimum that is not a Delaunay edge'),
-    h('li', {}, h('i', { class: 'fill', style: `--c: ${MINIMUM_COLOR}` }), 'local minimum of the optimum (hollow: of Delaunay, gone at this k)'),
-  );
-  side.append(h('div', { class: 'row' }, objective), controls, status, table, legend);
+  const key = legend([
+    ['line', FIXED_COLOR, 'fixed edge: in every k-OD triangulation'],
+    ['dash', '#8a9691', 'useful edge that is not fixed'],
+    ['fill', COMPONENT_COLORS[0]!, 'a region with a choice; its number: its k-OD triangulations (+: at least)'],
+    ['fill', '#d5dad7', 'triangles with no choice at this k'],
+    ['line', FLIPPED_COLOR, 'edge of the optimum that is not a Delaunay edge'],
+    ['dot', MINIMUM_COLOR, 'local minimum of the optimum (a ring: one of Delaunay’s, gone at this k)'],
+  ]);
+  side.append(h('div', { class: 'row' }, objective), controls, status, table, key);
   const canvas = createFittedCanvas(main, (c, f) => draw(c, f), 'Regions of order k, fixed and useful edges, and the optimal triangulation');
 
   let active = false;
@@ -266,6 +265,7 @@ export function createOrderView(ctx: TeachContext): TeachView {
     root,
     activate() {
       active = true;
+      objective.value = ctx.settings().objective;
       update();
       canvas.redraw();
     },
@@ -274,6 +274,7 @@ export function createOrderView(ctx: TeachContext): TeachView {
       player.stop();
     },
     changed() {
+      objective.value = ctx.settings().objective;
       stale = true;
       update();
     },

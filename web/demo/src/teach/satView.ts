@@ -9,7 +9,7 @@ import { CRITICAL_COLOR, FLIPPED_COLOR, QUAD_COLOR } from '../views/palette.ts';
 import { withAlpha } from '../views/plan/planRenderer.ts';
 import { createFittedCanvas, drawBackdrop, trianglePath, type FittedCanvas } from './canvas.ts';
 import { jitteredGridPoints } from '../terrains/jitteredGrid.ts';
-import { button, COMPONENT_COLORS, createPane, paperLink, type TeachContext, type TeachView } from './common.ts';
+import { button, COMPONENT_COLORS, createPane, legend, paperLink, type TeachContext, type TeachView } from './common.ts';
 import { readStructure, trianglesOf, type QuadStructure } from './structure.ts';
 import { StepPlayer } from './stepPlayer.ts';
 
@@ -48,6 +48,7 @@ export function createSatView(ctx: TeachContext): TeachView {
   objective.replaceChildren(...PAIR_OBJECTIVES.map((id) => h('option', { value: id }, OBJECTIVE_HELP[id].name)));
   objective.addEventListener('change', () => {
     stale = true;
+    ctx.choose({ objective: objective.value as PairObjective }); // the sidebar follows
     update();
   });
   // A jittered grid: its many adjacent quads give 2-SAT instances with clauses
@@ -75,24 +76,29 @@ export function createSatView(ctx: TeachContext): TeachView {
     button('sat-next', 'Next ▶', 'Next step', () => player.go(player.pos + 1)),
     counter,
   );
-  const legend = h(
-    'ul',
-    { class: 'teach-legend' },
-    item('fill', QUAD_COLOR, 'forced to keep its Delaunay diagonal'),
-    item('fill', FLIPPED_COLOR, 'forced (or chosen) to flip'),
-    item('fill', BLOCK_COLOR, 'both diagonals over t: no'),
-    item('line', '#4d5753', 'clauses between two quads: each diagonal implies one of the other’s (arrows both ways)'),
-    item('line', COMPONENT_COLORS[0]!, 'quads whose diagonals lie in one strongly connected component share a colour'),
-    item('cross', BLOCK_COLOR, 'both diagonals of a quad in one component: unsatisfiable'),
-    item('line', CRITICAL_COLOR, 'at the end: the worst pair of triangles (the optimum)'),
-  );
-  side.append(h('div', { class: 'row' }, objective, small), line, controls, status, list, legend);
+  const key = legend([
+    ['fill', QUAD_COLOR, 'forced to keep its Delaunay diagonal'],
+    ['fill', FLIPPED_COLOR, 'forced (or chosen) to flip'],
+    ['fill', BLOCK_COLOR, 'both diagonals over t: no'],
+    ['line', '#4d5753', 'clauses between two quads: each diagonal implies one of the other’s (arrows both ways)'],
+    ['dot', COMPONENT_COLORS[0]!, 'quads whose diagonals lie in one strongly connected component share a colour'],
+    ['cross', BLOCK_COLOR, 'both diagonals of a quad in one component: unsatisfiable'],
+    ['fill', CRITICAL_COLOR, 'at the end: the worst pair of triangles (the optimum)'],
+    ['line', '#1f77b4', 'number line: the interval still searched (blue), thresholds answered yes (green) and no (red)'],
+  ]);
+  side.append(h('div', { class: 'row' }, objective, small), line, controls, status, list, key);
   const canvas = createFittedCanvas(main, (c, f) => draw(c, f), '2-SAT step: the terrain, forced quads, pairs over the threshold and the implication graph');
 
   let active = false;
   let stale = true;
   let state: State | null = null;
   let error: string | null = null;
+
+  /** The sidebar's objective, when it is one this view shows. */
+  function follow(): void {
+    const page = ctx.settings().objective;
+    if (isPairObjective(page)) objective.value = page;
+  }
 
   function update(): void {
     if (!active || !stale) return;
@@ -360,8 +366,7 @@ export function createSatView(ctx: TeachContext): TeachView {
     root,
     activate() {
       active = true;
-      const page = ctx.settings().objective;
-      if (isPairObjective(page) && page !== objective.value && !state) objective.value = page;
+      follow();
       update();
       canvas.redraw();
     },
@@ -370,6 +375,7 @@ export function createSatView(ctx: TeachContext): TeachView {
       player.stop();
     },
     changed() {
+      follow();
       stale = true;
       update();
     },
@@ -419,7 +425,3 @@ function arrowHead(c: CanvasRenderingContext2D, x0: number, y0: number, x1: numb
   c.fill();
 }
 
-function item(kind: 'fill' | 'line' | 'cross', color: string, label: string): HTMLLIElement {
-  const mark = kind === 'cross' ? h('i', { class: 'cross', style: `color: ${color}` }, '✕') : h('i', { class: kind === 'fill' ? 'fill' : 'line thick', style: `--c: ${color}` });
-  return h('li', {}, mark, label);
-}

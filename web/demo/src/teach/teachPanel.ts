@@ -4,6 +4,7 @@ import { createBakerView } from './bakerView.ts';
 import { createBruteView } from './bruteView.ts';
 import type { TeachContext, TeachView } from './common.ts';
 import { createGadgetView } from './gadgetView.ts';
+import { createLesson } from './lesson.ts';
 import { createOrderView } from './orderView.ts';
 import { createSatView } from './satView.ts';
 
@@ -26,7 +27,7 @@ export function createTeachPanel(ctx: TeachContext): TeachPanel {
     b.addEventListener('click', () => select(v.id as TeachTab));
     return b;
   });
-  root.append(h('nav', { class: 'teach-tabs', role: 'tablist', 'aria-label': 'Teaching views' }, ...tabs), ...views.map((v) => v.root));
+  root.append(h('nav', { class: 'teach-tabs', role: 'tablist', 'aria-label': 'Teaching views' }, ...tabs), createLesson((tab) => select(tab)), ...views.map((v) => v.root));
   let visible = false;
   let current: TeachTab = 'sat';
 
