@@ -11,7 +11,7 @@ import { formatValue, OBJECTIVE_HELP } from '../ui/objectiveHelp.ts';
 import { FLIPPED_COLOR } from '../views/palette.ts';
 import { withAlpha } from '../views/plan/planRenderer.ts';
 import { createFittedCanvas, drawBackdrop, layerColor, type FittedCanvas } from './canvas.ts';
-import { button, createPane, legend, paperLink, type TeachContext, type TeachView } from './common.ts';
+import { createPane, legend, paperLink, stepControls, type TeachContext, type TeachView } from './common.ts';
 import { readStructure, trianglesOf, type QuadStructure } from './structure.ts';
 import { StepPlayer } from './stepPlayer.ts';
 
@@ -59,18 +59,13 @@ export function createBakerView(ctx: TeachContext): TeachView {
     });
   }
   const player = new StepPlayer(() => last(), () => render(), 1400);
-  const play = button('baker-play', '▶ Play', 'Step through the shifts', () => player.toggle());
-  player.attach(play);
   const counter = h('span', { class: 'teach-counter', id: 'baker-counter' });
-  const controls = h(
-    'div',
-    { class: 'teach-controls' },
-    button('baker-first', 'Start', 'Layers only', () => player.go(0)),
-    button('baker-prev', '◀ Prev', 'Previous shift', () => player.go(player.pos - 1)),
-    play,
-    button('baker-next', 'Next ▶', 'Next shift', () => player.go(player.pos + 1)),
-    counter,
-  );
+  const controls = stepControls('baker', player, counter, {
+    first: ['Start', 'Layers only'],
+    prev: ['◀ Prev', 'Previous shift'],
+    next: ['Next ▶', 'Next shift'],
+    play: 'Step through the shifts',
+  });
   const status = h('p', { class: 'teach-status', id: 'baker-status', 'aria-live': 'polite' });
   const table = h('table', { class: 'teach-table', id: 'baker-table' });
   const libraryLine = h('p', { class: 'teach-note', id: 'baker-library' });

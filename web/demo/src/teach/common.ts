@@ -2,6 +2,8 @@ import type { Hodt, ObjectiveId, Terrain } from 'hodt';
 import type { SolverClient } from '../solver/solverClient.ts';
 import type { SolveSettings } from '../ui/objectivePanel.ts';
 import { h } from '../ui/dom.ts';
+import { OBJECTIVE_HELP } from '../ui/objectiveHelp.ts';
+import type { StepPlayer } from './stepPlayer.ts';
 import { seededRandom } from '../terrains/rng.ts';
 
 /** What the teaching views may use of the page. */
@@ -67,6 +69,38 @@ export function legend(items: readonly (readonly [LegendMark, string, string])[]
     ...items.map(([mark, color, label]) =>
       h('li', {}, mark === 'cross' ? h('i', { class: 'cross', style: `color: ${color}` }, '✕') : h('i', { class: mark === 'line' ? 'line thick' : mark, style: `--c: ${color}` }), label),
     ),
+  );
+}
+
+/** The objective picker of a view: choosing one moves the sidebar too
+ * (ctx.choose, which tells every view), then the view updates. */
+export function objectiveSelect(ctx: TeachContext, id: string, ids: readonly ObjectiveId[], label: string, update: () => void): HTMLSelectElement {
+  const select = h('select', { id, 'aria-label': label });
+  select.replaceChildren(...ids.map((o) => h('option', { value: o }, OBJECTIVE_HELP[o].name)));
+  select.addEventListener('change', () => {
+    ctx.choose({ objective: select.value as ObjectiveId });
+    update();
+  });
+  return select;
+}
+
+/** First / Prev / Play / Next buttons and a counter, driving a StepPlayer. */
+export function stepControls(
+  prefix: string,
+  player: StepPlayer,
+  counter: HTMLElement,
+  labels: { first: [string, string]; prev: [string, string]; next: [string, string]; play: string },
+): HTMLElement {
+  const play = button(`${prefix}-play`, '▶ Play', labels.play, () => player.toggle());
+  player.attach(play);
+  return h(
+    'div',
+    { class: 'teach-controls' },
+    button(`${prefix}-first`, labels.first[0], labels.first[1], () => player.go(0)),
+    button(`${prefix}-prev`, labels.prev[0], labels.prev[1], () => player.go(player.pos - 1)),
+    play,
+    button(`${prefix}-next`, labels.next[0], labels.next[1], () => player.go(player.pos + 1)),
+    counter,
   );
 }
 

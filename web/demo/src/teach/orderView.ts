@@ -11,7 +11,7 @@ import { formatValue, OBJECTIVE_HELP } from '../ui/objectiveHelp.ts';
 import { FLIPPED_COLOR } from '../views/palette.ts';
 import { withAlpha } from '../views/plan/planRenderer.ts';
 import { createFittedCanvas, type FittedCanvas } from './canvas.ts';
-import { button, COMPONENT_COLORS, createPane, legend, paperLink, type TeachContext, type TeachView } from './common.ts';
+import { COMPONENT_COLORS, createPane, legend, objectiveSelect, paperLink, stepControls, type TeachContext, type TeachView } from './common.ts';
 import { StepPlayer } from './stepPlayer.ts';
 
 const MAX_ORDER = 8;
@@ -36,11 +36,8 @@ export function createOrderView(ctx: TeachContext): TeachView {
     paperLink('4.3'),
     '.',
   ]);
-  const objective = h('select', { id: 'order-objective', 'aria-label': 'Objective' });
-  objective.replaceChildren(...OBJECTIVE_IDS.map((id) => h('option', { value: id }, OBJECTIVE_HELP[id].name)));
-  objective.addEventListener('change', () => {
+  const objective = objectiveSelect(ctx, 'order-objective', OBJECTIVE_IDS, 'Objective', () => {
     stale = true;
-    ctx.choose({ objective: objective.value as ObjectiveId }); // the sidebar follows
     update();
   });
   const counter = h('span', { class: 'teach-counter', id: 'order-counter' });
@@ -49,17 +46,12 @@ export function createOrderView(ctx: TeachContext): TeachView {
     stale = true;
     update();
   }, 2200);
-  const play = button('order-play', '▶ Play', 'Step k from 1 to 8', () => player.toggle());
-  player.attach(play);
-  const controls = h(
-    'div',
-    { class: 'teach-controls' },
-    button('order-first', 'k = 1', 'First order', () => player.go(0)),
-    button('order-prev', '◀ k − 1', 'Lower order', () => player.go(player.pos - 1)),
-    play,
-    button('order-next', 'k + 1 ▶', 'Higher order', () => player.go(player.pos + 1)),
-    counter,
-  );
+  const controls = stepControls('order', player, counter, {
+    first: ['k = 1', 'First order'],
+    prev: ['◀ k − 1', 'Lower order'],
+    next: ['k + 1 ▶', 'Higher order'],
+    play: 'Step k from 1 to 8',
+  });
   const status = h('p', { class: 'teach-status', id: 'order-status', 'aria-live': 'polite' });
   const table = h('table', { class: 'teach-table', id: 'order-table' });
   const key = legend([

@@ -9,7 +9,7 @@ import { CRITICAL_COLOR, FLIPPED_COLOR, QUAD_COLOR } from '../views/palette.ts';
 import { withAlpha } from '../views/plan/planRenderer.ts';
 import { createFittedCanvas, drawBackdrop, trianglePath, type FittedCanvas } from './canvas.ts';
 import { jitteredGridPoints } from '../terrains/jitteredGrid.ts';
-import { button, COMPONENT_COLORS, createPane, legend, paperLink, type TeachContext, type TeachView } from './common.ts';
+import { button, COMPONENT_COLORS, createPane, legend, objectiveSelect, paperLink, stepControls, type TeachContext, type TeachView } from './common.ts';
 import { readStructure, trianglesOf, type QuadStructure } from './structure.ts';
 import { StepPlayer } from './stepPlayer.ts';
 
@@ -44,11 +44,8 @@ export function createSatView(ctx: TeachContext): TeachView {
     paperLink('2.1'),
     '.',
   ]);
-  const objective = h('select', { id: 'sat-objective', 'aria-label': 'Pair objective' });
-  objective.replaceChildren(...PAIR_OBJECTIVES.map((id) => h('option', { value: id }, OBJECTIVE_HELP[id].name)));
-  objective.addEventListener('change', () => {
+  const objective = objectiveSelect(ctx, 'sat-objective', PAIR_OBJECTIVES, 'Pair objective', () => {
     stale = true;
-    ctx.choose({ objective: objective.value as PairObjective }); // the sidebar follows
     update();
   });
   // A jittered grid: its many adjacent quads give 2-SAT instances with clauses
@@ -65,17 +62,12 @@ export function createSatView(ctx: TeachContext): TeachView {
   const list = h('ol', { class: 'sat-steps', id: 'sat-steps' });
   const counter = h('span', { class: 'teach-counter', id: 'sat-counter' });
   const player = new StepPlayer(() => last(), () => render(), 1300);
-  const play = button('sat-play', '▶ Play', 'Step through the search', () => player.toggle());
-  player.attach(play);
-  const controls = h(
-    'div',
-    { class: 'teach-controls' },
-    button('sat-first', 'Start', 'Back to the start', () => player.go(0)),
-    button('sat-prev', '◀ Prev', 'Previous step', () => player.go(player.pos - 1)),
-    play,
-    button('sat-next', 'Next ▶', 'Next step', () => player.go(player.pos + 1)),
-    counter,
-  );
+  const controls = stepControls('sat', player, counter, {
+    first: ['Start', 'Back to the start'],
+    prev: ['◀ Prev', 'Previous step'],
+    next: ['Next ▶', 'Next step'],
+    play: 'Step through the search',
+  });
   const key = legend([
     ['fill', QUAD_COLOR, 'forced to keep its Delaunay diagonal'],
     ['fill', FLIPPED_COLOR, 'forced (or chosen) to flip'],
