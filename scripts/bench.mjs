@@ -11,6 +11,7 @@ import Delaunator from 'delaunator';
 import { loadHodt } from '../dist/index.js';
 import { loadModule } from '../dist/load.js';
 import { measureEditsInChromium } from '../bench/edit_chromium.mjs';
+import { runCliEndToEnd } from '../bench/cli_end_to_end.mjs';
 import { runOrderK } from '../bench/order_k.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
@@ -195,6 +196,8 @@ for (const [kind, make] of [['grid', (w) => KINDS.grid(w * w)], ['saddle', saddl
 }
 // Order k: every objective, orders 1..8 (bench/order_k.mjs).
 summary.orderK = await runOrderK({ root, tmp, hodt: await loadHodt(), log, quick });
+// The CLI end to end, wasm against native (bench/cli_end_to_end.mjs).
+if (!onlyKinds) summary.cliEndToEnd = runCliEndToEnd({ root, tmp, log, quick });
 rmSync(tmp, { recursive: true, force: true });
 
 const at = (kind, n) => summary.runs.find((r) => r.kind === kind && r.n >= n * 0.99 && r.n <= n * 1.01);

@@ -9,6 +9,7 @@
 
 #include "hodt/domain.hpp"
 #include "hodt/error.hpp"
+#include "hodt/parse_number.hpp"
 #include "hodt/text_encoding.hpp"
 
 namespace hodt {
@@ -33,26 +34,6 @@ std::string shorten(std::string_view s) {
   std::string t(s.substr(0, 40));
   if (s.size() > 40) t += "...";
   return "'" + t + "'";
-}
-
-// Parses the whole token as a double; false if it is not a number. strtod rounds
-// correctly however many digits there are (glibc natively, musl in wasm), and takes
-// a leading '+' and exponents such as 1E+03.
-bool parse_double(std::string_view tok, double& out) {
-  if (tok.empty()) return false;
-  char small[72];
-  std::string large;
-  const char* buf = small;
-  if (tok.size() < sizeof small) {
-    std::copy(tok.begin(), tok.end(), small);
-    small[tok.size()] = 0;
-  } else {
-    large.assign(tok);
-    buf = large.c_str();
-  }
-  char* end = nullptr;
-  out = std::strtod(buf, &end);
-  return end == buf + tok.size();
 }
 
 std::vector<std::string_view> split_fields(std::string_view line) {

@@ -1,5 +1,7 @@
 #include "hodt/report.hpp"
 
+#include <charconv>
+
 #include <algorithm>
 #include <cmath>
 
@@ -65,9 +67,20 @@ std::string ms_json(double ms) { return format_number(std::round(ms * 1000) / 10
 std::string with_triangles_json(std::string s, const std::vector<uint32_t>& tris, const std::string& key) {
   s.pop_back();  // the closing brace
   s += ", \"" + key + "\": [";
-  for (size_t k = 0; k + 2 < tris.size(); k += 3)
-    s += (k ? ", [" : "[") + std::to_string(tris[k]) + ", " + std::to_string(tris[k + 1]) + ", " +
-         std::to_string(tris[k + 2]) + "]";
+  // Millions of triangles: each formatted in place, no temporary strings.
+  s.reserve(s.size() + tris.size() * 10 + 2);
+  char buf[48];
+  for (size_t k = 0; k + 2 < tris.size(); k += 3) {
+    char* p = buf;
+    if (k) *p++ = ',', *p++ = ' ';
+    *p++ = '[';
+    for (size_t j = 0; j < 3; ++j) {
+      if (j) *p++ = ',', *p++ = ' ';
+      p = std::to_chars(p, buf + sizeof buf, tris[k + j]).ptr;
+    }
+    *p++ = ']';
+    s.append(buf, p);
+  }
   return s + "]}";
 }
 
