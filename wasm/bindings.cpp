@@ -22,12 +22,9 @@ using namespace hodt;
 
 namespace {
 
-// A JS copy of a C++ array: the result never points into the wasm heap, so memory
-// growth cannot detach it.
-template <class T>
-val copy_out(const char* type, const std::vector<T>& v) {
-  return val::global(type).new_(emscripten::typed_memory_view(v.size(), v.data()));
-}
+// A JS copy of a C++ array (vector_binding.hpp): the result never points into the
+// wasm heap, so memory growth cannot detach it.
+using hodt_wasm::to_js;
 
 // Runs f, converting the core's exceptions into a JS Error whose name is the kind.
 template <class F>
@@ -68,20 +65,20 @@ class TerrainHandle {
   val inputIndex() const {
     std::vector<uint32_t> idx(numPoints());
     for (uint32_t v = 0; v < idx.size(); ++v) idx[v] = t_.to_input(v);
-    return copy_out("Uint32Array", idx);
+    return to_js(idx);
   }
-  val points() const { return copy_out("Float64Array", t_.structure().base.coords.vector()); }
+  val points() const { return to_js(t_.structure().base.coords.vector()); }
   val quads() const {
     std::vector<uint32_t> q;
     for (const Quad& k : t_.structure().quads) q.insert(q.end(), {k.a, k.b, k.c, k.d});
-    return copy_out("Uint32Array", t_.to_input(q));
+    return to_js(t_.to_input(q));
   }
   val quadEdges() const {
     std::vector<uint32_t> q;
     for (const Quad& k : t_.structure().quads) q.push_back(k.edge);
-    return copy_out("Uint32Array", q);
+    return to_js(q);
   }
-  val quadOfTriangle() const { return copy_out("Int32Array", t_.structure().quad_of_triangle); }
+  val quadOfTriangle() const { return to_js(t_.structure().quad_of_triangle); }
   // The domain: Infinity for none.
   double maxEdge() const { return t_.max_edge(); }
   void setMaxEdge(double max_edge) { guarded([&] { t_.set_max_edge(max_edge); }); }
@@ -96,9 +93,9 @@ class TerrainHandle {
     return guarded([&] {
       const Mesh m = triangulate(t_.structure(), choice_of(choice));
       val out = val::object();
-      out.set("triangles", copy_out("Uint32Array", t_.to_input(m.triangles)));
-      out.set("halfedges", copy_out("Int32Array", m.halfedges));
-      out.set("hull", copy_out("Uint32Array", t_.to_input(m.hull)));
+      out.set("triangles", to_js(t_.to_input(m.triangles)));
+      out.set("halfedges", to_js(m.halfedges));
+      out.set("hull", to_js(t_.to_input(m.hull)));
       return out;
     });
   }
@@ -111,7 +108,7 @@ class TerrainHandle {
   val evaluate(val choice) const {
     return guarded([&] {
       const auto v = evaluate_all(triangulate(t_.structure(), choice_of(choice)));
-      return copy_out("Float64Array", std::vector<double>(v.begin(), v.end()));
+      return to_js(std::vector<double>(v.begin(), v.end()));
     });
   }
   // Values and measures of any triangulation of the points (input indices), such as
@@ -119,7 +116,7 @@ class TerrainHandle {
   val evaluateTriangles(val triangles) const {
     return guarded([&] {
       const auto v = evaluate_all(t_.mesh_of_input_triangles(emscripten::convertJSArrayToNumberVector<uint32_t>(triangles)));
-      return copy_out("Float64Array", std::vector<double>(v.begin(), v.end()));
+      return to_js(std::vector<double>(v.begin(), v.end()));
     });
   }
   val measuresOfTriangles(val triangles) const {
@@ -129,15 +126,15 @@ class TerrainHandle {
   }
   val delaunayValues() const {
     const auto& v = t_.delaunay_values();
-    return copy_out("Float64Array", std::vector<double>(v.begin(), v.end()));
+    return to_js(std::vector<double>(v.begin(), v.end()));
   }
   static val measures_value(const Measures& ms) {
     val out = val::object();
-    out.set("edgeShape", copy_out("Uint8Array", ms.edge_shape));
-    out.set("vertexClass", copy_out("Uint8Array", ms.vertex_class));
-    out.set("extremum", copy_out("Uint8Array", ms.extremum));
-    out.set("degree", copy_out("Uint32Array", ms.degree));
-    out.set("inside", copy_out("Uint8Array", ms.inside));
+    out.set("edgeShape", to_js(ms.edge_shape));
+    out.set("vertexClass", to_js(ms.vertex_class));
+    out.set("extremum", to_js(ms.extremum));
+    out.set("degree", to_js(ms.degree));
+    out.set("inside", to_js(ms.inside));
     return out;
   }
 
@@ -162,7 +159,7 @@ class TerrainHandle {
   val solution_object(const Solution& s) const {
     val out = solution_value(s);
     out.set("order", s.order);
-    if (s.mesh) out.set("triangles", copy_out("Uint32Array", t_.to_input(s.mesh->triangles)));
+    if (s.mesh) out.set("triangles", to_js(t_.to_input(s.mesh->triangles)));
     return out;
   }
   val solution_value(const Solution& s) const {
@@ -177,29 +174,19 @@ class TerrainHandle {
     out.set("bound", s.bound ? val(*s.bound) : val::null());
     out.set("flipped", s.mesh ? s.non_delaunay_edges : count_flipped(s.choice));
     out.set("timeMs", s.time_ms);
-    out.set("choice", copy_out("Uint8Array", s.choice));
+    out.set("choice", to_js(s.choice));
     out.set("localSearchImproved", s.local_search_improved);
     out.set("details", s.details);
     if (s.critical) {
       val c = val::object();
-      c.set("first", copy_out("Uint32Array", t_.to_input(std::vector<uint32_t>(s.critical->first.begin(), s.critical->first.end()))));
-      c.set("second", copy_out("Uint32Array", t_.to_input(std::vector<uint32_t>(s.critical->second.begin(), s.critical->second.end()))));
+      c.set("first", to_js(t_.to_input(std::vector<uint32_t>(s.critical->first.begin(), s.critical->first.end()))));
+      c.set("second", to_js(t_.to_input(std::vector<uint32_t>(s.critical->second.begin(), s.critical->second.end()))));
       c.set("value", s.critical->value);
       out.set("critical", c);
     } else {
       out.set("critical", val::null());
     }
-    val steps = val::array();
-    for (const ThresholdStep& t : s.trace) {
-      val step = val::object();
-      step.set("threshold", t.threshold);
-      step.set("satisfiable", t.satisfiable);
-      step.set("clauses", t.clauses);
-      step.set("forced", t.forced);
-      step.set("immediateNo", t.immediate_no);
-      steps.call<void>("push", step);
-    }
-    out.set("trace", steps);
+    out.set("trace", to_js(s.trace));
     return out;
   }
 
@@ -248,7 +235,7 @@ class TerrainHandle {
       std::vector<double> flat;
       flat.reserve(rows.size() * kNumObjectives);
       for (const auto& r : rows) flat.insert(flat.end(), r.begin(), r.end());
-      return copy_out("Float64Array", flat);
+      return to_js(flat);
     });
   }
   // order: 0 for none.
@@ -261,7 +248,7 @@ class TerrainHandle {
       const uint32_t k = order_from_number(order);
       std::vector<uint32_t> flat;
       for (auto [u, v] : useful_edges(t_.delaunay_mesh(), k)) flat.insert(flat.end(), {u, v});
-      return copy_out("Uint32Array", t_.to_input(flat));
+      return to_js(t_.to_input(flat));
     });
   }
   val usefulTriangles(double order) const {
@@ -270,7 +257,7 @@ class TerrainHandle {
       const auto edges = useful_edges(t_.delaunay_mesh(), k);
       std::vector<uint32_t> flat;
       for (const auto& tri : useful_triangles(t_.delaunay_mesh(), k, edges)) flat.insert(flat.end(), tri.begin(), tri.end());
-      return copy_out("Uint32Array", t_.to_input(flat));
+      return to_js(t_.to_input(flat));
     });
   }
 
@@ -314,8 +301,8 @@ val readPoints(val text, const std::string& name) {
   return guarded([&] {
     const ParsedPoints p = read_points(bytes_of(text), name);
     val out = val::object();
-    out.set("xyz", copy_out("Float64Array", p.xyz));
-    out.set("lines", copy_out("Int32Array", p.lines));
+    out.set("xyz", to_js(p.xyz));
+    out.set("lines", to_js(p.lines));
     if (p.max_edge < INFINITY) out.set("maxEdge", p.max_edge);
     return out;
   });
@@ -334,12 +321,12 @@ bool is_function(const val& v) { return v.typeOf().as<std::string>() == "functio
 // A TinData as hodt/export's MeshData.
 val mesh_data(const TinData& tin) {
   val out = val::object();
-  out.set("points", copy_out("Float64Array", tin.points));
-  out.set("triangles", copy_out("Uint32Array", tin.triangles));
-  out.set("vertexClass", copy_out("Uint8Array", tin.vertex_class));
-  out.set("extremum", copy_out("Uint8Array", tin.extremum));
-  out.set("nonDelaunay", copy_out("Uint8Array", tin.non_delaunay));
-  if (!tin.outside.empty()) out.set("outside", copy_out("Uint8Array", tin.outside));
+  out.set("points", to_js(tin.points));
+  out.set("triangles", to_js(tin.triangles));
+  out.set("vertexClass", to_js(tin.vertex_class));
+  out.set("extremum", to_js(tin.extremum));
+  out.set("nonDelaunay", to_js(tin.non_delaunay));
+  if (!tin.outside.empty()) out.set("outside", to_js(tin.outside));
   out.set("comment", tin.comment);
   if (!tin.crs.empty()) out.set("crs", tin.crs);
   return out;
@@ -426,6 +413,12 @@ EMSCRIPTEN_BINDINGS(hodt) {
       .function("statsJson", &TerrainHandle::statsJson)
       .function("usefulEdges", &TerrainHandle::usefulEdges)
       .function("usefulTriangles", &TerrainHandle::usefulTriangles);
+  emscripten::value_object<ThresholdStep>("ThresholdStep")
+      .field("threshold", &ThresholdStep::threshold)
+      .field("satisfiable", &ThresholdStep::satisfiable)
+      .field("clauses", &ThresholdStep::clauses)
+      .field("forced", &ThresholdStep::forced)
+      .field("immediateNo", &ThresholdStep::immediate_no);
   emscripten::value_object<ThresholdTest>("ThresholdTest")
       .field("threshold", &ThresholdTest::threshold)
       .field("satisfiable", &ThresholdTest::satisfiable)

@@ -24,6 +24,7 @@ template <class T> emscripten::val to_js(const std::vector<T>& v) {
   if constexpr (typed_array_name<T>() != nullptr) {
     return emscripten::val::global(typed_array_name<T>()).new_(emscripten::typed_memory_view(v.size(), v.data()));
   } else {
+    static_assert(std::is_class_v<T>, "a vector of numbers needs its typed array in typed_array_name");
     emscripten::val out = emscripten::val::array();
     for (const T& x : v) out.call<void>("push", emscripten::val(x));
     return out;

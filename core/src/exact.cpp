@@ -3,6 +3,7 @@
 
 #include "hodt/bottleneck.hpp"
 #include "hodt/error.hpp"
+#include "hodt/explain.hpp"
 #include "hodt/extrema.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/pair_measures.hpp"
@@ -123,7 +124,8 @@ Solution solve_polynomial(const FirstOrder& fo, Objective o, const ExactOptions&
     case Objective::MinmaxEdgeEnclosingCircle:
     case Objective::MinmaxVertexAreaRatio:
     case Objective::MinmaxVertexNormalAngle: {
-      BottleneckResult r = solve_bottleneck(pair_model(fo, o, progress), progress, options.search);
+      BottleneckResult r = solve_bottleneck(pair_model(fo, o, progress), progress,
+                                            options.explanation ? &options.explanation->search.emplace() : nullptr);
       s.choice = std::move(r.choice);
       if (options.trace) s.trace = std::move(r.trace);
       break;

@@ -70,9 +70,7 @@ Solution dispatch(const FirstOrder& fo, Objective objective, const SolveOptions&
   if (options.method == Method::BruteForce) return brute_force(fo, objective, options.progress);
   // Polynomial objectives are always solved exactly (approx would only be worse).
   if (has_polynomial_exact(objective))
-    return solve_polynomial(fo, objective,
-                            ExactOptions{options.trace, dp_limits(options),
-                                         options.explanation && is_pair_objective(objective) ? &options.explanation->search.emplace() : nullptr});
+    return solve_polynomial(fo, objective, ExactOptions{options.trace, dp_limits(options), options.explanation});
   switch (options.method) {
     case Method::Exact:
       return solve_factor_graph(fo, objective, options);

@@ -4,8 +4,12 @@
 import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import type { AddressInfo } from 'node:net';
 import { fileURLToPath } from 'node:url';
-import { chromium, type Browser, type BrowserContext, type Page } from 'playwright-core';
+import type { Browser, BrowserContext, Page } from 'playwright-core';
 import { createServer, type ViteDevServer } from 'vite';
+// Debian's Chromium, headless, with software WebGL: the same launch as the package tests.
+import { launch as launchChromium } from '../pack/chromium.ts';
+
+export { launchChromium };
 
 export const root = fileURLToPath(new URL('../../', import.meta.url));
 export const resultsDir = `${root}test-results`;
@@ -14,23 +18,6 @@ export interface Demo {
   url: string;
   browser: Browser;
   close(): Promise<void>;
-}
-
-/** Debian's Chromium, headless, with software WebGL. */
-export function launchChromium(): Promise<Browser> {
-  return chromium.launch({
-    executablePath: '/usr/bin/chromium',
-    args: [
-      '--headless',
-      '--no-sandbox',
-      '--disable-gpu',
-      '--disable-background-networking',
-      '--disable-component-update',
-      '--disable-sync',
-      '--no-first-run',
-      '--enable-unsafe-swiftshader', // software WebGL without a GPU
-    ],
-  });
 }
 
 export async function startDemo(): Promise<Demo> {

@@ -2,40 +2,22 @@
 // from a subfolder of a plain static host, as a teacher would put it on a school
 // server: the page renders, solves, and a copied link reproduces the instance.
 import { existsSync } from 'node:fs';
-import { readFile } from 'node:fs/promises';
-import { createServer, type Server } from 'node:http';
-import type { AddressInfo } from 'node:net';
-import { extname, join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
+import { serveStatic } from '../pack/serve.ts';
 import { hooks, launchChromium, openPage, root, screenshot, settled, type Demo } from './harness.ts';
 
-const SUBFOLDER = '/courses/geometry/hodt/';
-const TYPES: Record<string, string> = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.wasm': 'application/wasm' };
-
 let demo: Demo;
-let server: Server;
 beforeAll(async () => {
   const dir = `${root}build/demo`;
   if (!existsSync(`${dir}/index.html`)) throw new Error('build/demo is missing: run `npm run build`');
-  server = createServer(async (req, res) => {
-    const path = new URL(req.url ?? '/', 'http://x').pathname;
-    if (!path.startsWith(SUBFOLDER)) return void res.writeHead(404).end();
-    const rest = path.slice(SUBFOLDER.length) || 'index.html';
-    try {
-      const body = await readFile(join(dir, rest));
-      res.writeHead(200, { 'content-type': TYPES[extname(rest)] ?? 'application/octet-stream' }).end(body);
-    } catch {
-      res.writeHead(404).end();
-    }
-  });
-  await new Promise<void>((resolve) => server.listen(0, '127.0.0.1', resolve));
+  const server = await serveStatic(dir, { prefix: '/courses/geometry/hodt/' });
   const browser = await launchChromium();
   demo = {
-    url: `http://127.0.0.1:${(server.address() as AddressInfo).port}${SUBFOLDER}`,
+    url: server.url,
     browser,
     close: async () => {
       await browser.close();
-      await new Promise<void>((resolve) => server.close(() => resolve()));
+      await server.close();
     },
   };
 });

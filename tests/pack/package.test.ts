@@ -221,6 +221,9 @@ describe('npx hodt demo', () => {
         }, null, { timeout: 60_000 });
         return w;
       };
+      // A malformed address is refused and the server keeps serving.
+      expect((await fetch(`${url}%E0%A4%A`)).status).toBe(400);
+      expect((await fetch(url)).status).toBe(200);
       const first = await open('');
       const state = () => first.page.evaluate(() => {
         const h = (window as unknown as { __hodt: { pointsCsv(): string; solution: { value: number } | null; link(): string | null } }).__hodt;
@@ -357,7 +360,7 @@ describe('browser (Vite bundle, Chromium, strict CSP)', () => {
   });
 
   it("solves on the page and in a module worker with script-src 'self' 'wasm-unsafe-eval'", async () => {
-    const server = await serveStatic(dist, CSP);
+    const server = await serveStatic(dist, { csp: CSP });
     try {
       const w = await watchedPage(browser!);
       await w.page.goto(server.url);
@@ -377,7 +380,7 @@ describe('browser (Vite bundle, Chromium, strict CSP)', () => {
   });
 
   it('the README three.js example renders under the same CSP', async () => {
-    const server = await serveStatic(dist, CSP);
+    const server = await serveStatic(dist, { csp: CSP });
     try {
       const w = await watchedPage(browser!);
       await w.page.goto(`${server.url}example.html`);
@@ -391,7 +394,7 @@ describe('browser (Vite bundle, Chromium, strict CSP)', () => {
   });
 
   it("control: without 'wasm-unsafe-eval' the same page is blocked (the header is in force)", async () => {
-    const server = await serveStatic(dist, CSP_WITHOUT_WASM);
+    const server = await serveStatic(dist, { csp: CSP_WITHOUT_WASM });
     try {
       const w = await watchedPage(browser!);
       await w.page.goto(server.url);

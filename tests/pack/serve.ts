@@ -1,5 +1,6 @@
-// A static file server that sends a Content-Security-Policy header with every
-// response (pages, scripts, workers, wasm), like a strict production host.
+// A static file server like a production host: optionally under a subfolder
+// (`prefix`), optionally sending a Content-Security-Policy header with every
+// response (pages, scripts, workers, wasm), like a strict one.
 import { readFile } from 'node:fs/promises';
 import { createServer, type Server } from 'node:http';
 import type { AddressInfo } from 'node:net';
@@ -18,20 +19,23 @@ export interface StaticServer {
   close(): Promise<void>;
 }
 
-export async function serveStatic(dir: string, csp: string): Promise<StaticServer> {
+export async function serveStatic(dir: string, options: { csp?: string; prefix?: string } = {}): Promise<StaticServer> {
+  const prefix = options.prefix ?? '/';
   const server: Server = createServer(async (req, res) => {
-    const path = normalize(decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname)).replace(/^(\.\.[/\\])+/, '');
-    if (path === '/favicon.ico') return void res.writeHead(204).end();
+    const url = new URL(req.url ?? '/', 'http://x').pathname;
+    if (url === '/favicon.ico' || !url.startsWith(prefix)) return void res.writeHead(url === '/favicon.ico' ? 204 : 404).end();
+    const path = normalize(`/${decodeURIComponent(url.slice(prefix.length))}`).replace(/^(\.\.[/\\])+/, '');
     const file = join(dir, path.endsWith('/') ? `${path}index.html` : path);
     try {
       const body = await readFile(file);
-      res.writeHead(200, { 'content-type': types[extname(file)] ?? 'application/octet-stream', 'content-security-policy': csp });
-      res.end(body);
+      const headers: Record<string, string> = { 'content-type': types[extname(file)] ?? 'application/octet-stream' };
+      if (options.csp) headers['content-security-policy'] = options.csp;
+      res.writeHead(200, headers).end(body);
     } catch {
       res.writeHead(404).end();
     }
   });
   await new Promise<void>((resolve) => server.listen(0, '127.0.0.1', resolve));
   const { port } = server.address() as AddressInfo;
-  return { url: `http://127.0.0.1:${port}/`, close: () => new Promise((resolve) => server.close(() => resolve())) };
+  return { url: `http://127.0.0.1:${port}${prefix}`, close: () => new Promise((resolve) => server.close(() => resolve())) };
 }

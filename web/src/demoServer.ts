@@ -48,7 +48,12 @@ export function demoOptions(args: string[]): DemoOptions | string {
 export async function serveDemo(options: DemoOptions, dir = fileURLToPath(new URL('./demo/', import.meta.url))): Promise<void> {
   const root = normalize(dir);
   const server = createServer(async (req, res) => {
-    const path = decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname);
+    let path: string;
+    try {
+      path = decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname);
+    } catch {
+      return void res.writeHead(400).end(); // a malformed address must not stop the server
+    }
     const file = normalize(join(root, path.endsWith('/') ? `${path}index.html` : path));
     if (!file.startsWith(root.endsWith(sep) ? root : root + sep)) return void res.writeHead(403).end();
     try {

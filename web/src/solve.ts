@@ -1,10 +1,7 @@
 import { CancelledError, describeValue, InputError, toHodtError } from './errors.js';
 import type { Method, ObjectiveId } from './objectives.js';
 import { checkOptionNames } from './options.js';
-import type { RawExplanation, RawSolution, RawTerrain } from './wasm/hodt.mjs';
-
-/** The raw result, with the triangles when the core gives them (order >= 2). */
-export type RawResult = RawSolution & { order?: number; triangles?: Uint32Array };
+import type { RawExplanation, RawSolved, RawTerrain } from './wasm/hodt.mjs';
 
 /**
  * Called now and then during long runs with the work `done` out of `total` in the
@@ -76,7 +73,7 @@ function checkedOptions(objective: unknown, options: SolveOptions | null | undef
 }
 
 /** Runs the raw solver with checked options, progress and cancellation. */
-export function solveRaw(raw: RawTerrain, objective: ObjectiveId, options: SolveOptions): RawResult {
+export function solveRaw(raw: RawTerrain, objective: ObjectiveId, options: SolveOptions): RawSolved {
   return runChecked(objective, options, (o, tick) => raw.solve(objective, o.method, o.epsilon, o.trace, o.order, tick));
 }
 

@@ -4,8 +4,8 @@
 import { BusyError, describeValue, guard, InputError } from './errors.js';
 import { type ObjectiveId, type ObjectiveValues, type SolvedBy, toValues } from './objectives.js';
 import type { Explanation } from './explain.js';
-import { checkNumber, explainRaw, type RawResult, type SolveOptions, solveRaw } from './solve.js';
-import type { RawExplanation, RawMeasures, RawTerrain } from './wasm/hodt.mjs';
+import { checkNumber, explainRaw, type SolveOptions, solveRaw } from './solve.js';
+import type { RawMeasures, RawSolved, RawTerrain } from './wasm/hodt.mjs';
 
 /** One byte per flippable quad: 0 keeps the Delaunay diagonal, 1 flips it. */
 export type Choice = Uint8Array;
@@ -330,15 +330,7 @@ export class Terrain implements Disposable {
    * CancelledError (see SolveOptions.signal and .progress).
    */
   solve(objective: ObjectiveId, options: SolveOptions = {}): Solution {
-    const raw = this.#idle('solve');
-    let s: RawResult;
-    this.#solving = true;
-    try {
-      s = solveRaw(raw, objective, options);
-    } finally {
-      this.#solving = false;
-    }
-    return this.#solution(raw, s);
+    return this.#run('solve', (raw) => this.#solution(raw, solveRaw(raw, objective, options)));
   }
   /**
    * The same solve as solve(objective, options), with the structures its solvers
@@ -348,22 +340,27 @@ export class Terrain implements Disposable {
    * more than solve() (the shifts' triangulations, the regions' counts).
    */
   explain(objective: ObjectiveId, options: Omit<SolveOptions, 'trace'> = {}): Explanation {
-    const raw = this.#idle('explain');
-    let e: RawExplanation;
+    return this.#run('explain', (raw) => {
+      const e = explainRaw(raw, objective, options);
+      return { ...e, solution: this.#solution(raw, e.solution) };
+    });
+  }
+  // A run of the core that calls back into JS (progress): the terrain is busy meanwhile.
+  #run<T>(method: string, run: (raw: RawTerrain) => T): T {
+    const raw = this.#idle(method);
     this.#solving = true;
     try {
-      e = explainRaw(raw, objective, options);
+      return run(raw);
     } finally {
       this.#solving = false;
     }
-    return { ...e, solution: this.#solution(raw, e.solution) };
   }
-  #solution(raw: RawTerrain, s: RawResult): Solution {
+  #solution(raw: RawTerrain, s: RawSolved): Solution {
     const triangles = s.triangles ?? guard(() => raw.triangulation(s.choice).triangles);
     return {
       objective: s.objective as ObjectiveId,
       sense: s.sense,
-      order: s.order ?? 1,
+      order: s.order,
       method: s.method,
       value: s.value,
       delaunayValue: s.delaunayValue,

@@ -5,12 +5,12 @@
 
 namespace hodt {
 
-struct SearchExplanation;  // explain.hpp
+struct Explanation;  // explain.hpp
 
 struct ExactOptions {
   bool trace = false;  // record the bottleneck search's thresholds
   DpLimits limits;     // progress, and the budget of the exact engine where one runs
-  SearchExplanation* search = nullptr;  // explain(): the search's tests in full
+  Explanation* explanation = nullptr;  // explain(): where the search records its tests
 };
 
 // True for the objectives with a polynomial exact algorithm here.

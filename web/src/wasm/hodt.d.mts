@@ -2,6 +2,7 @@
 // the public API is in ../index.ts.
 import type { BakerExplanation, ExactExplanation, RegionExplanation, SearchExplanation } from '../explain.js';
 import type { SolvedBy } from '../objectives.js';
+import type { ThresholdStep } from '../terrain.js';
 export interface RawChoiceResult {
   triangles: Uint32Array;
   halfedges: Int32Array;
@@ -28,10 +29,12 @@ export interface RawSolution {
   critical: { first: Uint32Array; second: Uint32Array; value: number } | null;
   localSearchImproved: boolean;
   details: string;
-  trace: { threshold: number; satisfiable: boolean; clauses: number; forced: number; immediateNo: boolean }[];
+  trace: ThresholdStep[];
 }
+/** What solve and explain return: order k >= 2 adds the triangles (not a choice of diagonals). */
+export type RawSolved = RawSolution & { order: number; triangles?: Uint32Array };
 export interface RawExplanation {
-  solution: RawSolution & { order: number; triangles?: Uint32Array };
+  solution: RawSolved;
   search: SearchExplanation | null;
   baker: BakerExplanation | null;
   exact: ExactExplanation | null;
@@ -66,7 +69,7 @@ export interface RawTerrain {
     trace: boolean,
     order: number,
     progress: ((done: number, total: number) => boolean | void) | undefined,
-  ): RawSolution & { order: number; triangles?: Uint32Array };
+  ): RawSolved;
   explain(
     objective: string,
     method: string,

@@ -106,29 +106,26 @@ export function createBakerView(ctx: TeachContext): TeachView {
     const my = ++token;
     const eps = Math.min(0.95, Math.max(0.05, Number(epsilon.value) || 0.34));
     const id = objective.value as State['objective'];
-    const terrain = ctx.terrain();
-    const structure = readStructure(terrain);
+    const structure = readStructure(ctx.terrain());
     state = { structure, objective: id, epsilon: eps, baker: null, layers: 0, lambda: null, solution: null, failure: null };
     player.pos = 0;
     canvas.fit(structure.points);
     render();
-    // After a frame, so that "Running" shows while the library works.
-    window.setTimeout(() => {
+    // In the teaching views' worker (the page stays responsive while it runs).
+    void ctx.solver.solve({ points: ctx.points(), objective: id, method: 'approx', epsilon: eps, order: 1, maxEdge: ctx.settings().maxEdge, explain: true }).then((o) => {
       if (my !== token || !state) return;
-      try {
-        const e = terrain.explain(id, { method: 'approx', epsilon: eps });
-        state.solution = e.solution;
-        state.baker = e.baker;
-        if (!e.baker) state.failure = `the library did not run Baker's scheme (${e.solution.details})`;
+      if (o.status !== 'solved') state.failure = o.status === 'failed' ? o.message : 'cancelled';
+      else {
+        state.solution = o.solution;
+        state.baker = o.explanation?.baker ?? null;
+        if (!state.baker) state.failure = `the library did not run Baker's scheme (${o.solution.details})`;
         else {
-          state.lambda = e.baker.lambda;
-          state.layers = e.baker.layer.reduce((a, b) => Math.max(a, b + 1), 0);
+          state.lambda = state.baker.lambda;
+          state.layers = state.baker.layer.reduce((a, b) => Math.max(a, b + 1), 0);
         }
-      } catch (err) {
-        state.failure = err instanceof Error ? err.message : String(err);
       }
       render();
-    }, 0);
+    });
   }
 
   const shifts = (s: State) => s.baker?.shifts ?? [];

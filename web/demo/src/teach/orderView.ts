@@ -4,8 +4,7 @@
 // into with the number of k-OD triangulations of each, and the optimum. Stepping
 // k from 1 to 8 shows regions merge and, for local minima, pits disappear. The
 // view draws what the library returned; it decides nothing itself.
-import type { Explanation, ObjectiveId } from 'hodt';
-import { OBJECTIVE_IDS } from 'hodt';
+import { Extremum, OBJECTIVE_IDS, type Explanation, type Measures, type ObjectiveId } from 'hodt';
 import { h } from '../ui/dom.ts';
 import { formatValue, OBJECTIVE_HELP } from '../ui/objectiveHelp.ts';
 import { FLIPPED_COLOR } from '../views/palette.ts';
@@ -69,9 +68,8 @@ export function createOrderView(ctx: TeachContext): TeachView {
   let stale = true;
   let state: State | null = null;
   let token = 0;
-  /** Value per order for the current terrain and objective (the table). */
-  let values = new Map<number, { value: number; optimal: boolean; bound: number | null; delaunay: number }>();
-  let valuesKey = '';
+  /** Value per order for the current terrain and settings (the table; cleared on any change). */
+  const values = new Map<number, { value: number; optimal: boolean; bound: number | null; delaunay: number }>();
 
   function update(): void {
     if (!active || !stale) return;
@@ -79,25 +77,18 @@ export function createOrderView(ctx: TeachContext): TeachView {
     const my = ++token;
     const order = player.pos + 1;
     const id = objective.value as ObjectiveId;
-    const key = `${id}:${ctx.points().length}:${ctx.points()[0] ?? 0}`;
-    if (key !== valuesKey) (values = new Map()), (valuesKey = key);
+    const { method, epsilon, maxEdge } = ctx.settings();
     state = { order, objective: id, explanation: null, failure: null, minima: [], delaunayMinima: [] };
     canvas.fit(ctx.points());
     render();
-    void ctx.solver.solve({ points: ctx.points(), objective: id, method: 'auto', epsilon: 0.25, order, maxEdge: ctx.settings().maxEdge, explain: true }).then((o) => {
+    void ctx.solver.solve({ points: ctx.points(), objective: id, method, epsilon, order, maxEdge, explain: true }).then((o) => {
       if (my !== token || !state) return;
       if (o.status === 'solved' && o.explanation) {
         const e = o.explanation;
         state.explanation = e;
         const terrain = ctx.terrain();
-        const minimaOf = (triangles: Uint32Array) => {
-          const ex = terrain.measuresOfTriangles(triangles).extremum;
-          const out: number[] = [];
-          ex.forEach((x, v) => x === 1 && out.push(v));
-          return out;
-        };
-        state.minima = minimaOf(e.solution.triangles);
-        state.delaunayMinima = minimaOf(terrain.delaunay().triangles);
+        state.minima = minimaOf(terrain.measuresOfTriangles(e.solution.triangles));
+        state.delaunayMinima = minimaOf(terrain.measures());
         values.set(order, { value: e.solution.value, optimal: e.solution.optimal, bound: e.solution.bound, delaunay: e.solution.delaunayValue });
       } else {
         state.failure = o.status === 'failed' ? o.message : 'cancelled';
@@ -267,6 +258,7 @@ export function createOrderView(ctx: TeachContext): TeachView {
     },
     changed() {
       objective.value = ctx.settings().objective;
+      values.clear();
       stale = true;
       update();
     },
@@ -287,6 +279,13 @@ export function createOrderView(ctx: TeachContext): TeachView {
       };
     },
   };
+}
+
+/** The local minima (point indices) the library's measures mark. */
+function minimaOf(m: Measures): number[] {
+  const out: number[] = [];
+  m.extremum.forEach((x, v) => x === Extremum.Minimum && out.push(v));
+  return out;
 }
 
 function countChoice(triangulations: Uint32Array): number {

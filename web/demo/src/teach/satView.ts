@@ -116,7 +116,7 @@ export function createSatView(ctx: TeachContext): TeachView {
 
   const stepAt = (i: number): ThresholdTest => state!.search.tests[i]!;
 
-  const last = () => (state ? state.solution.trace.length + 1 : 0);
+  const last = () => (state ? state.search.tests.length + 1 : 0);
 
   function render(): void {
     canvas.redraw();
@@ -130,23 +130,23 @@ export function createSatView(ctx: TeachContext): TeachView {
     const s = state;
     const id = s.objective;
     const fmt = (v: number) => formatValue(id, v);
-    const n = s.solution.trace.length;
+    const n = s.search.tests.length;
     counter.textContent = player.pos === 0 ? 'start' : player.pos > n ? 'done' : `step ${player.pos} of ${n}`;
     caption.textContent =
       player.pos === 0
         ? 'Delaunay triangulation · flippable quads in pale teal'
         : player.pos > n
           ? `Optimum: ${fmt(s.solution.value)} · flipped quads amber, worst pair pink`
-          : `Step ${player.pos}: t = ${fmt(s.solution.trace[player.pos - 1]!.threshold)} · ${s.solution.trace[player.pos - 1]!.satisfiable ? 'yes: the 2-SAT solution shown' : 'no'}`;
+          : `Step ${player.pos}: t = ${fmt(stepAt(player.pos - 1).threshold)} · ${stepAt(player.pos - 1).satisfiable ? 'yes: the 2-SAT solution shown' : 'no'}`;
     // The step list.
     list.replaceChildren(
-      ...s.solution.trace.map((t, i) => {
+      ...s.search.tests.map((t, i) => {
         const li = h(
           'li',
           { class: `${t.satisfiable ? 'yes' : 'no'}${i + 1 === player.pos ? ' current' : ''}`, 'data-threshold': String(t.threshold) },
           h('b', {}, `t = ${fmt(t.threshold)}`),
           ` ${t.satisfiable ? '✓ yes' : '✗ no'}`,
-          h('span', { class: 'muted' }, t.immediateNo ? ' · immediate no' : ` · ${t.clauses} clause${t.clauses === 1 ? '' : 's'} · ${t.forced} forced`),
+          h('span', { class: 'muted' }, t.immediateNo ? ' · immediate no' : ` · ${t.clauses.length / 2} clause${t.clauses.length === 2 ? '' : 's'} · ${t.forced.length / 2} forced`),
         );
         li.addEventListener('click', () => player.go(i + 1));
         return li;
@@ -167,9 +167,8 @@ export function createSatView(ctx: TeachContext): TeachView {
         `Binary search tests ${n} of them. Press Next.`,
       );
     } else if (player.pos <= n) {
-      const t = s.solution.trace[player.pos - 1]!;
       const a = stepAt(player.pos - 1);
-      const parts: (string | Node)[] = [h('b', {}, `Is there a triangulation with ${measure} ≤ ${fmt(t.threshold)}? `)];
+      const parts: (string | Node)[] = [h('b', {}, `Is there a triangulation with ${measure} ≤ ${fmt(a.threshold)}? `)];
       const forced = a.forced.length / 2, pairs = quadPairs(a).length;
       if (a.immediateNo && a.blocked.length === 0) parts.push(`A pair of fixed triangles measures ${fmt(s.search.floor)}, over it: no, immediately. `);
       else if (a.immediateNo) parts.push(`Quad ${a.blocked[0]} has both diagonals over it: no, immediately. `);
@@ -181,7 +180,7 @@ export function createSatView(ctx: TeachContext): TeachView {
             : `${a.conflicts.length} quad${a.conflicts.length === 1 ? ' has' : 's have'} both diagonals in one strongly connected component (✕): no. `,
         );
       }
-      parts.push(t.satisfiable ? 'The optimum is at most t: search below.' : 'The optimum is above t: search above.');
+      parts.push(a.satisfiable ? 'The optimum is at most t: search below.' : 'The optimum is above t: search above.');
       status.replaceChildren(...parts);
     } else {
       status.replaceChildren(
@@ -209,7 +208,7 @@ export function createSatView(ctx: TeachContext): TeachView {
       if (text !== undefined) e.textContent = text;
       return e;
     };
-    const steps = s.solution.trace.length;
+    const steps = s.search.tests.length;
     const rowY = (i: number) => 50 + 15 * i;
     const height = rowY(steps) + 10;
     line.setAttribute('viewBox', `0 0 320 ${height}`);
@@ -223,7 +222,7 @@ export function createSatView(ctx: TeachContext): TeachView {
     nodes.push(el('text', { x: 165, y: 38, 'font-size': 9.5, 'text-anchor': 'middle', fill: '#8a9691' }, `${N} candidate values, in increasing order; a row per test`));
     let lo = 0, hi = N - 1;
     const upto = Math.min(player.pos, steps);
-    s.solution.trace.forEach((t, i) => {
+    s.search.tests.forEach((t, i) => {
       const y = rowY(i);
       const current = i + 1 === player.pos;
       const shown = i < upto;
@@ -251,7 +250,7 @@ export function createSatView(ctx: TeachContext): TeachView {
     const s = state;
     const st = s.structure;
     const p = st.points;
-    const n = s.solution.trace.length;
+    const n = s.search.tests.length;
     const a = player.pos >= 1 && player.pos <= n ? stepAt(player.pos - 1) : null;
     const choice = player.pos > n ? s.solution.choice : a && a.assignment.length ? a.assignment : new Uint8Array(st.m);
     const triangles = trianglesOf(st, choice);
@@ -375,7 +374,7 @@ export function createSatView(ctx: TeachContext): TeachView {
       const s = state;
       return {
         objective: objective.value,
-        steps: s ? s.solution.trace.length : 0,
+        steps: s ? s.search.tests.length : 0,
         position: player.pos,
         atEnd: s !== null && player.pos === last(),
         value: s?.solution.value ?? null,
