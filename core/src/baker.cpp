@@ -10,8 +10,7 @@
 
 namespace hodt {
 
-std::vector<uint32_t> quad_layers(const FirstOrder& fo, const Progress& progress) {
-  const Mesh& m = fo.base;
+std::vector<uint32_t> hull_depth(const Mesh& m, const Progress& progress) {
   const Stars st = build_stars(m, progress);
   WorkCounter work;
   std::vector<uint32_t> depth(m.num_vertices(), UINT32_MAX), queue;
@@ -24,6 +23,11 @@ std::vector<uint32_t> quad_layers(const FirstOrder& fo, const Progress& progress
       if (depth[w] == UINT32_MAX) depth[w] = depth[v] + 1, queue.push_back(w);
     }
   }
+  return depth;
+}
+
+std::vector<uint32_t> quad_layers(const FirstOrder& fo, const Progress& progress) {
+  const std::vector<uint32_t> depth = hull_depth(fo.base, progress);
   std::vector<uint32_t> layer(fo.num_quads());
   for (uint32_t q = 0; q < fo.num_quads(); ++q) {
     const Quad& k = fo.quads[q];

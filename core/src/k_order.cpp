@@ -1,4 +1,6 @@
 #include "hodt/k_order.hpp"
+#include "hodt/k_order_baker.hpp"
+#include "hodt/region_engine.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -131,13 +133,6 @@ struct FirstOrderStart {
   }
 };
 
-std::string region_summary(const Regions& R) {
-  size_t choice = 0, largest = 0;
-  for (const Region& g : R.regions)
-    if (g.states.size() > 1) ++choice, largest = std::max(largest, g.states.size());
-  return std::to_string(choice) + " regions with a choice (up to " + std::to_string(largest) + " triangulations each)";
-}
-
 // bounded: whether a heuristic answer needs its bound (the ladder's lower
 // orders serve only as starts).
 KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes,
@@ -160,34 +155,24 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     r.details = "the first order optimum meets the bound that every triangulation of the points meets";
     return r;
   }
-  Regions R = k_order_skeleton(dt, k, options.progress);
-  const Candidates cand = k_order_candidates(dt, k, R.useful, options.progress);
-  const RegionTerms terms(dt, R, o, &cand);
-  RegionLimits rl;
-  rl.candidates = &cand;
-  rl.max_nodes_per_region = max_nodes;
-  rl.progress = options.progress;
-  rl.terms = &terms;
-  enumerate_regions(dt, R, rl);
-  RegionModel model = region_model(dt, R, o, {}, options.progress);
+  RegionLimits budgets;
+  budgets.max_nodes_per_region = max_nodes;
+  RegionEngine engine(dt, o, k, budgets, options.progress);
+  Regions& R = engine.R;
+  const Candidates& cand = engine.cand;
+  const RegionTerms& terms = engine.terms;
+  RegionModel& model = engine.model;
   KOrderResult r;
-  std::string refused;
-  if (R.incomplete) refused = std::to_string(R.incomplete) + " regions have more k-OD triangulations than the budget";
-  else if (model.graph.relaxed_terms)
-    refused = std::to_string(model.graph.relaxed_terms) + " terms see too many regions to tabulate";
+  std::string refused = engine.exact_refusal().value_or("");
   if (refused.empty() && options.method != Method::Approx) {
-    try {
-      StateDpLimits dl;
-      dl.progress = options.progress;
-      const StateDpResult dp = solve_states(model.graph, dl);
-      r.triangulation = R.triangulation(dt, model.region_states(dp.state));
+    uint32_t width = 0;
+    if (auto x = engine.exact(options.progress, refused, &width)) {
+      r.triangulation = R.triangulation(dt, *x);
       r.value = evaluate(o, r.triangulation);
       r.optimal = true;
       r.method = "exact";
-      r.details = region_summary(R) + "; tree decomposition of width " + std::to_string(dp.width);
+      r.details = region_summary(R) + "; tree decomposition of width " + std::to_string(width);
       return r;
-    } catch (const LimitError& e) {
-      refused = e.what();
     }
   }
   if (options.method == Method::Exact) throw LimitError("exact at order " + std::to_string(k) + ": " + refused);
@@ -212,19 +197,9 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     if (better(sense, lower.value, start_value)) start = std::move(lower.triangulation), start_value = lower.value;
   }
   if (added) model = region_model(dt, R, o, {}, options.progress);
-  StateDpLimits dl;
-  dl.progress = options.progress;
-  // The DP over the listed triangulations; where its tables are too large it runs
-  // over mini-buckets, whose assignment is then one start of the local search.
-  StateDpLimits mini = dl;
-  mini.mini_buckets = true;
-  // Small buckets: on a 5,000-point grid at order 4 the bottleneck search over
-  // 2^22-entry buckets took 80 s, over 2^18 8 s, with the same results (and
-  // within one unit on 10,000 DEM points at order 4).
-  mini.max_table = 1 << 18;
-  const StateDpResult listed = solve_states(model.graph, mini);
+  const ListedBest listed = engine.best_listed(states_of(R, start), options.progress);
   if (bounded && listed.bound_only && !R.incomplete && !model.graph.relaxed_terms &&
-      !better(sense, listed.value, start_value)) {
+      !better(sense, listed.listed_value, start_value)) {
     // The model is the whole problem, so its mini-bucket value bounds the
     // optimum, and the start already meets it.
     r.triangulation = std::move(start);
@@ -234,24 +209,22 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     r.details = region_summary(R) + "; the start meets the mini-bucket bound (exact refused: " + refused + ")";
     return r;
   }
-  std::vector<uint32_t> x = listed.state;
-  std::string how = "the best combination of the regions' listed triangulations";
-  if (listed.bound_only) {
-    x = improve_states(model.graph, x, options.progress);
-    how = "local search from the mini-bucket DP";
-    const std::vector<uint32_t> y = improve_states(model.graph, model.variable_states(states_of(R, start)), options.progress);
-    if (better(sense, evaluate_states(model.graph, y), evaluate_states(model.graph, x)))
-      x = y, how = "local search from the first order optimum";
-    StateDpLimits window = dl;
-    window.max_table = 1 << 16;
-    x = improve_by_windows(model.graph, x, window, 24);
-    how += ", then windows solved exactly";
-  }
-  r.triangulation = R.triangulation(dt, model.region_states(x));
+  std::string how = listed.how;
+  r.triangulation = R.triangulation(dt, listed.regions);
   r.value = evaluate(o, r.triangulation);
   if (better(sense, start_value, r.value)) {  // (relaxed terms can mislead the search)
     r.triangulation = std::move(start);
     r.value = start_value;
+  }
+  // Asked for the approximation scheme: Baker's shifting (the paper's Theorem
+  // 10), bands of Delaunay triangles kept every lambda layers cut the regions too
+  // large for the engine (slower: lambda runs of it).
+  if (bounded && k >= 2 && options.method == Method::Approx) {
+    const KOrderBaker b = k_order_baker(dt, o, k, options.epsilon, max_nodes, options.progress);
+    if (b.triangulation && better(sense, b.value, r.value))
+      r.triangulation = std::move(*b.triangulation), r.value = b.value, how = b.summary();
+    else if (b.shifts)
+      how += " (" + b.summary() + ": no better)";
   }
   // Then k-OD flips that improve the terms around them (they reach into the
   // regions too large to list).
@@ -265,12 +238,14 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // The bound: the model's relaxation, or the tighter one that reads the regions
   // too large to list through their views; when those views agree, a
   // triangulation that meets it.
+  StateDpLimits dl;
+  dl.progress = options.progress;
   double bound = tighter(sense, relaxation_bound(model.graph, dl), global);
   if (description.combine == TermCombine::Max) bound = tighter(sense, bound, terms.floor());
   ViewBoundLimits vl;
   vl.views.progress = vl.dp.progress = options.progress;
   const bool met = !better(sense, bound, r.value);
-  if (const auto vb = met ? std::nullopt : view_bound(dt, R, o, cand, terms, rl.max_region_triangles, r.value, vl)) {
+  if (const auto vb = met ? std::nullopt : view_bound(dt, R, o, cand, terms, engine.limits.max_region_triangles, r.value, vl)) {
     bound = tighter(sense, bound, vb->bound);
     if (vb->realised && !better(sense, r.value, vb->bound)) {
       r.triangulation = *vb->realised;

@@ -89,18 +89,23 @@ Mesh Regions::triangulation(const Mesh& dt, const std::vector<uint32_t>& state) 
   return mesh_of(dt.coords, tris);
 }
 
-Regions k_order_skeleton(const Mesh& dt, uint32_t k, const Progress& progress) {
+Regions k_order_skeleton(const Mesh& dt, uint32_t k, const Progress& progress, const std::vector<uint8_t>& forced) {
   Regions out;
   out.order = k;
   const auto useful = useful_edges(dt, k, progress);
-  out.useful = useful;
   const std::vector<int32_t> start = vertex_halfedges(dt);
-  // A Delaunay edge is fixed unless a useful non-Delaunay edge crosses it.
+  // A Delaunay edge is fixed unless a useful non-Delaunay edge crosses it (one
+  // that crosses a forced edge is not useful here: no triangulation keeping the
+  // forced edges has it).
   out.fixed.assign(dt.triangles.size(), 1);
   for (size_t i = 0; i < useful.size(); ++i) {
     if (progress && (i & 1023) == 0 && !progress(static_cast<double>(i), static_cast<double>(useful.size())))
       throw Cancelled();
-    for (uint32_t h : crossed_edges(dt, start, useful[i].first, useful[i].second)) {
+    const std::vector<uint32_t> crossed = crossed_edges(dt, start, useful[i].first, useful[i].second);
+    if (!forced.empty() && std::any_of(crossed.begin(), crossed.end(), [&](uint32_t h) { return forced[h] != 0; }))
+      continue;
+    out.useful.push_back(useful[i]);
+    for (uint32_t h : crossed) {
       out.fixed[h] = 0;
       out.fixed[static_cast<uint32_t>(dt.halfedges[h])] = 0;
     }

@@ -18,8 +18,10 @@
 
 namespace hodt {
 
-// Layer of each quad: the smallest depth of its corners, where depth is the
-// number of Delaunay edges from the hull (vertex BFS): an outerplanarity peeling.
+// Depth of each vertex: the number of edges of `m` from the hull (vertex BFS),
+// an outerplanarity peeling; adjacent vertices differ by at most one.
+std::vector<uint32_t> hull_depth(const Mesh& m, const Progress& progress = {});
+// Layer of each quad: the smallest depth of its corners.
 std::vector<uint32_t> quad_layers(const FirstOrder& fo, const Progress& progress = {});
 
 struct BakerShift {

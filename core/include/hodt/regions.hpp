@@ -69,8 +69,11 @@ struct RegionLimits {
   Progress progress;
 };
 
-// Fixed edges and regions, each with its Delaunay triangulation only.
-Regions k_order_skeleton(const Mesh& delaunay, uint32_t k, const Progress& progress = {});
+// Fixed edges and regions, each with its Delaunay triangulation only. forced: per
+// Delaunay halfedge (both halves set), edges every triangulation must keep
+// (Baker's bands, k_order_baker.hpp); empty: none.
+Regions k_order_skeleton(const Mesh& delaunay, uint32_t k, const Progress& progress = {},
+                         const std::vector<uint8_t>& forced = {});
 // Each region's k-OD triangulations (within the limits: a region over them keeps
 // the ones found and is marked incomplete).
 void enumerate_regions(const Mesh& delaunay, Regions& regions, const RegionLimits& limits = {});
