@@ -11,7 +11,7 @@
 namespace hodt {
 
 std::string KOrderBaker::summary() const {
-  return "Baker's shifting at order k: lambda " + std::to_string(lambda) + (reduced ? " (reduced to cut twice)" : "") + ", " + std::to_string(exact_shifts) + " of " +
+  return "Baker's shifting at order k: lambda " + std::to_string(lambda) + (reduced ? " (reduced to cut three times)" : "") + ", " + std::to_string(exact_shifts) + " of " +
          std::to_string(shifts) + " shifts solved exactly";
 }
 
@@ -39,11 +39,12 @@ KOrderBaker k_order_baker(const Mesh& dt, Objective o, uint32_t k, double epsilo
   uint32_t deepest = 0;
   for (uint32_t d : depth)
     if (d != UINT32_MAX) deepest = std::max(deepest, d);
-  // The paper's lambda, unless fewer than two bands would cut the instance: then
-  // as many layers as give two (the guarantee is lost; the bound still holds).
+  // The paper's lambda, unless fewer than three bands would cut the instance:
+  // then as many layers as give three, so that a ring lies between two bands
+  // (the guarantee is lost; the bound still holds).
   uint32_t lambda = static_cast<uint32_t>(std::min(std::ceil(2.0 * k / epsilon), 1e6));
-  out.reduced = lambda > deepest / 2;
-  if (out.reduced) lambda = deepest / 2;
+  out.reduced = lambda > deepest / 3;
+  if (out.reduced) lambda = deepest / 3;
   if (lambda < 2) return out;  // (too shallow to cut)
   out.lambda = lambda;
   const Sense sense = info(o).sense;
