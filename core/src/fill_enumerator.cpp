@@ -29,6 +29,22 @@ Candidates k_order_candidates(const Mesh& dt, uint32_t k, const std::vector<std:
   return out;
 }
 
+Candidates restrict_candidates(const Candidates& all, const std::vector<std::pair<uint32_t, uint32_t>>& edges) {
+  std::unordered_set<uint64_t> kept;
+  for (const auto& [u, v] : edges) kept.insert(edge_key(u, v));
+  auto has = [&](uint32_t a, uint32_t b) { return kept.count(a < b ? edge_key(a, b) : edge_key(b, a)) > 0; };
+  Candidates out;
+  for (const auto& [key, apexes] : all) {
+    const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
+    if (!has(a, b)) continue;
+    std::vector<uint32_t> left;
+    for (uint32_t c : apexes)
+      if (has(b, c) && has(c, a)) left.push_back(c);
+    if (!left.empty()) out.emplace(key, std::move(left));
+  }
+  return out;
+}
+
 bool segments_cross(const Mesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
   if (a == c || a == d || b == c || b == d) return false;
   if (orient2d(m.point(a), m.point(b), m.point(c)) * orient2d(m.point(a), m.point(b), m.point(d)) >= 0) return false;

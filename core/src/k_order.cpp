@@ -1,6 +1,4 @@
 #include "hodt/k_order.hpp"
-#include "hodt/k_order_baker.hpp"
-#include "hodt/region_engine.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -11,7 +9,9 @@
 #include "hodt/fill_enumerator.hpp"
 #include "hodt/flip_search.hpp"
 #include "hodt/higher_order.hpp"
+#include "hodt/k_order_baker.hpp"
 #include "hodt/pair_measures.hpp"
+#include "hodt/region_engine.hpp"
 #include "hodt/region_model.hpp"
 #include "hodt/region_terms.hpp"
 #include "hodt/regions.hpp"
@@ -157,7 +157,8 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   }
   RegionLimits budgets;
   budgets.max_nodes_per_region = max_nodes;
-  RegionEngine engine(dt, o, k, budgets, options.progress);
+  const KOrderStructure structure(dt, k, options.progress);
+  RegionEngine engine(dt, o, structure, k, budgets, options.progress);
   Regions& R = engine.R;
   const Candidates& cand = engine.cand;
   const RegionTerms& terms = engine.terms;
@@ -220,7 +221,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // 10), bands of Delaunay triangles kept every lambda layers cut the regions too
   // large for the engine (slower: lambda runs of it).
   if (bounded && k >= 2 && options.method == Method::Approx) {
-    const KOrderBaker b = k_order_baker(dt, o, k, options.epsilon, max_nodes, options.progress);
+    const KOrderBaker b = k_order_baker(dt, o, structure, k, options.epsilon, max_nodes, options.progress);
     if (b.triangulation && better(sense, b.value, r.value))
       r.triangulation = std::move(*b.triangulation), r.value = b.value, how = b.summary();
     else if (b.shifts)

@@ -3,15 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-
 #include "hodt/baker.hpp"
-#include "hodt/error.hpp"
-#include "hodt/region_engine.hpp"
 
 namespace hodt {
 
 std::string KOrderBaker::summary() const {
-  return "Baker's shifting at order k: lambda " + std::to_string(lambda) + (reduced ? " (reduced to cut three times)" : "") + ", " + std::to_string(exact_shifts) + " of " +
+  return "Baker's shifting at order k: lambda " + std::to_string(lambda) +
+         (reduced ? " (reduced to cut three times)" : "") + ", " + std::to_string(exact_shifts) + " of " +
          std::to_string(shifts) + " shifts solved exactly";
 }
 
@@ -32,8 +30,8 @@ std::vector<uint8_t> baker_bands(const Mesh& dt, const std::vector<uint32_t>& de
   return forced;
 }
 
-KOrderBaker k_order_baker(const Mesh& dt, Objective o, uint32_t k, double epsilon, uint64_t max_nodes,
-                          const Progress& progress) {
+KOrderBaker k_order_baker(const Mesh& dt, Objective o, const KOrderStructure& structure, uint32_t k,
+                          double epsilon, uint64_t max_nodes, const Progress& progress) {
   KOrderBaker out;
   const std::vector<uint32_t> depth = hull_depth(dt, progress);
   uint32_t deepest = 0;
@@ -51,7 +49,7 @@ KOrderBaker k_order_baker(const Mesh& dt, Objective o, uint32_t k, double epsilo
   // Each shift gets a share of the enumeration budgets: all shifts together cost
   // about what one run of the engine on the whole instance may.
   RegionLimits budgets;
-  budgets.max_nodes_per_region = std::min(max_nodes, budgets.max_nodes_per_region);
+  budgets.max_nodes_per_region = max_nodes;
   budgets.max_total_states /= lambda;
   budgets.max_states_per_region_dp = std::min(budgets.max_states_per_region_dp, budgets.max_total_states);
   budgets.max_total_nodes /= lambda;
@@ -61,7 +59,7 @@ KOrderBaker k_order_baker(const Mesh& dt, Objective o, uint32_t k, double epsilo
     const Progress step = progress ? Progress([&](double done, double total) {
       return progress(s + (total > 0 ? done / total : 0), lambda);
     }) : Progress();
-    RegionEngine engine(dt, o, k, budgets, step, baker_bands(dt, depth, lambda, s));
+    RegionEngine engine(dt, o, structure, k, budgets, step, baker_bands(dt, depth, lambda, s));
     std::string refused;
     std::vector<uint32_t> x;
     if (auto exact = engine.exact(step, refused)) x = std::move(*exact), ++out.exact_shifts;

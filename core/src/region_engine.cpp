@@ -12,10 +12,14 @@ std::string region_summary(const Regions& R) {
   return std::to_string(choice) + " regions with a choice (up to " + std::to_string(largest) + " triangulations each)";
 }
 
-RegionEngine::RegionEngine(const Mesh& dt, Objective o, uint32_t k, const RegionLimits& budgets, const Progress& progress,
-                           const std::vector<uint8_t>& forced)
-    : R(k_order_skeleton(dt, k, progress, forced)),
-      cand(k_order_candidates(dt, k, R.useful, progress)),
+KOrderStructure::KOrderStructure(const Mesh& dt, uint32_t k, const Progress& progress)
+    : useful(useful_edges(dt, k, progress)), candidates(k_order_candidates(dt, k, useful, progress)) {}
+
+RegionEngine::RegionEngine(const Mesh& dt, Objective o, const KOrderStructure& structure, uint32_t k,
+                           const RegionLimits& budgets, const Progress& progress, const std::vector<uint8_t>& forced)
+    : R(k_order_skeleton(dt, k, structure.useful, progress, forced)),
+      restricted_(forced.empty() ? Candidates{} : restrict_candidates(structure.candidates, R.useful)),
+      cand(forced.empty() ? structure.candidates : restricted_),
       terms(dt, R, o, &cand),
       limits(budgets) {
   limits.candidates = &cand;

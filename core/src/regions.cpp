@@ -90,9 +90,13 @@ Mesh Regions::triangulation(const Mesh& dt, const std::vector<uint32_t>& state) 
 }
 
 Regions k_order_skeleton(const Mesh& dt, uint32_t k, const Progress& progress, const std::vector<uint8_t>& forced) {
+  return k_order_skeleton(dt, k, useful_edges(dt, k, progress), progress, forced);
+}
+
+Regions k_order_skeleton(const Mesh& dt, uint32_t k, const std::vector<std::pair<uint32_t, uint32_t>>& useful,
+                         const Progress& progress, const std::vector<uint8_t>& forced) {
   Regions out;
   out.order = k;
-  const auto useful = useful_edges(dt, k, progress);
   const std::vector<int32_t> start = vertex_halfedges(dt);
   // A Delaunay edge is fixed unless a useful non-Delaunay edge crosses it (one
   // that crosses a forced edge is not useful here: no triangulation keeping the

@@ -66,7 +66,8 @@ TEST_CASE("forced edges: the engine's optimum equals brute force over the k-OD t
     const Mesh dt = delaunay(validate_points(pts).xyz);
     if (dt.num_vertices() > kKOrderBruteForceMaxPoints) continue;
     const std::vector<uint32_t> depth = hull_depth(dt);
-    for (uint32_t k : {2u, 3u})
+    for (uint32_t k : {2u, 3u}) {
+      const KOrderStructure structure(dt, k, {});
       for (uint32_t s = 0; s < 2; ++s) {
         const std::vector<uint8_t> forced = baker_bands(dt, depth, 2, s);
         std::set<std::pair<uint32_t, uint32_t>> kept;
@@ -89,7 +90,7 @@ TEST_CASE("forced edges: the engine's optimum equals brute force over the k-OD t
         REQUIRE(have);  // (Delaunay keeps every band)
         for (size_t i = 0; i < best.size(); ++i) {
           const Objective o = objectives[i];
-          RegionEngine engine(dt, o, k, RegionLimits{}, {}, forced);
+          RegionEngine engine(dt, o, structure, k, RegionLimits{}, {}, forced);
           std::string refused;
           const auto x = engine.exact({}, refused);
           REQUIRE_MESSAGE(x, refused);
@@ -101,6 +102,7 @@ TEST_CASE("forced edges: the engine's optimum equals brute force over the k-OD t
           ++compared;
         }
       }
+    }
   }
   CHECK(compared >= 300);
 }
@@ -110,7 +112,7 @@ TEST_CASE("baker at order k: a k-OD answer between the bound and the optimum") {
     const FirstOrder fo = first_order(delaunay(validate_points(dem_points(400, seed)).xyz));
     for (Objective o : {Objective::MaxConvexEdges, Objective::MinMixedVertices}) {
       const Sense sense = info(o).sense;
-      const KOrderBaker b = k_order_baker(fo.base, o, 4, 0.9, 300'000);
+      const KOrderBaker b = k_order_baker(fo.base, o, KOrderStructure(fo.base, 4, {}), 4, 0.9, 300'000);
       REQUIRE(b.triangulation);
       CHECK(b.shifts == b.lambda);
       CHECK(is_k_order(*b.triangulation, fo.base, 4));

@@ -24,6 +24,10 @@ Candidates k_order_candidates(const Mesh& delaunay, uint32_t k,
                               const std::vector<std::pair<uint32_t, uint32_t>>& useful_edges,
                               const Progress& progress = {});
 
+// The candidates whose three edges are all among `edges` (u < v): the same as
+// k_order_candidates over that subset, without testing a circle again.
+Candidates restrict_candidates(const Candidates& all, const std::vector<std::pair<uint32_t, uint32_t>>& edges);
+
 // Do segments a b and c d cross at a point inside both (exact; sharing an
 // endpoint is not crossing)?
 bool segments_cross(const Mesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t d);

@@ -18,6 +18,7 @@
 #include "hodt/mesh.hpp"
 #include "hodt/objectives.hpp"
 #include "hodt/progress.hpp"
+#include "hodt/region_engine.hpp"
 
 namespace hodt {
 
@@ -35,7 +36,8 @@ struct KOrderBaker {
 std::vector<uint8_t> baker_bands(const Mesh& delaunay, const std::vector<uint32_t>& depth, uint32_t lambda,
                                  uint32_t shift);
 
-KOrderBaker k_order_baker(const Mesh& delaunay, Objective o, uint32_t k, double epsilon, uint64_t max_nodes,
-                          const Progress& progress = {});
+// structure: the instance's at order k (region_engine.hpp), restricted per shift.
+KOrderBaker k_order_baker(const Mesh& delaunay, Objective o, const KOrderStructure& structure, uint32_t k,
+                          double epsilon, uint64_t max_nodes, const Progress& progress = {});
 
 }  // namespace hodt

@@ -20,16 +20,27 @@ struct ListedBest {
   std::string how;
 };
 
+// What every engine on one instance at order k reads: its useful edges and
+// candidate triangles (computed once; Baker's shifts restrict them).
+struct KOrderStructure {
+  KOrderStructure(const Mesh& delaunay, uint32_t k, const Progress& progress);
+  std::vector<std::pair<uint32_t, uint32_t>> useful;
+  Candidates candidates;
+};
+
 struct RegionEngine {
-  // forced: Delaunay edges every triangulation keeps (regions.hpp).
-  // budgets: the enumeration's (regions.hpp; its candidates, terms and
-  // progress are set here).
-  RegionEngine(const Mesh& delaunay, Objective o, uint32_t k, const RegionLimits& budgets, const Progress& progress,
-               const std::vector<uint8_t>& forced = {});
+  // forced: Delaunay edges every triangulation keeps (regions.hpp); the
+  // structure must outlive the engine. budgets: the enumeration's (regions.hpp;
+  // its candidates, terms and progress are set here).
+  RegionEngine(const Mesh& delaunay, Objective o, const KOrderStructure& structure, uint32_t k,
+               const RegionLimits& budgets, const Progress& progress, const std::vector<uint8_t>& forced = {});
   RegionEngine(const RegionEngine&) = delete;
 
   Regions R;
-  const Candidates cand;
+ private:
+  const Candidates restricted_;  // (with forced edges: the structure's, restricted)
+ public:
+  const Candidates& cand;
   const RegionTerms terms;  // (reads R and cand)
   RegionLimits limits;
   RegionModel model;

@@ -74,6 +74,9 @@ struct RegionLimits {
 // (Baker's bands, k_order_baker.hpp); empty: none.
 Regions k_order_skeleton(const Mesh& delaunay, uint32_t k, const Progress& progress = {},
                          const std::vector<uint8_t>& forced = {});
+// The same from the useful k-OD edges (useful_edges), computed once.
+Regions k_order_skeleton(const Mesh& delaunay, uint32_t k, const std::vector<std::pair<uint32_t, uint32_t>>& useful,
+                         const Progress& progress, const std::vector<uint8_t>& forced = {});
 // Each region's k-OD triangulations (within the limits: a region over them keeps
 // the ones found and is marked incomplete).
 void enumerate_regions(const Mesh& delaunay, Regions& regions, const RegionLimits& limits = {});
