@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <unordered_map>
 
 #include "hodt/error.hpp"
 #include "hodt/words_hash.hpp"
@@ -11,16 +10,85 @@ namespace hodt {
 
 namespace {
 
-constexpr uint32_t kSeparator = UINT32_MAX;  // between the parts of a key
-
 // A partial fill, reduced to what its completions can tell apart.
 struct Partial {
   std::vector<uint64_t> open;     // the frontier, sorted
   std::vector<uint32_t> behind;   // per open edge, the kind of apex of the covered triangle on its right (apex terms)
   std::vector<uint32_t> around;   // per frontier vertex, by v: v, n, then its fan in n words (RegionTerms::extend_fan)
-  std::vector<SignatureEntry> signature;  // sorted
+  std::vector<uint32_t> signature;  // entries in SignatureEntry order: each its count of triangles, then theirs
   double value = 0;
   uint32_t node = UINT32_MAX;  // how it was reached (Node)
+};
+
+// The partial fills of one layer, one per key, as words in one array (a layer
+// holds up to hundreds of thousands: one allocation each would dominate).
+class Layer {
+ public:
+  struct Stored {
+    size_t at;           // its key's first word
+    uint32_t sizes[4];   // of open (words), behind, around, signature
+    double value;
+    uint32_t node;
+    size_t hash;
+  };
+  std::vector<Stored> states;
+
+  // Keeps c if no state has its key, or in place of that state if c is better.
+  template <class Better>
+  void offer(const Partial& c, Better&& better) {
+    key_.clear();
+    for (uint64_t e : c.open) key_.push_back(static_cast<uint32_t>(e >> 32)), key_.push_back(static_cast<uint32_t>(e));
+    const uint32_t sizes[4] = {static_cast<uint32_t>(key_.size()), static_cast<uint32_t>(c.behind.size()),
+                               static_cast<uint32_t>(c.around.size()), static_cast<uint32_t>(c.signature.size())};
+    for (const auto* part : {&c.behind, &c.around, &c.signature}) key_.insert(key_.end(), part->begin(), part->end());
+    size_t hash = WordsHash{}(key_);
+    for (uint32_t n : sizes) hash = hash * 31 + n;
+    if (2 * (states.size() + 1) > slots_.size()) grow();
+    const size_t mask = slots_.size() - 1;
+    for (size_t i = hash & mask;; i = (i + 1) & mask) {
+      const uint32_t s = slots_[i];
+      if (s == kEmpty) {
+        slots_[i] = static_cast<uint32_t>(states.size());
+        states.push_back({words_.size(), {sizes[0], sizes[1], sizes[2], sizes[3]}, c.value, c.node, hash});
+        words_.insert(words_.end(), key_.begin(), key_.end());
+        return;
+      }
+      Stored& t = states[s];
+      if (t.hash == hash && std::equal(t.sizes, t.sizes + 4, sizes) &&
+          std::equal(key_.begin(), key_.end(), words_.begin() + static_cast<std::ptrdiff_t>(t.at))) {
+        if (better(c.value, t.value)) t.value = c.value, t.node = c.node;  // (the same key: only these differ)
+        return;
+      }
+    }
+  }
+
+  // State i, unpacked into p.
+  void load(size_t i, Partial& p) const {
+    const Stored& t = states[i];
+    const uint32_t* w = words_.data() + t.at;
+    p.open.clear();
+    for (uint32_t j = 0; j < t.sizes[0]; j += 2) p.open.push_back(uint64_t{w[j]} << 32 | w[j + 1]);
+    w += t.sizes[0];
+    for (auto [part, n] : {std::pair{&p.behind, t.sizes[1]}, {&p.around, t.sizes[2]}, {&p.signature, t.sizes[3]}}) {
+      part->assign(w, w + n);
+      w += n;
+    }
+    p.value = t.value;
+    p.node = t.node;
+  }
+
+ private:
+  static constexpr uint32_t kEmpty = UINT32_MAX;
+  std::vector<uint32_t> words_, slots_, key_;
+  void grow() {
+    slots_.assign(std::max<size_t>(64, 2 * slots_.size()), kEmpty);
+    const size_t mask = slots_.size() - 1;
+    for (uint32_t s = 0; s < states.size(); ++s) {
+      size_t i = states[s].hash & mask;
+      while (slots_[i] != kEmpty) i = (i + 1) & mask;
+      slots_[i] = s;
+    }
+  }
 };
 
 struct Node {
@@ -42,35 +110,34 @@ class FillDp {
     std::sort(start.open.begin(), start.open.end());
     boundary_ = start.open;
     if (T_.reads_apexes()) start.behind.assign(start.open.size(), kNoApex);  // (the outside: never read)
-    std::vector<Partial> layer;
-    layer.push_back(std::move(start));
+    Layer layer;
+    layer.offer(start, [](double, double) { return false; });
     std::vector<BestFill> out;
     uint64_t states = 1, generated = 0;
-    while (!layer.empty()) {
-      std::vector<Partial> next;
-      std::unordered_map<std::vector<uint32_t>, uint32_t, WordsHash> index;
-      for (Partial& p : layer) {
+    Partial& p = parent_;
+    while (!layer.states.empty()) {
+      Layer next;
+      for (size_t i = 0; i < layer.states.size(); ++i) {
+        layer.load(i, p);
         if (p.open.empty()) {
           out.push_back({triangles_of(p.node), p.value});
           continue;
         }
         // (Children cost their keys even when merged: they count too, a quarter each.)
         if ((states + generated / 4) > max_states) return std::nullopt;
-        expand(p, [&](Partial&& child) {
+        expand(p, [&](const Partial& child) {
           ++generated;
-          auto [it, fresh] = index.try_emplace(key_of(child), static_cast<uint32_t>(next.size()));
-          if (fresh) next.push_back(std::move(child));
-          else if (T_.better(child.value, next[it->second].value)) next[it->second] = std::move(child);
+          next.offer(child, [&](double a, double b) { return T_.better(a, b); });
         });
       }
-      states += next.size();
-      if (used) *used += next.size();
+      states += next.states.size();
+      if (used) *used += next.states.size();
       if (states > max_states) return std::nullopt;
       if (progress && !progress(static_cast<double>(states), static_cast<double>(max_states))) throw Cancelled();
       // Record how each kept state was reached.
-      for (Partial& p : next) {
-        nodes_.push_back(pending_[p.node]);
-        p.node = static_cast<uint32_t>(nodes_.size() - 1);
+      for (Layer::Stored& t : next.states) {
+        nodes_.push_back(pending_[t.node]);
+        t.node = static_cast<uint32_t>(nodes_.size() - 1);
       }
       pending_.clear();
       layer = std::move(next);
@@ -89,6 +156,8 @@ class FillDp {
   std::vector<Node> pending_;  // this layer's children, before merging
   SignatureEntry entry_;
   std::vector<uint32_t> fan_;  // the fan being extended
+  Partial parent_, child_;     // the state being expanded, the child being built
+  std::vector<std::pair<uint64_t, uint32_t>> next_open_;
 
   std::vector<Tri> triangles_of(uint32_t node) const {
     std::vector<Tri> tris;
@@ -100,20 +169,6 @@ class FillDp {
   size_t candidates(uint64_t e) const {
     const auto it = cand_.find(e);
     return it == cand_.end() ? 0 : it->second.size();
-  }
-
-  std::vector<uint32_t> key_of(const Partial& p) const {
-    std::vector<uint32_t> k;
-    k.reserve(2 * p.open.size() + p.behind.size() + p.around.size() + 4 * p.signature.size() + 2);
-    for (uint64_t e : p.open) k.push_back(from(e)), k.push_back(to(e));
-    k.insert(k.end(), p.behind.begin(), p.behind.end());
-    k.push_back(kSeparator);
-    k.insert(k.end(), p.around.begin(), p.around.end());
-    for (const SignatureEntry& s : p.signature) {
-      k.push_back(kSeparator);
-      for (const Tri& t : s) k.insert(k.end(), t.begin(), t.end());
-    }
-    return k;
   }
 
   // Does open edge e touch a triangle already placed? (It does if a triangle
@@ -135,7 +190,19 @@ class FillDp {
     p.value = T_.add(p.value, term);
     if (entry_.empty()) return;
     if (keep_ && !std::binary_search(keep_->begin(), keep_->end(), RegionTerms::item_of(entry_))) return;
-    p.signature.insert(std::upper_bound(p.signature.begin(), p.signature.end(), entry_), entry_);
+    // After the entries that are not greater (SignatureEntry order: triangle by
+    // triangle, then by length, which is word by word).
+    const uint32_t* words = entry_.front().data();
+    const size_t n = 3 * entry_.size();
+    size_t pos = 0;
+    while (pos < p.signature.size()) {
+      const uint32_t* at = p.signature.data() + pos + 1;
+      const size_t m = 3 * size_t{p.signature[pos]};
+      if (std::lexicographical_compare(words, words + n, at, at + m)) break;
+      pos += 1 + m;
+    }
+    const auto where = p.signature.begin() + static_cast<std::ptrdiff_t>(pos);
+    p.signature.insert(p.signature.insert(where, static_cast<uint32_t>(entry_.size())) + 1, words, words + n);
   }
 
   // Edge a -> b gets its triangle on the left (apex c); `behind` is the apex on
@@ -163,9 +230,8 @@ class FillDp {
         take(p, T_.fan_done(r_, v, fan_, entry_));
         continue;
       }
-      std::vector<uint32_t> block{v, static_cast<uint32_t>(fan_.size())};
-      block.insert(block.end(), fan_.begin(), fan_.end());
-      p.around.insert(p.around.begin() + static_cast<std::ptrdiff_t>(pos), block.begin(), block.end());
+      const auto at = p.around.insert(p.around.begin() + static_cast<std::ptrdiff_t>(pos), fan_.begin(), fan_.end());
+      p.around.insert(at, {v, static_cast<uint32_t>(fan_.size())});
     }
   }
 
@@ -203,12 +269,15 @@ class FillDp {
           if (segments_cross(dt_, a, b, from(p.open[j]), to(p.open[j]))) ok = false;
       }
       if (!ok) continue;
-      Partial c;
+      Partial& c = child_;
       c.value = p.value;
-      c.signature = p.signature;
+      c.signature.assign(p.signature.begin(), p.signature.end());
       const bool edges = T_.reads_apexes();
       // The new frontier: without u -> v and the closed edges, with the opened ones.
-      std::vector<std::pair<uint64_t, uint32_t>> open;
+      std::vector<std::pair<uint64_t, uint32_t>>& open = next_open_;
+      open.clear();
+      c.open.clear();
+      c.behind.clear();
       for (size_t j = 0; j < p.open.size(); ++j)
         if (j != at && static_cast<int>(j) != close[0] && static_cast<int>(j) != close[1])
           open.push_back({p.open[j], edges ? p.behind[j] : 0});
@@ -222,7 +291,7 @@ class FillDp {
         c.open.push_back(e);
         if (edges) c.behind.push_back(b);
       }
-      c.around = p.around;
+      c.around.assign(p.around.begin(), p.around.end());
       if (T_.reads_edges()) {  // the edges this triangle completes: u -> v and the sides it closes
         auto behind = [&](int j) { return edges ? p.behind[static_cast<size_t>(j)] : kNoApex; };
         edge_complete(c, u, v, w, behind(static_cast<int>(at)));
@@ -236,7 +305,7 @@ class FillDp {
       }
       pending_.push_back({p.node, {u, v, w}});
       c.node = static_cast<uint32_t>(pending_.size() - 1);
-      emit(std::move(c));
+      emit(c);
     }
   }
 };

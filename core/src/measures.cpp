@@ -19,7 +19,10 @@ EdgeShape edge_shape(const double* u, const double* v, const double* w, const do
 
 VertexClass vertex_class(const double* p, const double* const* nb, uint32_t d, bool below_known, bool above_known) {
   // orient2d(p, nb[i], nb[j]) for all pairs, reused by every triple below.
-  std::vector<int8_t> o(size_t(d) * d);
+  // (On the stack for the usual degrees: this runs for every fan a solver weighs.)
+  int8_t small[32 * 32];
+  std::vector<int8_t> large(d > 32 ? size_t(d) * d : 0);
+  int8_t* o = d > 32 ? large.data() : small;
   for (uint32_t i = 0; i < d; ++i)
     for (uint32_t j = i + 1; j < d; ++j) {
       const int s = orient2d(p, nb[i], nb[j]);

@@ -328,24 +328,34 @@ StateDpResult eliminate(const StateGraph& input, const StateDpLimits& limits) {
         for (size_t c = 0; c < bag.count[p]; ++c) contrib[p][c] = stride * (*tab.map[j])[rep[p][c]];
         stride *= tab.dims[j];
       }
+      // Row by row of the first digit (the fastest), the others carried per row;
+      // the sum or max chosen once, outside the loop.
+      std::vector<size_t> first = contrib[0];
+      if (first.empty()) first.assign(c0, 0);
       digit.assign(k, 0);
-      size_t ti = 0;
-      for (size_t p = 0; p < k; ++p)
+      size_t ti = 0;  // the table index of the row's other digits
+      for (size_t p = 1; p < k; ++p)
         if (!contrib[p].empty()) ti += contrib[p][0];
-      for (size_t idx = 0; idx < total; ++idx) {
-        if (limits.progress && (idx & 0xFFFF) == 0xFFFF && !limits.progress(work + idx, order.work)) throw Cancelled();
-        combined[idx] = ops.add(combined[idx], tv[ti]);
-        for (size_t p = 0; p < k; ++p) {  // next joint class: the first digit is the fastest
-          const bool has = !contrib[p].empty();
-          if (has) ti -= contrib[p][digit[p]];
-          if (++digit[p] < bag.count[p]) {
-            if (has) ti += contrib[p][digit[p]];
-            break;
+      const auto rows = [&](auto add) {
+        for (size_t row = 0; row < total; row += c0) {
+          if (limits.progress && (row & 0xFFFF) < c0 && row && !limits.progress(work + row, order.work)) throw Cancelled();
+          double* out = combined.data() + row;
+          const double* in = tv.data() + ti;
+          for (size_t d = 0; d < c0; ++d) out[d] = add(out[d], in[first[d]]);
+          for (size_t p = 1; p < k; ++p) {  // next row
+            const bool has = !contrib[p].empty();
+            if (has) ti -= contrib[p][digit[p]];
+            if (++digit[p] < bag.count[p]) {
+              if (has) ti += contrib[p][digit[p]];
+              break;
+            }
+            digit[p] = 0;
+            if (has) ti += contrib[p][0];
           }
-          digit[p] = 0;
-          if (has) ti += contrib[p][0];
         }
-      }
+      };
+      if (g.combine == TermCombine::Sum) rows([](double a, double b) { return a + b; });
+      else rows([&](double a, double b) { return ops.add(a, b); });
       work += static_cast<double>(total);
       if (limits.progress && !limits.progress(work, order.work)) throw Cancelled();
       if (t >= g.factors.size()) std::vector<double>().swap(values[t]);  // (read once)
