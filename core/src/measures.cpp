@@ -139,10 +139,9 @@ double order_free_sum(std::vector<double> values, const Progress& progress) {
   return s;
 }
 
-double enclosing_circle(const double* a, const double* b, const double* c, const double* d) {
-  // Sorted, so that the radius does not depend on the order of the arguments.
-  const double* p[4] = {a, b, c, d};
-  std::sort(p, p + 4, xy_less);
+namespace {
+// The radius of four points sorted by xy_less, from scratch.
+double sorted_enclosing_circle(const double* const p[4]) {
   // The smallest enclosing circle has two or three of the points on its boundary:
   // the smallest candidate that contains all four (decided exactly) is the answer.
   double best = INFINITY;
@@ -163,6 +162,61 @@ double enclosing_circle(const double* a, const double* b, const double* c, const
     best = std::min(best, circumradius(t[0], t[1], t[2]));
   }
   return best;
+}
+
+// Grids (DEM rasters, at any offset) repeat a few shapes over and over, and there
+// every pair of cocircular cells needs the exact predicates. When the points'
+// pairwise differences are all exact, every step above (exact signs, lengths
+// and determinants of differences, xy order) depends on those differences
+// alone: four points with the same differences to the first get the same
+// radius, bit for bit. A small direct-mapped table remembers recent shapes.
+struct ShapeCache {
+  static constexpr size_t kSize = 1024;
+  struct Entry {
+    double key[6];
+    double radius;
+    bool used = false;
+  };
+  Entry entry[kSize];
+};
+
+bool shape_key(const double* const p[4], double key[6]) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      for (int c = 0; c < 2; ++c) {
+        const Difference d = difference(p[j][c], p[i][c]);
+        if (d.e != 0) return false;
+        if (i == 0) key[2 * (j - 1) + c] = d.d;
+      }
+  return true;
+}
+}  // namespace
+
+double enclosing_circle(const double* a, const double* b, const double* c, const double* d) {
+  // Sorted, so that the radius does not depend on the order of the arguments.
+  const double* p[4] = {a, b, c, d};
+  std::sort(p, p + 4, xy_less);
+  double key[6];
+  if (!shape_key(p, key)) return sorted_enclosing_circle(p);
+  static thread_local ShapeCache cache;
+  uint64_t h = 0;
+  for (double k : key) {
+    uint64_t bits;
+    std::memcpy(&bits, &k, sizeof bits);
+    h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
+  }
+  ShapeCache::Entry& e = cache.entry[(h >> 40) % ShapeCache::kSize];
+  if (e.used && std::memcmp(e.key, key, sizeof key) == 0) return e.radius;
+  e.radius = sorted_enclosing_circle(p);
+  std::memcpy(e.key, key, sizeof key);
+  e.used = true;
+  return e.radius;
+}
+
+double detail::enclosing_circle_uncached(const double* a, const double* b, const double* c, const double* d) {
+  const double* p[4] = {a, b, c, d};
+  std::sort(p, p + 4, xy_less);
+  return sorted_enclosing_circle(p);
 }
 
 double circumradius(const double* a, const double* b, const double* c) {

@@ -11,16 +11,17 @@ std::optional<std::vector<uint8_t>> TwoSat::solve(const Progress& progress, doub
   // Only variables in some clause, renumbered in order: a free variable's literals
   // are isolated, Tarjan gives them their own components in between the others',
   // which keeps the others' order, and false (its first literal) stays false.
-  std::vector<uint32_t> used;
-  used.reserve(2 * clauses_.size());
-  for (const Clause& c : clauses_) used.push_back(c.a >> 1), used.push_back(c.b >> 1);
+  // (Marks, not a sort: the bottleneck search solves one instance per threshold.)
+  uint32_t vars = n_;
+  for (const Clause& c : clauses_) vars = std::max({vars, (c.a >> 1) + 1, (c.b >> 1) + 1});
+  std::vector<uint32_t> local_var(vars, 0);
+  for (const Clause& c : clauses_) local_var[c.a >> 1] = local_var[c.b >> 1] = 1;
   report(progress, done, total);
-  std::sort(used.begin(), used.end());
-  used.erase(std::unique(used.begin(), used.end()), used.end());
+  std::vector<uint32_t> used;  // the variables in some clause, in order
+  for (uint32_t v = 0; v < vars; ++v)
+    if (local_var[v]) local_var[v] = static_cast<uint32_t>(used.size()), used.push_back(v);
   report(progress, done, total);
-  auto local = [&](uint32_t l) {
-    return 2 * static_cast<uint32_t>(std::lower_bound(used.begin(), used.end(), l >> 1) - used.begin()) + (l & 1);
-  };
+  auto local = [&](uint32_t l) { return 2 * local_var[l >> 1] + (l & 1); };
   const uint32_t nl = 2 * static_cast<uint32_t>(used.size());
   // Implication graph in compressed rows: (a or b) gives !a -> b and !b -> a.
   std::vector<Clause> cl(clauses_.size());

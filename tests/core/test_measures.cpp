@@ -1,6 +1,9 @@
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 #include "hodt/delaunay.hpp"
 #include "hodt/measures.hpp"
@@ -132,4 +135,32 @@ TEST_CASE("portable_atan and portable_angle agree with libm within 1 ulp") {
   CHECK(hodt::portable_angle(0, 1) == 0);
   CHECK(hodt::portable_angle(1, 0) == doctest::Approx(M_PI / 2));
   CHECK(hodt::portable_angle(0, -1) == doctest::Approx(M_PI));
+}
+
+TEST_CASE("enclosing circle: repeated grid shapes come from the cache, bit for bit") {
+  // A reprojected raster's cells (exact differences, a few shapes over and over),
+  // near-zero coordinates (differences not exact: never cached) and random quads.
+  std::vector<std::array<double, 3>> pts;
+  for (int j = 0; j < 12; ++j)
+    for (int i = 0; i < 12; ++i) pts.push_back({731012.3456789 + 74.98765 * i, 4100000.25 + 74.98765 * j, 0});
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) pts.push_back({-0.3 + 0.1 * i, 1e-17 * j - 0.25 + 0.1 * j, 0});
+  uint64_t s = 12345;
+  auto next = [&] { return (s = s * 6364136223846793005ull + 1442695040888963407ull) >> 11; };
+  size_t compared = 0;
+  for (int round = 0; round < 2; ++round)  // (the second round reads the cache)
+    for (size_t q = 0; q < 20000; ++q) {
+      const size_t base = next() % pts.size();
+      const double* p[4];
+      for (int k = 0; k < 4; ++k) {  // a quad near base: a cell, a pair of cells, or random points
+        const size_t near = (base + (next() % 3) + (next() % 3) * 12) % pts.size();
+        p[k] = pts[q % 3 == 0 ? next() % pts.size() : near].data();
+      }
+      if (p[0] == p[1] || p[0] == p[2] || p[0] == p[3] || p[1] == p[2] || p[1] == p[3] || p[2] == p[3]) continue;
+      const double cached = enclosing_circle(p[0], p[1], p[2], p[3]);
+      const double fresh = detail::enclosing_circle_uncached(p[3], p[1], p[0], p[2]);
+      REQUIRE(std::memcmp(&cached, &fresh, sizeof cached) == 0);
+      ++compared;
+    }
+  CHECK(compared > 20000);
 }

@@ -63,7 +63,12 @@ double normals_angle(const double n[3], const double m[3]);
 // rounding): below this bound.
 constexpr double kRightAngleBound = 1.6;
 // Radius of the smallest circle containing the four points (plane).
+// (Shapes repeated with exact coordinate differences, as in grids, come from a
+// cache: the same value, bit for bit.)
 double enclosing_circle(const double* a, const double* b, const double* c, const double* d);
+namespace detail {
+double enclosing_circle_uncached(const double* a, const double* b, const double* c, const double* d);
+}
 // Radius of the circle through three non-collinear points (plane); its
 // denominator is the accurate area, so a sliver's radius is accurate too.
 double circumradius(const double* a, const double* b, const double* c);
