@@ -85,9 +85,19 @@ BakerResult baker(const FactorGraph& g, const std::vector<uint32_t>& layer, doub
         sub.factors.push_back(g.factors[k]);
       }
     }
-    const DpResult dp = solve_exact(sub, limits);
+    DpResult dp = solve_exact(sub, limits);
+    report(limits.progress, shift + 1, r.lambda);
+    // The shift's copy of the factors, freed between progress points (at 100,000
+    // factors freeing them at once is a pause of tens of milliseconds).
+    while (!sub.factors.empty()) {
+      sub.factors.pop_back();
+      if (work.tick(8)) report(limits.progress, shift + 1, r.lambda);
+    }
     r.width = std::max(r.width, dp.decomposition.width);
+    dp.decomposition = {};
+    report(limits.progress, shift + 1, r.lambda);
     BakerShift s{shift, dp.value, g.evaluate(dp.choice), dp.value + dropped_top, dropped};
+    report(limits.progress, shift + 1, r.lambda);
     r.shifts.push_back(s);
     if (keep_shift_choices) r.shift_choices.push_back(dp.choice);
     r.bound = std::min(r.bound, s.bound);

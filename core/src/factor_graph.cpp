@@ -244,7 +244,7 @@ DpResult solve_exact(const FactorGraph& g, const DpLimits& limits) {
     size_t idx = 0;
     for (size_t j = 0; j < later[v].size(); ++j) idx |= size_t(r.choice[later[v][j]]) << j;
     r.choice[v] = best_value[v][idx];
-    if (work.tick(static_cast<double>(later[v].size() + 64))) report(limits.progress, n, n);
+    if ((i & 255) == 0 || work.tick(static_cast<double>(later[v].size() + 64))) report(limits.progress, n, n);
     // Freed here, between progress points, rather than all at once on return.
     std::vector<uint8_t>().swap(best_value[v]);
     std::vector<uint32_t>().swap(later[v]);
