@@ -36,7 +36,7 @@ std::vector<uint32_t> quad_layers(const FirstOrder& fo, const Progress& progress
   return layer;
 }
 
-BakerResult baker(const FactorGraph& g, const std::vector<uint32_t>& layer, double epsilon, const DpLimits& limits,
+BakerResult baker(FactorGraph& g, const std::vector<uint32_t>& layer, double epsilon, const DpLimits& limits,
                   uint32_t max_scope, bool keep_shift_choices) {
   if (g.sense != Sense::Max || g.combine != Combine::Sum)
     throw std::logic_error("baker: expects a maximised sum of non-negative factors");
@@ -64,40 +64,47 @@ BakerResult baker(const FactorGraph& g, const std::vector<uint32_t>& layer, doub
   r.bound = all_top;  // every factor at its best
   r.value = -INFINITY;
   r.width = 0;
+  // Each shift's graph borrows the factors it keeps (moved, not copied: at
+  // 100,000 factors a copy per shift, and freeing it, cost more than its DP's
+  // reading them), and gives them back even when its DP throws.
+  struct Lent {
+    FactorGraph& owner;
+    FactorGraph sub;
+    std::vector<uint32_t> from;  // per factor of sub, its index in owner
+    ~Lent() {
+      for (size_t i = 0; i < from.size(); ++i) owner.factors[from[i]] = std::move(sub.factors[i]);
+    }
+  };
   for (uint32_t shift = 0; shift < r.lambda; ++shift) {
     report(limits.progress, shift, r.lambda);
-    // Cuts after the layers l with l mod lambda == shift: a factor is dropped if
-    // its layers [lo, hi] contain such an l below hi.
-    FactorGraph sub;
-    sub.num_vars = g.num_vars;
-    sub.sense = g.sense;
-    sub.combine = g.combine;
-    sub.constant = g.constant;
     double dropped_top = 0;
     uint32_t dropped = 0;
-    for (size_t k = 0; k < nf; ++k) {
-      if (work.tick(static_cast<double>(32 + g.factors[k].table.size()))) report(limits.progress, shift, r.lambda);
-      const uint32_t first_cut = lo[k] + (shift + r.lambda - lo[k] % r.lambda) % r.lambda;
-      if (always[k] || first_cut < hi[k]) {
-        dropped_top += top[k];
-        ++dropped;
-      } else {
-        sub.factors.push_back(g.factors[k]);
+    DpResult dp;
+    {
+      // Cuts after the layers l with l mod lambda == shift: a factor is dropped
+      // if its layers [lo, hi] contain such an l below hi.
+      Lent lent{g, {}, {}};
+      FactorGraph& sub = lent.sub;
+      sub.num_vars = g.num_vars;
+      sub.sense = g.sense;
+      sub.combine = g.combine;
+      sub.constant = g.constant;
+      for (size_t k = 0; k < nf; ++k) {
+        if (work.tick(static_cast<double>(32 + g.factors[k].table.size()))) report(limits.progress, shift, r.lambda);
+        const uint32_t first_cut = lo[k] + (shift + r.lambda - lo[k] % r.lambda) % r.lambda;
+        if (always[k] || first_cut < hi[k]) {
+          dropped_top += top[k];
+          ++dropped;
+        } else {
+          sub.factors.push_back(std::move(g.factors[k]));
+          lent.from.push_back(static_cast<uint32_t>(k));
+        }
       }
-    }
-    DpResult dp = solve_exact(sub, limits);
-    report(limits.progress, shift + 1, r.lambda);
-    // The shift's copy of the factors, freed between progress points (at 100,000
-    // factors freeing them at once is a pause of tens of milliseconds).
-    while (!sub.factors.empty()) {
-      sub.factors.pop_back();
-      if (work.tick(8)) report(limits.progress, shift + 1, r.lambda);
+      dp = solve_exact(sub, limits);
     }
     r.width = std::max(r.width, dp.decomposition.width);
-    dp.decomposition = {};
     report(limits.progress, shift + 1, r.lambda);
     BakerShift s{shift, dp.value, g.evaluate(dp.choice), dp.value + dropped_top, dropped};
-    report(limits.progress, shift + 1, r.lambda);
     r.shifts.push_back(s);
     if (keep_shift_choices) r.shift_choices.push_back(dp.choice);
     r.bound = std::min(r.bound, s.bound);

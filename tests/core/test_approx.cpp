@@ -4,9 +4,11 @@
 
 #include "generators.hpp"
 #include "hodt/approx.hpp"
+#include "hodt/baker.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/error.hpp"
+#include "hodt/factor_models.hpp"
 #include "hodt/points.hpp"
 #include "hodt/solve.hpp"
 
@@ -114,4 +116,25 @@ TEST_CASE("long runs report progress and can be cancelled") {
   options.method = Method::Exact;
   const FirstOrder random = first_order(delaunay(uniform_points(3000, 5)));
   CHECK_THROWS_AS(solve(random, Objective::MinMixedVertices, options), Cancelled);
+}
+
+TEST_CASE("baker lends its graph's factors to each shift and returns them, also when a shift throws") {
+  const FirstOrder fo = first_order(delaunay(jittered_grid(12, 12, 0.35, 5)));
+  FactorGraph g = factor_model(fo, Objective::MaxConvexEdges);
+  const FactorGraph before = g;
+  auto same = [&] {
+    REQUIRE(g.factors.size() == before.factors.size());
+    for (size_t k = 0; k < g.factors.size(); ++k) {
+      CHECK(g.factors[k].scope == before.factors[k].scope);
+      CHECK(g.factors[k].table == before.factors[k].table);
+    }
+  };
+  const std::vector<uint32_t> layer = quad_layers(fo);
+  const BakerResult r = baker(g, layer, 0.5, DpLimits{});
+  CHECK(r.shifts.size() == r.lambda);
+  same();
+  DpLimits narrow;
+  narrow.max_width = 0;  // every thick layer is wider: the first shift throws
+  CHECK_THROWS_AS(baker(g, layer, 0.5, narrow), LimitError);
+  same();
 }

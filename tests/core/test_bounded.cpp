@@ -34,14 +34,11 @@ constexpr double kMaxGap = 0.050;
 
 // A refusal must come before the work it refuses (about 0.5 s natively; the
 // sanitizers' build runs three to four times slower).
-#if defined(__SANITIZE_ADDRESS__)
-constexpr double kRefusalSeconds = 3.0;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr double kRefusalSeconds = 3.0;
-#else
-constexpr double kRefusalSeconds = 1.5;
+#ifndef __has_feature  // (gcc before 14: it names AddressSanitizer __SANITIZE_ADDRESS__)
+#define __has_feature(x) 0
 #endif
+#if defined(__SANITIZE_ADDRESS__) || __has_feature(address_sanitizer)
+constexpr double kRefusalSeconds = 3.0;
 #else
 constexpr double kRefusalSeconds = 1.5;
 #endif

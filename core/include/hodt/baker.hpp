@@ -43,11 +43,12 @@ struct BakerResult {
   std::vector<Choice> shift_choices;  // per shift its choice, when asked for (explain)
 };
 
-// g: Sense::Max, Combine::Sum, non-negative tables (throws std::logic_error else).
-// factors with a scope of more than max_scope variables are always dropped (the
-// paper's degree cap for non-mixed vertices). Throws LimitError if a thick layer is
-// wider than limits.max_width.
-BakerResult baker(const FactorGraph& g, const std::vector<uint32_t>& layer, double epsilon,
+// g: Sense::Max, Combine::Sum, non-negative tables (throws std::logic_error else);
+// each shift borrows its factors and returns them, so g is as given on return
+// (also when it throws). Factors with a scope of more than max_scope variables
+// are always dropped (the paper's degree cap for non-mixed vertices). Throws
+// LimitError if a thick layer is wider than limits.max_width.
+BakerResult baker(FactorGraph& g, const std::vector<uint32_t>& layer, double epsilon,
                   const DpLimits& limits, uint32_t max_scope = UINT32_MAX, bool keep_shift_choices = false);
 
 // Local search that only improves: single flips, then pairs of quads sharing a
