@@ -5,6 +5,7 @@
 #include <set>
 #include <unordered_set>
 
+#include "hodt/dual_bound.hpp"
 #include "hodt/error.hpp"
 #include "hodt/fill_enumerator.hpp"
 #include "hodt/flip_search.hpp"
@@ -133,6 +134,62 @@ struct FirstOrderStart {
   }
 };
 
+// Counts: the dual bound (dual_bound.hpp), once the cheaper bounds left a gap.
+// Over a whole model it gives local search one more start, then proves the
+// best triangulation found optimal (r.optimal, r.method "exact") or finds the
+// optimum, by pruning and the DP over what is left. It needs every region
+// listed whole: the regions over the first budgets get larger ones (kept only
+// if then every region is whole). Returns the bound (nothing if it does not apply).
+std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& engine, KOrderResult& r, std::string& how,
+                                    const std::string& refused, const Progress& progress) {
+  Regions& R = engine.R;
+  RegionModel& model = engine.model;
+  const Sense sense = info(o).sense;
+  if (R.incomplete) {
+    Regions listed = R;
+    RegionLimits wide = engine.limits;
+    wide.only_incomplete = true;
+    wide.max_states_per_region = 100'000;
+    wide.max_states_per_region_dp = 500'000;
+    wide.max_total_states = 1'500'000;
+    enumerate_regions(dt, R, wide);
+    if (R.incomplete) R = std::move(listed);
+    else model = region_model(dt, R, o, {}, progress);
+  }
+  DualLimits dual;
+  dual.progress = progress;
+  const bool whole = !R.incomplete;
+  const DualProof proof(whole ? model.graph : relaxation(model.graph), dual, r.value);
+  if (!whole || !proof.applies()) return proof.bound();
+  StateDpLimits dl;
+  dl.progress = progress;
+  StateDpLimits window = dl;
+  window.max_table = 1 << 16;
+  const std::vector<uint32_t> x = improve_by_windows(model.graph, improve_states(model.graph, proof.decoded(), progress), window, 24);
+  Mesh m = R.triangulation(dt, model.region_states(x));
+  const double v = evaluate(o, m);
+  if (better(sense, v, r.value)) r.triangulation = std::move(m), r.value = v, how += ", then local search from the dual";
+  // (What is left after pruning is far smaller: its DP may use a larger table.)
+  StateDpLimits pruned = dl;
+  pruned.max_table = 1 << 24;
+  const DualProof::Proof p = proof.prove(r.value, pruned);
+  if (p.proven) {
+    if (p.better) {
+      r.triangulation = R.triangulation(dt, model.region_states(*p.better));
+      r.value = evaluate(o, r.triangulation);
+      if (r.value != p.better_value) throw std::logic_error("order k: the model's value differs from the triangulation's");
+    }
+    r.optimal = true;
+    r.bound.reset();
+    r.method = "exact";
+    r.details = region_summary(R) + "; the dual bound kept " + std::to_string(p.kept_states) + " of " +
+                std::to_string(p.states) + " states and the DP over them proved " +
+                (p.better ? std::string("its optimum") : "the heuristic's result (" + how + ")") +
+                " optimal (the DP alone refused: " + refused + ")";
+  }
+  return proof.bound();
+}
+
 // bounded: whether a heuristic answer needs its bound (the ladder's lower
 // orders serve only as starts).
 KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes,
@@ -176,7 +233,9 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
       return r;
     }
   }
-  if (options.method == Method::Exact) throw LimitError("exact at order " + std::to_string(k) + ": " + refused);
+  // Asked for exact: only counts may still be proven (by the dual bound, below).
+  const bool provable = bounded && !model.graph.relaxed_terms && integral_sum(model.graph);
+  if (options.method == Method::Exact && !provable) throw LimitError("exact at order " + std::to_string(k) + ": " + refused);
   // Otherwise: the best triangulation over the triangulations each region has
   // listed (the first order optimum's among them, so never worse than it), by the
   // same DP when its tables fit, else by local search; the bound is the
@@ -236,11 +295,11 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   }
   r.method = "heuristic";
   if (!bounded) return r;  // (not optimal: nothing proven)
+  StateDpLimits dl;
+  dl.progress = options.progress;
   // The bound: the model's relaxation, or the tighter one that reads the regions
   // too large to list through their views; when those views agree, a
   // triangulation that meets it.
-  StateDpLimits dl;
-  dl.progress = options.progress;
   double bound = tighter(sense, relaxation_bound(model.graph, dl), global);
   if (description.combine == TermCombine::Max) bound = tighter(sense, bound, terms.floor());
   ViewBoundLimits vl;
@@ -255,8 +314,16 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
              std::to_string(vb->rounds) + " rounds)";
     }
   }
+  if (provable && better(sense, bound, r.value)) {
+    if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, options.progress)) {
+      if (r.optimal) return r;
+      bound = tighter(sense, bound, *d);
+    }
+  }
   r.bound = sense == Sense::Min ? std::min(bound, r.value) : std::max(bound, r.value);
   r.optimal = *r.bound == r.value;
+  if (options.method == Method::Exact && !r.optimal)
+    throw LimitError("exact at order " + std::to_string(k) + ": " + refused + "; the dual bound left a gap");
   if (r.optimal) r.bound.reset();
   r.details = region_summary(R) + "; " + how + " (" +
               (refused.empty() ? std::string("approx asked") : "exact refused: " + refused) + ")";

@@ -200,6 +200,25 @@ void enumerate_regions(const Mesh& dt, Regions& out, const RegionLimits& limits)
       region.complete = false;
     }
   };
+  if (limits.only_incomplete && terms) {
+    // A second pass, of use only if every region ends up whole: the DP's larger
+    // budget for each region left incomplete, the largest first, stopping at
+    // the first that does not fit.
+    std::vector<uint32_t> order;
+    for (uint32_t r = 0; r < out.regions.size(); ++r)
+      if (!out.regions[r].complete) order.push_back(r);
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+      return out.regions[a].delaunay_triangles.size() > out.regions[b].delaunay_triangles.size();
+    });
+    for (uint32_t r : order)
+      if (dp_used >= limits.max_total_states ||
+          !by_dp(out.regions[r], r, std::min(limits.max_states_per_region_dp, limits.max_total_states - dp_used)) ||
+          !out.regions[r].complete)
+        break;
+    out.incomplete = 0;
+    for (const Region& region : out.regions) out.incomplete += !region.complete;
+    return;
+  }
   std::vector<uint8_t> done(out.regions.size(), 0);
   for (uint32_t pass = 0; pass < 2; ++pass) {
     for (size_t i = 0; i < out.regions.size(); ++i) {

@@ -8,62 +8,12 @@
 #include <random>
 
 #include "hodt/state_graph.hpp"
+#include "random_state_graph.hpp"
 
 using namespace hodt;
+using namespace hodt::test;
 
 namespace {
-
-StateGraph random_graph(std::mt19937& rng, TermCombine combine, Sense sense) {
-  auto below = [&](uint32_t n) { return static_cast<uint32_t>(rng() % n); };
-  StateGraph g;
-  g.combine = combine;
-  g.sense = sense;
-  const uint32_t n = 1 + below(7);
-  for (uint32_t x = 0; x < n; ++x) {
-    g.domain.push_back(1 + below(5));
-    g.unary.emplace_back();
-    for (uint32_t s = 0; s < g.domain[x]; ++s) g.unary[x].push_back(below(3) == 0 ? below(4) : 0);
-    g.unary_terms.push_back(1);
-    g.partial.push_back(0);
-  }
-  const uint32_t m = below(2 * n + 1);
-  for (uint32_t i = 0; i < m; ++i) {
-    StateFactor f;
-    const uint32_t size = 1 + below(std::min<uint32_t>(n, 3));
-    while (f.scope.size() < size) {
-      const uint32_t x = below(n);
-      if (std::find(f.scope.begin(), f.scope.end(), x) == f.scope.end()) f.scope.push_back(x);
-    }
-    size_t entries = 1;
-    for (uint32_t x : f.scope) {
-      const uint32_t classes = 1 + below(std::max<uint32_t>(1, g.domain[x] - 1));
-      std::vector<uint32_t> p(g.domain[x]);
-      for (auto& c : p) c = below(classes);
-      f.project.push_back(p);
-      f.dims.push_back(classes);
-      entries *= classes;
-    }
-    for (size_t e = 0; e < entries; ++e) f.table.push_back(below(5));
-    g.factors.push_back(std::move(f));
-  }
-  return g;
-}
-
-// The best value over every assignment.
-double enumerate_best(const StateGraph& g) {
-  std::vector<uint32_t> x(g.domain.size(), 0);
-  double best = evaluate_states(g, x);
-  for (;;) {
-    size_t i = 0;
-    for (; i < x.size(); ++i) {
-      if (++x[i] < g.domain[i]) break;
-      x[i] = 0;
-    }
-    if (i == x.size()) return best;
-    const double v = evaluate_states(g, x);
-    if (g.sense == Sense::Min ? v < best : v > best) best = v;
-  }
-}
 
 // 3000 random graphs, in turn sum/min, sum/max and max/min (the three kinds the
 // objectives make).
@@ -72,7 +22,7 @@ void for_random_graphs(uint32_t seed, const std::function<void(int, std::mt19937
   const std::pair<TermCombine, Sense> kinds[] = {
       {TermCombine::Sum, Sense::Min}, {TermCombine::Sum, Sense::Max}, {TermCombine::Max, Sense::Min}};
   for (int trial = 0; trial < 3000; ++trial) {
-    const StateGraph g = random_graph(rng, kinds[trial % 3].first, kinds[trial % 3].second);
+    const StateGraph g = random_state_graph(rng, kinds[trial % 3].first, kinds[trial % 3].second);
     CAPTURE(trial);
     check(trial, rng, g);
   }

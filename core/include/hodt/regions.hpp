@@ -66,6 +66,10 @@ struct RegionLimits {
   // (a long strip with few signatures needs a few hundred; most others fail fast).
   uint32_t max_region_triangles = 64;
   uint64_t large_region_states = 5'000;
+  // A second pass with larger budgets, of use only if it lists every region
+  // whole (with terms): the regions already whole are kept, the others get the
+  // DP, the largest first, until one does not fit.
+  bool only_incomplete = false;
   Progress progress;
 };
 

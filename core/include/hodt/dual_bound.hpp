@@ -1,0 +1,77 @@
+// A proof for sums too wide for the exact DP (state_graph.hpp).
+//
+// The dual of the local-polytope relaxation: messages from each factor to the
+// classes of each of its variables move value between the factor and the
+// variable, so any messages leave every assignment's value unchanged, and the
+// sum of every piece's own best (each variable's best state, each factor's best
+// entry) bounds the optimum. Block coordinate ascent (MPLP, Globerson and
+// Jaakkola 2007) raises that bound. On graphs of integer values the messages
+// live on a dyadic grid, so every sum is exact: the bound is a proof, not an
+// estimate.
+//
+// With an incumbent, a state whose reduced cost alone takes the bound past the
+// incumbent cannot be in a better assignment, nor can a factor entry: both are
+// dropped, and the exact DP over what remains (usually far narrower) either
+// finds the better assignment or proves the incumbent optimal.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "hodt/state_graph.hpp"
+
+namespace hodt {
+
+struct DualLimits {
+  // Factors sharing variables are joined into clusters of up to this many table
+  // entries first (a tighter relaxation; 1: none).
+  double cluster_entries = 4096;
+  uint32_t max_sweeps = 400;  // passes over every factor
+  // Rounds of proving: each prunes by the bound, tries the DP over what is
+  // left, else raises the bound over what is left (higher) and prunes again.
+  uint32_t max_rounds = 4;
+  // Stop when a pass raises the bound by less than this (in the objective's units).
+  double min_gain = 1e-3;
+  Progress progress;
+};
+
+// A sum whose every value is an integer of moderate size (counts): what the
+// bound can prove exactly.
+bool integral_sum(const StateGraph& g);
+
+// The ascent, run once; then bounds, a decoded start, and proofs of incumbents.
+class DualProof {
+ public:
+  // stop_at: the ascent may stop once its bound proves an assignment of this
+  // value optimal. Applies to sum graphs whose every value is a moderate
+  // integer (counts), with no relaxed terms and no partial variables.
+  DualProof(const StateGraph& g, const DualLimits& limits = {}, std::optional<double> stop_at = std::nullopt);
+  ~DualProof();
+  DualProof(const DualProof&) = delete;
+
+  bool applies() const;
+  // No assignment is better (rounded to the integer side; nothing if not applies()).
+  std::optional<double> bound() const;
+  uint32_t sweeps() const;
+  // Per variable, its best state under the final messages: a start for local
+  // search (often far from any incumbent's neighbourhood).
+  std::vector<uint32_t> decoded() const;
+  // Proves an incumbent (an assignment's value) optimal or finds a better
+  // optimum: pruning by the bound, then the exact DP over what is left (a
+  // LimitError there leaves `proven` false).
+  struct Proof {
+    bool proven = false;                          // the incumbent, or `better`, is optimal
+    std::optional<std::vector<uint32_t>> better;  // an optimum better than the incumbent
+    double better_value = 0;
+    uint64_t states = 0, kept_states = 0;         // before and after pruning
+    uint64_t entries = 0, kept_entries = 0;       // factor table entries, the same
+  };
+  Proof prove(double incumbent, const StateDpLimits& dp_limits = {}) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace hodt

@@ -1,0 +1,545 @@
+#include "hodt/dual_bound.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "hodt/error.hpp"
+
+namespace hodt {
+
+namespace {
+
+// Messages are multiples of 2^-20 and every value stays below 2^31 in
+// magnitude, so each sum of them is exact in a double (53 bits).
+constexpr int kGridBits = 20;
+constexpr double kLargest = 0x1p31;
+
+double on_grid(double x) { return std::ldexp(std::nearbyint(std::ldexp(x, kGridBits)), -kGridBits); }
+bool small_integer(double v) { return std::isfinite(v) && v == std::nearbyint(v) && std::fabs(v) < 0x1p24; }
+
+// Per table entry, its class at each scope position (first position fastest).
+template <class Visit>
+void for_entries(const StateFactor& f, Visit visit) {
+  std::vector<uint32_t> c(f.scope.size(), 0);
+  for (size_t e = 0; e < f.table.size(); ++e) {
+    visit(e, c);
+    for (size_t j = 0; j < c.size(); ++j) {
+      if (++c[j] < f.dims[j]) break;
+      c[j] = 0;
+    }
+  }
+}
+
+// Along scope position j of a table (its stride `inner`, its classes d): adds
+// w[class] to every entry, or takes per class the least entry.
+void add_along(std::vector<double>& t, size_t inner, size_t d, const double* w) {
+  for (size_t o = 0; o < t.size(); o += inner * d)
+    for (size_t c = 0; c < d; ++c) {
+      double* p = t.data() + o + c * inner;
+      for (size_t i = 0; i < inner; ++i) p[i] += w[c];
+    }
+}
+void min_along(const std::vector<double>& t, size_t inner, size_t d, double* out) {
+  std::fill(out, out + d, INFINITY);
+  for (size_t o = 0; o < t.size(); o += inner * d)
+    for (size_t c = 0; c < d; ++c) {
+      const double* p = t.data() + o + c * inner;
+      for (size_t i = 0; i < inner; ++i) out[c] = std::min(out[c], p[i]);
+    }
+}
+
+// The ascent on a simplified graph, in min form (every value times `sign`).
+struct Ascent {
+  const StateGraph& g;
+  double sign;
+  std::vector<std::vector<double>> unary;             // reparametrised, per variable and state
+  std::vector<std::vector<std::vector<double>>> msg;  // per factor, scope position and class
+  std::vector<double> factor_least;                   // per factor: its least reparametrised entry
+  // Updates are numbered: per variable the last that changed a message to it,
+  // per factor its last.
+  uint64_t clock = 1;
+  std::vector<uint64_t> changed, updated;
+  bool in_range = true;
+
+  explicit Ascent(const StateGraph& graph) : g(graph), sign(graph.sense == Sense::Min ? 1.0 : -1.0) {
+    for (const auto& u : g.unary) {
+      unary.emplace_back(u);
+      for (double& v : unary.back()) v *= sign;
+    }
+    for (const StateFactor& f : g.factors) {
+      msg.emplace_back();
+      for (uint32_t d : f.dims) msg.back().emplace_back(d, 0.0);
+    }
+    for (size_t fi = 0; fi < g.factors.size(); ++fi) {
+      const std::vector<double> t = reparametrised(fi);
+      factor_least.push_back(*std::min_element(t.begin(), t.end()));
+    }
+    changed.assign(g.domain.size(), 1);
+    updated.assign(g.factors.size(), 0);
+  }
+
+  // Factor fi's table less its messages (exact: dyadic values in range).
+  std::vector<double> reparametrised(size_t fi) const {
+    const StateFactor& f = g.factors[fi];
+    std::vector<double> t(f.table);
+    for (double& v : t) v *= sign;
+    std::vector<double> w;
+    size_t inner = 1;
+    for (size_t j = 0; j < f.scope.size(); ++j) {
+      w.clear();
+      for (double v : msg[fi][j]) w.push_back(-v);
+      add_along(t, inner, f.dims[j], w.data());
+      inner *= f.dims[j];
+    }
+    return t;
+  }
+
+  // MPLP's block update of one factor: everything its variables hold (their
+  // best state per class, its own message taken back) joins the table, and the
+  // table's min-marginals go back to the variables in equal shares. The bound
+  // never falls (the minimum of a sum is at least the sum of the minima).
+  void update(size_t fi, WorkCounter& work, const Progress& progress, double sweep, double sweeps) {
+    const StateFactor& f = g.factors[fi];
+    const size_t m = f.scope.size();
+    // The update reads only the other factors' messages at its variables: if
+    // none changed since its last update, it would change nothing.
+    if (std::all_of(f.scope.begin(), f.scope.end(), [&](uint32_t x) { return changed[x] <= updated[fi]; })) return;
+    updated[fi] = ++clock;
+    std::vector<std::vector<double>> u(m), marginal(m);
+    std::vector<double> joint(f.table);
+    for (double& v : joint) v *= sign;
+    size_t inner = 1;
+    for (size_t j = 0; j < m; ++j) {
+      u[j].assign(f.dims[j], INFINITY);
+      const std::vector<double>& ux = unary[f.scope[j]];
+      for (size_t s = 0; s < ux.size(); ++s) {
+        const uint32_t c = f.project[j][s];
+        u[j][c] = std::min(u[j][c], ux[s]);
+      }
+      for (uint32_t c = 0; c < f.dims[j]; ++c) u[j][c] -= msg[fi][j][c];
+      add_along(joint, inner, f.dims[j], u[j].data());
+      inner *= f.dims[j];
+      if (work.tick(static_cast<double>(ux.size() + joint.size()))) report(progress, sweep, sweeps);
+    }
+    inner = 1;
+    for (size_t j = 0; j < m; ++j) {
+      marginal[j].resize(f.dims[j]);
+      min_along(joint, inner, f.dims[j], marginal[j].data());
+      inner *= f.dims[j];
+    }
+    for (size_t j = 0; j < m; ++j) {
+      std::vector<double> next(f.dims[j]);
+      for (uint32_t c = 0; c < f.dims[j]; ++c) {
+        next[c] = on_grid(marginal[j][c] / static_cast<double>(m) - u[j][c]);
+        if (!(std::fabs(next[c]) < kLargest / 4)) in_range = false;
+      }
+      if (!in_range) return;
+      if (next == msg[fi][j]) continue;
+      std::vector<double>& ux = unary[f.scope[j]];
+      for (size_t s = 0; s < ux.size(); ++s) {
+        const uint32_t c = f.project[j][s];
+        ux[s] += next[c] - msg[fi][j][c];
+      }
+      msg[fi][j].swap(next);
+      changed[f.scope[j]] = clock;
+    }
+    const std::vector<double> t = reparametrised(fi);
+    factor_least[fi] = *std::min_element(t.begin(), t.end());
+  }
+
+  // The bound: each piece at its best, summed exactly (nothing when a value
+  // left the exact range).
+  std::optional<double> bound() const {
+    double total = sign * g.constant, magnitude = std::fabs(total);
+    for (const auto& u : unary) {
+      const double b = *std::min_element(u.begin(), u.end());
+      total += b, magnitude += std::fabs(b);
+    }
+    for (double b : factor_least) total += b, magnitude += std::fabs(b);
+    if (!in_range || !(magnitude < kLargest)) return std::nullopt;
+    return total;
+  }
+};
+
+// Factors that share variables, joined into one table while it stays within
+// `max_entries`: the relaxation then holds each cluster's joint, not only its
+// factors' (cycles inside a cluster are exact), and its bound is tighter.
+StateGraph clustered(const StateGraph& g, double max_entries, const Progress& progress) {
+  const size_t nf = g.factors.size();
+  std::vector<std::vector<uint32_t>> factors_of(g.domain.size());
+  for (uint32_t i = 0; i < nf; ++i)
+    for (uint32_t x : g.factors[i].scope) factors_of[x].push_back(i);
+  StateGraph h = g;
+  h.factors.clear();
+  std::vector<uint8_t> taken(nf, 0);
+  std::vector<uint32_t> pair;  // joint class ids
+  for (uint32_t seed = 0; seed < nf; ++seed) {
+    if (taken[seed]) continue;
+    report(progress, seed, static_cast<double>(nf));
+    // The cluster: its factors, and per variable its joint classes.
+    std::vector<uint32_t> members;
+    StateFactor c;
+    auto join = [&](const StateFactor& f, bool commit) {
+      double size = 1;
+      std::vector<std::pair<size_t, uint32_t>> counts;  // (cluster position or new, count)
+      for (size_t j = 0; j < f.scope.size(); ++j) {
+        const size_t p = static_cast<size_t>(std::find(c.scope.begin(), c.scope.end(), f.scope[j]) - c.scope.begin());
+        if (p == c.scope.size()) {
+          size *= f.dims[j];
+          if (commit) c.scope.push_back(f.scope[j]), c.project.push_back(f.project[j]), c.dims.push_back(f.dims[j]);
+          continue;
+        }
+        const uint32_t d = f.dims[j];
+        pair.assign(static_cast<size_t>(c.dims[p]) * d, UINT32_MAX);
+        uint32_t next = 0;
+        std::vector<uint32_t> joint(c.project[p].size());
+        for (size_t s = 0; s < joint.size(); ++s) {
+          uint32_t& id = pair[static_cast<size_t>(c.project[p][s]) * d + f.project[j][s]];
+          if (id == UINT32_MAX) id = next++;
+          joint[s] = id;
+        }
+        counts.push_back({p, next});
+        if (commit) c.project[p].swap(joint), c.dims[p] = next;
+      }
+      if (!commit)
+        for (size_t p = 0; p < c.scope.size(); ++p) {
+          const auto it = std::find_if(counts.begin(), counts.end(), [&](const auto& q) { return q.first == p; });
+          size *= it == counts.end() ? c.dims[p] : it->second;
+        }
+      return size;
+    };
+    join(g.factors[seed], true);
+    members.push_back(seed);
+    taken[seed] = 1;
+    for (size_t head = 0; head < members.size(); ++head)
+      for (uint32_t x : g.factors[members[head]].scope)
+        for (uint32_t f : factors_of[x]) {
+          if (taken[f] || join(g.factors[f], false) > max_entries) continue;
+          join(g.factors[f], true);
+          members.push_back(f);
+          taken[f] = 1;
+        }
+    // Its table: per entry, the members' values at a state of each class.
+    std::vector<std::vector<uint32_t>> rep(c.scope.size());
+    size_t entries = 1;
+    for (size_t p = 0; p < c.scope.size(); ++p) {
+      rep[p].assign(c.dims[p], 0);
+      for (uint32_t s = 0; s < c.project[p].size(); ++s) rep[p][c.project[p][s]] = s;
+      entries *= c.dims[p];
+    }
+    c.table.assign(entries, 0.0);
+    c.num_terms = 0;
+    std::vector<uint32_t> state(g.domain.size(), 0);
+    for_entries(c, [&](size_t e, const std::vector<uint32_t>& cl) {
+      for (size_t p = 0; p < cl.size(); ++p) state[c.scope[p]] = rep[p][cl[p]];
+      for (uint32_t f : members) {
+        const StateFactor& m = g.factors[f];
+        size_t idx = 0, stride = 1;
+        for (size_t j = 0; j < m.scope.size(); ++j) idx += stride * m.project[j][state[m.scope[j]]], stride *= m.dims[j];
+        c.table[e] += m.table[idx];
+      }
+    });
+    for (uint32_t f : members) c.num_terms += g.factors[f].num_terms;
+    h.factors.push_back(std::move(c));
+  }
+  return h;
+}
+
+bool graph_applies(const StateGraph& g) {
+  return integral_sum(g) && !g.relaxed_terms &&
+         std::none_of(g.partial.begin(), g.partial.end(), [](uint8_t p) { return p != 0; });
+}
+
+struct Raised {
+  Ascent ascent;
+  double bound;  // min form
+  uint32_t sweeps;
+};
+
+// The ascent until it stalls, the sweeps run out, or the bound (min form)
+// reaches `enough`.
+std::optional<Raised> raise(const StateGraph& g, const DualLimits& limits, double enough) {
+  Raised r{Ascent(g), 0, 0};
+  std::optional<double> b = r.ascent.bound();
+  WorkCounter work;
+  work.every = 1 << 16;
+  while (b && r.sweeps < limits.max_sweeps && *b < enough) {
+    report(limits.progress, r.sweeps, limits.max_sweeps);
+    const size_t n = g.factors.size();
+    for (size_t i = 0; i < n; ++i) r.ascent.update(r.sweeps % 2 ? n - 1 - i : i, work, limits.progress, r.sweeps, limits.max_sweeps);
+    ++r.sweeps;
+    const std::optional<double> next = r.ascent.bound();
+    if (!next) return std::nullopt;
+    const bool stalled = *next - *b < limits.min_gain;
+    b = next;
+    if (stalled) break;
+  }
+  if (!b) return std::nullopt;
+  r.bound = *b;
+  return r;
+}
+
+// The graph the ascent runs on: simplified, then clustered.
+StateGraph prepared(const StateGraph& input, const DualLimits& limits) {
+  StateGraph g = input;
+  simplify(g, limits.progress);
+  return limits.cluster_entries > 1 ? clustered(g, limits.cluster_entries, limits.progress) : g;
+}
+
+// States that every factor reads alike differ only in their unary terms: the
+// best of each such class stands for all of them (no assignment gets worse).
+// Returns, per variable and new state, the original state.
+std::vector<std::vector<uint32_t>> keep_best_of_alike(StateGraph& g) {
+  std::vector<std::vector<std::pair<size_t, size_t>>> reads(g.domain.size());  // (factor, position)
+  for (size_t fi = 0; fi < g.factors.size(); ++fi)
+    for (size_t j = 0; j < g.factors[fi].scope.size(); ++j) reads[g.factors[fi].scope[j]].push_back({fi, j});
+  std::vector<std::vector<uint32_t>> original(g.domain.size());
+  std::vector<uint32_t> cls, pair;
+  for (size_t x = 0; x < g.domain.size(); ++x) {
+    const uint32_t dom = g.domain[x];
+    cls.assign(dom, 0);
+    uint32_t count = 1;
+    for (const auto& [fi, j] : reads[x]) {
+      const std::vector<uint32_t>& p = g.factors[fi].project[j];
+      const uint32_t d = g.factors[fi].dims[j];
+      pair.assign(static_cast<size_t>(count) * d, UINT32_MAX);
+      uint32_t next = 0;
+      for (uint32_t s = 0; s < dom; ++s) {
+        uint32_t& id = pair[static_cast<size_t>(cls[s]) * d + p[s]];
+        if (id == UINT32_MAX) id = next++;
+        cls[s] = id;
+      }
+      count = next;
+    }
+    std::vector<uint32_t>& best = original[x];
+    best.assign(count, UINT32_MAX);
+    for (uint32_t s = 0; s < dom; ++s)
+      if (best[cls[s]] == UINT32_MAX || better(g.sense, g.unary[x][s], g.unary[x][best[cls[s]]])) best[cls[s]] = s;
+    std::vector<double> unary;
+    for (uint32_t s : best) unary.push_back(g.unary[x][s]);
+    g.unary[x].swap(unary);
+    g.domain[x] = count;
+    for (const auto& [fi, j] : reads[x]) {
+      std::vector<uint32_t> p;
+      for (uint32_t s : best) p.push_back(g.factors[fi].project[j][s]);
+      g.factors[fi].project[j].swap(p);
+    }
+  }
+  return original;
+}
+
+// A piece held at one of its values: the bound over the assignments that read
+// it, per variable state and per factor entry (each also lifts the other
+// pieces it touches to their best over the states or entries it allows).
+struct Reduced {
+  std::vector<std::vector<double>> state;  // per variable and state
+  std::vector<std::vector<double>> entry;  // per factor and entry
+};
+
+Reduced reduced_bounds(const StateGraph& g, const Ascent& a, double lb) {
+  Reduced r;
+  std::vector<double> least_unary;
+  for (const auto& u : a.unary) least_unary.push_back(*std::min_element(u.begin(), u.end()));
+  for (const auto& u : a.unary) r.state.emplace_back(u.size(), lb);
+  for (size_t fi = 0; fi < g.factors.size(); ++fi) {
+    const StateFactor& f = g.factors[fi];
+    // Per scope position and class: the best state of the class (above the variable's best),
+    // and the factor's best entry with that class (above its best).
+    std::vector<std::vector<double>> class_state(f.scope.size()), class_entry(f.scope.size());
+    for (size_t j = 0; j < f.scope.size(); ++j) {
+      class_state[j].assign(f.dims[j], INFINITY);
+      class_entry[j].assign(f.dims[j], INFINITY);
+      const auto& u = a.unary[f.scope[j]];
+      for (size_t s = 0; s < u.size(); ++s) {
+        double& b = class_state[j][f.project[j][s]];
+        b = std::min(b, u[s] - least_unary[f.scope[j]]);
+      }
+    }
+    const std::vector<double> values = a.reparametrised(fi);
+    const double least = *std::min_element(values.begin(), values.end());
+    r.entry.emplace_back(f.table.size());
+    for_entries(f, [&](size_t e, const std::vector<uint32_t>& c) {
+      double b = lb + values[e] - least;
+      for (size_t j = 0; j < c.size(); ++j) {
+        b += class_state[j][c[j]];
+        class_entry[j][c[j]] = std::min(class_entry[j][c[j]], values[e] - least);
+      }
+      r.entry.back()[e] = b;
+    });
+    for (size_t j = 0; j < f.scope.size(); ++j) {
+      auto& sb = r.state[f.scope[j]];
+      for (size_t s = 0; s < sb.size(); ++s) sb[s] += class_entry[j][f.project[j][s]];
+    }
+  }
+  for (size_t x = 0; x < a.unary.size(); ++x)
+    for (size_t s = 0; s < a.unary[x].size(); ++s) r.state[x][s] += a.unary[x][s] - least_unary[x];
+  return r;
+}
+
+}  // namespace
+
+bool integral_sum(const StateGraph& g) {
+  if (g.combine != TermCombine::Sum || !small_integer(g.constant)) return false;
+  for (const auto& u : g.unary)
+    if (u.empty() || !std::all_of(u.begin(), u.end(), small_integer)) return false;
+  for (const StateFactor& f : g.factors)
+    if (!std::all_of(f.table.begin(), f.table.end(), small_integer)) return false;
+  return true;
+}
+
+struct DualProof::Impl {
+  DualLimits limits;
+  StateGraph g;  // prepared, with the best of alike states only
+  std::vector<std::vector<uint32_t>> original;  // per variable and state of g: the input's state
+  std::optional<Raised> raised;
+};
+
+DualProof::DualProof(const StateGraph& input, const DualLimits& limits, std::optional<double> stop_at)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->limits = limits;
+  if (!graph_applies(input)) return;
+  impl_->g = prepared(input, limits);
+  impl_->original = keep_best_of_alike(impl_->g);
+  const double sign = impl_->g.sense == Sense::Min ? 1.0 : -1.0;
+  // (Integer values: a bound above incumbent - 1 proves the incumbent.)
+  if (auto r = raise(impl_->g, limits, stop_at ? sign * *stop_at - 1 : INFINITY)) impl_->raised.emplace(std::move(*r));
+}
+
+DualProof::~DualProof() = default;
+
+bool DualProof::applies() const { return impl_->raised.has_value(); }
+
+std::optional<double> DualProof::bound() const {
+  if (!impl_->raised) return std::nullopt;
+  const double sign = impl_->g.sense == Sense::Min ? 1.0 : -1.0;
+  return sign * std::ceil(impl_->raised->bound);
+}
+
+uint32_t DualProof::sweeps() const { return impl_->raised ? impl_->raised->sweeps : 0; }
+
+std::vector<uint32_t> DualProof::decoded() const {
+  std::vector<uint32_t> x;
+  if (impl_->raised)
+    for (const auto& u : impl_->raised->ascent.unary)
+      x.push_back(impl_->original[x.size()][static_cast<size_t>(std::min_element(u.begin(), u.end()) - u.begin())]);
+  return x;
+}
+
+namespace {
+
+// What is left of a graph for the assignments better than an incumbent: the
+// states whose bound allows one, and the entries that do (the others become
+// `forbidden` in the DP's graph, and `penalty` more in the ascent's: either way
+// no assignment that reads them beats the incumbent).
+struct Pruned {
+  StateGraph dp, ascent;
+  std::vector<std::vector<uint32_t>> kept;  // per variable: its kept states
+  bool empty = false;                       // a variable kept no state
+  bool any = false;                         // something was pruned
+};
+
+Pruned prune(const StateGraph& g, const Reduced& red, double ub, double penalty, DualProof::Proof& proof) {
+  Pruned p;
+  const double sign = g.sense == Sense::Min ? 1.0 : -1.0;
+  StateGraph& h = p.dp;
+  h.combine = g.combine, h.sense = g.sense, h.term_max = g.term_max, h.constant = g.constant;
+  p.kept.resize(g.domain.size());
+  for (size_t x = 0; x < g.domain.size(); ++x) {
+    h.unary.emplace_back();
+    for (uint32_t s = 0; s < g.domain[x]; ++s)
+      if (red.state[x][s] <= ub - 1) p.kept[x].push_back(s), h.unary.back().push_back(g.unary[x][s]);
+    if (p.kept[x].empty()) {
+      p.empty = true;
+      return p;
+    }
+    p.any = p.any || p.kept[x].size() < g.domain[x];
+    proof.kept_states += p.kept[x].size();
+    h.domain.push_back(static_cast<uint32_t>(p.kept[x].size()));
+  }
+  h.unary_terms.assign(h.domain.size(), 1);
+  h.partial.assign(h.domain.size(), 0);
+  p.ascent = h;
+  for (size_t fi = 0; fi < g.factors.size(); ++fi) {
+    StateFactor c = g.factors[fi], a = g.factors[fi];
+    for (size_t e = 0; e < c.table.size(); ++e) {
+      if (red.entry[fi][e] > ub - 1) {
+        p.any = p.any || red.entry[fi][e] < INFINITY;
+        c.table[e] = sign * INFINITY;
+        a.table[e] += sign * penalty;
+      } else {
+        ++proof.kept_entries;
+      }
+    }
+    proof.entries += c.table.size();
+    for (size_t j = 0; j < c.scope.size(); ++j) {
+      std::vector<uint32_t> q;
+      for (uint32_t s : p.kept[c.scope[j]]) q.push_back(c.project[j][s]);
+      c.project[j] = q;
+      a.project[j].swap(q);
+    }
+    p.dp.factors.push_back(std::move(c));
+    p.ascent.factors.push_back(std::move(a));
+  }
+  return p;
+}
+
+}  // namespace
+
+DualProof::Proof DualProof::prove(double incumbent, const StateDpLimits& dp_limits) const {
+  Proof proof;
+  if (!impl_->raised || !small_integer(incumbent)) return proof;
+  const double sign = impl_->g.sense == Sense::Min ? 1.0 : -1.0;
+  const double ub = sign * incumbent;  // min form
+  // Round by round: prune by the bound, try the DP over what is left, else
+  // raise the bound again over what is left (it can only rise) and prune more.
+  const StateGraph* g = &impl_->g;
+  const Raised* raised = &*impl_->raised;
+  std::vector<std::vector<uint32_t>> original = impl_->original;
+  StateGraph next;
+  std::optional<Raised> again;
+  for (uint32_t round = 0;; ++round) {
+    const double lb = raised->bound;
+    proof.states = proof.kept_states = proof.entries = proof.kept_entries = 0;
+    for (uint32_t d : g->domain) proof.states += d;
+    // Every value is an integer: an assignment can beat the incumbent only if
+    // the bound over the assignments that read each of its pieces is at most ub - 1.
+    if (lb > ub - 1) {
+      proof.proven = true;
+      return proof;
+    }
+    const double penalty = std::ceil(ub - lb) + 1;
+    Pruned p = prune(*g, reduced_bounds(*g, raised->ascent, lb), ub, penalty, proof);
+    if (p.empty) {  // no state of some variable is in a better assignment
+      proof.proven = true;
+      return proof;
+    }
+    try {
+      const StateDpResult dp = solve_states(p.dp, dp_limits);
+      proof.proven = true;
+      if (std::isfinite(dp.value) && better(g->sense, dp.value, incumbent)) {
+        std::vector<uint32_t> state(g->domain.size());
+        for (size_t x = 0; x < state.size(); ++x) state[x] = original[x][p.kept[x][dp.state[x]]];
+        proof.better_value = dp.value;
+        proof.better = std::move(state);
+      }
+      return proof;
+    } catch (const LimitError&) {
+    }
+    if (!p.any || round + 1 >= impl_->limits.max_rounds) return proof;
+    // The next round's graph: what is left, its alike states merged.
+    simplify(p.ascent, impl_->limits.progress);
+    std::vector<std::vector<uint32_t>> alike = keep_best_of_alike(p.ascent);
+    for (size_t x = 0; x < alike.size(); ++x)
+      for (uint32_t& s : alike[x]) s = original[x][p.kept[x][s]];
+    original.swap(alike);
+    next = std::move(p.ascent);
+    again.reset();
+    std::optional<Raised> r = raise(next, impl_->limits, ub - 1);
+    if (!r) return proof;
+    again.emplace(std::move(*r));
+    g = &next;
+    raised = &*again;
+  }
+}
+
+}  // namespace hodt
