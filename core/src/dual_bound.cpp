@@ -9,8 +9,10 @@ namespace hodt {
 
 namespace {
 
-// Messages are multiples of 2^-20 and every value stays below 2^31 in
-// magnitude, so each sum of them is exact in a double (53 bits).
+// Messages are multiples of 2^-20 and every value (each message, unary,
+// table entry and the bound's terms) stays below 2^31 in magnitude, so each
+// sum of two of them is exact in a double (53 bits); a value outside ends the
+// ascent without a bound.
 constexpr int kGridBits = 20;
 constexpr double kLargest = 0x1p31;
 
@@ -39,6 +41,7 @@ void add_along(std::vector<double>& t, size_t inner, size_t d, const double* w) 
       for (size_t i = 0; i < inner; ++i) p[i] += w[c];
     }
 }
+
 void min_along(const std::vector<double>& t, size_t inner, size_t d, double* out) {
   std::fill(out, out + d, INFINITY);
   for (size_t o = 0; o < t.size(); o += inner * d)
@@ -70,10 +73,8 @@ struct Ascent {
       msg.emplace_back();
       for (uint32_t d : f.dims) msg.back().emplace_back(d, 0.0);
     }
-    for (size_t fi = 0; fi < g.factors.size(); ++fi) {
-      const std::vector<double> t = reparametrised(fi);
-      factor_least.push_back(*std::min_element(t.begin(), t.end()));
-    }
+    factor_least.resize(g.factors.size());
+    for (size_t fi = 0; fi < g.factors.size(); ++fi) set_least(fi);
     changed.assign(g.domain.size(), 1);
     updated.assign(g.factors.size(), 0);
   }
@@ -139,11 +140,19 @@ struct Ascent {
       for (size_t s = 0; s < ux.size(); ++s) {
         const uint32_t c = f.project[j][s];
         ux[s] += next[c] - msg[fi][j][c];
+        if (!(std::fabs(ux[s]) < kLargest)) in_range = false;
       }
       msg[fi][j].swap(next);
       changed[f.scope[j]] = clock;
     }
+    set_least(fi);
+  }
+
+  // Factor fi's least reparametrised entry (every entry checked in range).
+  void set_least(size_t fi) {
     const std::vector<double> t = reparametrised(fi);
+    for (double v : t)
+      if (!(std::fabs(v) < kLargest)) in_range = false;
     factor_least[fi] = *std::min_element(t.begin(), t.end());
   }
 

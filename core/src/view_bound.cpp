@@ -1,5 +1,6 @@
 #include "hodt/view_bound.hpp"
 
+#include "hodt/dual_bound.hpp"
 #include <algorithm>
 
 #include "hodt/k_order.hpp"
@@ -54,9 +55,15 @@ std::optional<ViewBound> view_bound(const Mesh& dt, const Regions& R, Objective 
     // assignment is no optimum to refine the views by, so the rounds stop.
     StateDpLimits dp = limits.dp;
     dp.mini_buckets = true;
-    const StateDpResult sol = solve_states(relaxation(M.graph), dp);
+    const StateGraph relaxed = relaxation(M.graph);
+    const StateDpResult sol = solve_states(relaxed, dp);
     ViewBound b;
     b.bound = out ? tighter(info(o).sense, out->bound, sol.value) : sol.value;  // (every round's is a bound)
+    if (sol.bound_only) {  // (counts: the dual bound is usually far tighter than mini-buckets)
+      DualLimits dual;
+      dual.progress = limits.dp.progress;
+      if (const std::optional<double> d = DualProof(relaxed, dual).bound()) b.bound = tighter(info(o).sense, b.bound, *d);
+    }
     b.rounds = round + 1;
     if (sol.bound_only) {
       b.split_regions = out ? out->split_regions : 0;
