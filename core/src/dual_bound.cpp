@@ -132,7 +132,8 @@ struct Ascent {
       std::vector<double> next(f.dims[j]);
       for (uint32_t c = 0; c < f.dims[j]; ++c) {
         next[c] = on_grid(marginal[j][c] / static_cast<double>(m) - u[j][c]);
-        if (!(std::fabs(next[c]) < kLargest / 4)) in_range = false;
+        // (so a table entry less all its m messages stays below 2^31 at every step)
+        if (!(std::fabs(next[c]) * static_cast<double>(2 * (m + 1)) < kLargest)) in_range = false;
       }
       if (!in_range) return;
       if (next == msg[fi][j]) continue;
@@ -523,7 +524,9 @@ DualProof::Proof DualProof::prove(double incumbent, const StateDpLimits& dp_limi
       return proof;
     }
     try {
-      const StateDpResult dp = solve_states(p.dp, dp_limits);
+      StateDpLimits exact = dp_limits;
+      exact.mini_buckets = false;  // (a mini-bucket value is no assignment's)
+      const StateDpResult dp = solve_states(p.dp, exact);
       proof.proven = true;
       if (std::isfinite(dp.value) && better(g->sense, dp.value, incumbent)) {
         std::vector<uint32_t> state(g->domain.size());

@@ -116,6 +116,7 @@ TEST_CASE("dual proof: proves the optimum, finds it from a worse incumbent, and 
     limits.max_sweeps = 1 + trial % 50;  // (short ascents leave work to the pruning)
     StateDpLimits dp;
     dp.max_table = trial % 5 == 0 ? 2 : 1 << 22;  // (a DP refused: the rounds go on, or nothing is proven)
+    dp.mini_buckets = trial % 7 == 0;             // (ignored: a mini-bucket value is no assignment's)
     const DualProof d(g, limits);
     for (double incumbent : {best, evaluate_states(g, random_assignment(rng, g))}) {
       CAPTURE(trial);

@@ -57,9 +57,11 @@ class DualProof {
   // Per variable, its best state under the final messages: a start for local
   // search (often far from any incumbent's neighbourhood).
   std::vector<uint32_t> decoded() const;
-  // Proves an incumbent (an assignment's value) optimal or finds a better
-  // optimum: pruning by the bound, then the exact DP over what is left (a
-  // LimitError there leaves `proven` false).
+  // Proves an incumbent optimal or finds a better optimum: pruning by the
+  // bound, then the exact DP over what is left (a LimitError there leaves
+  // `proven` false; dp_limits.mini_buckets is ignored). The incumbent must be
+  // the value of an assignment the caller holds: "proven" with no `better`
+  // means no assignment beats it, which makes it optimal only if it is reached.
   struct Proof {
     bool proven = false;                          // the incumbent, or `better`, is optimal
     std::optional<std::vector<uint32_t>> better;  // an optimum better than the incumbent
