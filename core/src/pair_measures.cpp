@@ -1,8 +1,8 @@
 #include "hodt/pair_measures.hpp"
 
 #include <array>
-#include <bit>
 #include <cstdint>
+#include <cstring>
 #include <cmath>
 #include <vector>
 
@@ -23,7 +23,11 @@ class Recent {
   template <class Compute>
   const Value& get(const std::array<double, N>& key, Compute compute) {
     uint64_t h = 0x9E3779B97F4A7C15ull;
-    for (double k : key) h = (h ^ std::bit_cast<uint64_t>(k)) * 0xFF51AFD7ED558CCDull;
+    for (double k : key) {
+      uint64_t bits;  // (std::bit_cast: not in Emscripten's libc++)
+      std::memcpy(&bits, &k, sizeof bits);
+      h = (h ^ bits) * 0xFF51AFD7ED558CCDull;
+    }
     Slot& slot = slots_[(h >> 56) % kSlots];
     if (!slot.used || slot.key != key) slot.key = key, slot.value = compute(), slot.used = true;
     return slot.value;
