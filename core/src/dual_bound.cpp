@@ -346,13 +346,15 @@ struct Reduced {
   std::vector<std::vector<double>> entry;  // per factor and entry
 };
 
-Reduced reduced_bounds(const StateGraph& g, const Ascent& a, double lb) {
+Reduced reduced_bounds(const StateGraph& g, const Ascent& a, double lb, const Progress& progress) {
   Reduced r;
+  WorkCounter work;
   std::vector<double> least_unary;
   for (const auto& u : a.unary) least_unary.push_back(*std::min_element(u.begin(), u.end()));
   for (const auto& u : a.unary) r.state.emplace_back(u.size(), lb);
   for (size_t fi = 0; fi < g.factors.size(); ++fi) {
     const StateFactor& f = g.factors[fi];
+    if (work.tick(static_cast<double>(f.table.size() * f.scope.size()))) report(progress, fi, g.factors.size());
     // Per scope position and class: the best state of the class (above the variable's best),
     // and the factor's best entry with that class (above its best).
     std::vector<std::vector<double>> class_state(f.scope.size()), class_entry(f.scope.size());
@@ -518,7 +520,7 @@ DualProof::Proof DualProof::prove(double incumbent, const StateDpLimits& dp_limi
       return proof;
     }
     const double penalty = std::ceil(ub - lb) + 1;
-    Pruned p = prune(*g, reduced_bounds(*g, raised->ascent, lb), ub, penalty, proof);
+    Pruned p = prune(*g, reduced_bounds(*g, raised->ascent, lb, impl_->limits.progress), ub, penalty, proof);
     if (p.empty) {  // no state of some variable is in a better assignment
       proof.proven = true;
       return proof;
