@@ -145,7 +145,12 @@ std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& e
   Regions& R = engine.R;
   RegionModel& model = engine.model;
   const Sense sense = info(o).sense;
-  if (R.incomplete) {
+  // (Not when a region is over the size the first pass enumerates at all: at
+  // k >= 6 those have astronomically many signatures and would only cost time.)
+  const bool listable = std::none_of(R.regions.begin(), R.regions.end(), [&](const Region& g) {
+    return !g.complete && g.delaunay_triangles.size() > engine.limits.max_region_triangles;
+  });
+  if (R.incomplete && listable) {
     Regions listed = R;
     RegionLimits wide = engine.limits;
     wide.only_incomplete = true;
