@@ -134,33 +134,40 @@ struct FirstOrderStart {
   }
 };
 
+// Gives the regions over the first budgets a second, larger DP pass (the
+// largest first), kept only if then every region is whole; not when a region is
+// over the size the first pass enumerates at all (at k >= 6 those have
+// astronomically many signatures and would only cost time). Returns whether
+// every region is listed whole.
+bool list_whole(const Mesh& dt, Objective o, RegionEngine& engine, const Progress& progress) {
+  Regions& R = engine.R;
+  const bool listable = std::none_of(R.regions.begin(), R.regions.end(), [&](const Region& g) {
+    return !g.complete && g.delaunay_triangles.size() > engine.limits.max_region_triangles;
+  });
+  if (!R.incomplete || !listable) return !R.incomplete;
+  Regions listed = R;
+  RegionLimits wide = engine.limits;
+  wide.only_incomplete = true;
+  wide.max_states_per_region = 100'000;
+  wide.max_states_per_region_dp = 500'000;
+  wide.max_total_states = 1'500'000;
+  enumerate_regions(dt, R, wide);
+  if (R.incomplete) R = std::move(listed);
+  else engine.model = region_model(dt, R, o, {}, progress);
+  return !R.incomplete;
+}
+
 // Counts: the dual bound (dual_bound.hpp), once the cheaper bounds left a gap.
 // Over a whole model it gives local search one more start, then proves the
 // best triangulation found optimal (r.optimal, r.method "exact") or finds the
 // optimum, by pruning and the DP over what is left. It needs every region
-// listed whole: the regions over the first budgets get larger ones (kept only
-// if then every region is whole). Returns the bound (nothing if it does not apply).
+// listed whole (list_whole). Returns the bound (nothing if it does not apply).
 std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& engine, KOrderResult& r, std::string& how,
                                     const std::string& refused, const Progress& progress) {
   Regions& R = engine.R;
   RegionModel& model = engine.model;
   const Sense sense = info(o).sense;
-  // (Not when a region is over the size the first pass enumerates at all: at
-  // k >= 6 those have astronomically many signatures and would only cost time.)
-  const bool listable = std::none_of(R.regions.begin(), R.regions.end(), [&](const Region& g) {
-    return !g.complete && g.delaunay_triangles.size() > engine.limits.max_region_triangles;
-  });
-  if (R.incomplete && listable) {
-    Regions listed = R;
-    RegionLimits wide = engine.limits;
-    wide.only_incomplete = true;
-    wide.max_states_per_region = 100'000;
-    wide.max_states_per_region_dp = 500'000;
-    wide.max_total_states = 1'500'000;
-    enumerate_regions(dt, R, wide);
-    if (R.incomplete) R = std::move(listed);
-    else model = region_model(dt, R, o, {}, progress);
-  }
+  list_whole(dt, o, engine, progress);
   DualLimits dual;
   dual.progress = progress;
   dual.max_rounds = 2;
@@ -239,6 +246,11 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   RegionModel& model = engine.model;
   KOrderResult r;
   std::string refused = engine.exact_refusal().value_or("");
+  // Counts may still be proven (by the dual bound, below): asked for exact, the
+  // regions over the first budgets are listed whole first, or exact refuses at once.
+  const bool provable = bounded && !model.graph.relaxed_terms && integral_sum(model.graph);
+  if (options.method == Method::Exact && provable && R.incomplete && list_whole(dt, o, engine, options.progress))
+    refused = engine.exact_refusal().value_or("");
   if (refused.empty() && options.method != Method::Approx) {
     uint32_t width = 0;
     if (auto x = engine.exact(options.progress, refused, &width)) {
@@ -250,9 +262,8 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
       return r;
     }
   }
-  // Asked for exact: only counts may still be proven (by the dual bound, below).
-  const bool provable = bounded && !model.graph.relaxed_terms && integral_sum(model.graph);
-  if (options.method == Method::Exact && !provable) throw LimitError("exact at order " + std::to_string(k) + ": " + refused);
+  if (options.method == Method::Exact && (!provable || R.incomplete))
+    throw LimitError("exact at order " + std::to_string(k) + ": " + refused);
   // Otherwise: the best triangulation over the triangulations each region has
   // listed (the first order optimum's among them, so never worse than it), by the
   // same DP when its tables fit, else by local search; the bound is the
