@@ -9,6 +9,7 @@
 #include "hodt/objective_terms.hpp"
 #include "hodt/portable_math.hpp"
 #include "hodt/predicates.hpp"
+#include "hodt/recent_values.hpp"
 
 namespace hodt {
 
@@ -169,17 +170,7 @@ double sorted_enclosing_circle(const double* const p[4]) {
 // pairwise differences are all exact, every step above (exact signs, lengths
 // and determinants of differences, xy order) depends on those differences
 // alone: four points with the same differences to the first get the same
-// radius, bit for bit. A small direct-mapped table remembers recent shapes.
-struct ShapeCache {
-  static constexpr size_t kSize = 1024;
-  struct Entry {
-    double key[6];
-    double radius;
-    bool used = false;
-  };
-  Entry entry[kSize];
-};
-
+// radius, bit for bit, and recent shapes are remembered by those differences.
 bool shape_key(const double* const p[4], double key[6]) {
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j)
@@ -196,21 +187,10 @@ double enclosing_circle(const double* a, const double* b, const double* c, const
   // Sorted, so that the radius does not depend on the order of the arguments.
   const double* p[4] = {a, b, c, d};
   std::sort(p, p + 4, xy_less);
-  double key[6];
-  if (!shape_key(p, key)) return sorted_enclosing_circle(p);
-  static thread_local ShapeCache cache;
-  uint64_t h = 0;
-  for (double k : key) {
-    uint64_t bits;
-    std::memcpy(&bits, &k, sizeof bits);
-    h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
-  }
-  ShapeCache::Entry& e = cache.entry[(h >> 40) % ShapeCache::kSize];
-  if (e.used && std::memcmp(e.key, key, sizeof key) == 0) return e.radius;
-  e.radius = sorted_enclosing_circle(p);
-  std::memcpy(e.key, key, sizeof key);
-  e.used = true;
-  return e.radius;
+  std::array<double, 6> key;
+  if (!shape_key(p, key.data())) return sorted_enclosing_circle(p);
+  static thread_local RecentValues<6, double, 1024> recent;
+  return recent.get(key, [&] { return sorted_enclosing_circle(p); });
 }
 
 double detail::enclosing_circle_uncached(const double* a, const double* b, const double* c, const double* d) {

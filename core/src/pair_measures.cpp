@@ -1,56 +1,27 @@
 #include "hodt/pair_measures.hpp"
 
 #include <array>
-#include <cstdint>
-#include <cstring>
 #include <cmath>
 #include <vector>
 
 #include "hodt/domain.hpp"
 #include "hodt/measures.hpp"
+#include "hodt/recent_values.hpp"
 
 namespace hodt {
 
 namespace {
 
-// The accurate areas and normals of the triangles measured last, keyed by their
-// coordinates: a star's triangles recur in its pairs (on a grid every pair
-// needs them: its areas tie). A value is a function of its key alone, so an
-// entry is never stale and every value is the same, bit for bit.
-template <size_t N, class Value>
-class Recent {
- public:
-  template <class Compute>
-  const Value& get(const std::array<double, N>& key, Compute compute) {
-    uint64_t h = 0x9E3779B97F4A7C15ull;
-    for (double k : key) {
-      uint64_t bits;  // (std::bit_cast: not in Emscripten's libc++)
-      std::memcpy(&bits, &k, sizeof bits);
-      h = (h ^ bits) * 0xFF51AFD7ED558CCDull;
-    }
-    Slot& slot = slots_[(h >> 56) % kSlots];
-    if (!slot.used || slot.key != key) slot.key = key, slot.value = compute(), slot.used = true;
-    return slot.value;
-  }
-
- private:
-  static constexpr size_t kSlots = 256;
-  struct Slot {
-    std::array<double, N> key;
-    Value value;
-    bool used = false;
-  };
-  std::array<Slot, kSlots> slots_;
-};
-
+// The accurate areas and normals of the triangles measured last: a star's
+// triangles recur in its pairs (on a grid every pair needs them: its areas tie).
 double area(const Mesh& m, const Tri& t) {
-  static thread_local Recent<6, double> recent;
+  static thread_local RecentValues<6, double> recent;
   const double *a = m.point(t[0]), *b = m.point(t[1]), *c = m.point(t[2]);
   return recent.get({a[0], a[1], b[0], b[1], c[0], c[1]}, [&] { return triangle_area(a, b, c); });
 }
 
 std::array<double, 3> normal(const Mesh& m, const Tri& t) {
-  static thread_local Recent<9, std::array<double, 3>> recent;
+  static thread_local RecentValues<9, std::array<double, 3>> recent;
   const double* c[3] = {m.point(t[0]), m.point(t[1]), m.point(t[2])};
   return recent.get({c[0][0], c[0][1], c[0][2], c[1][0], c[1][1], c[1][2], c[2][0], c[2][1], c[2][2]}, [&] {
     std::array<double, 3> n;

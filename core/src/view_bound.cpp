@@ -1,8 +1,8 @@
 #include "hodt/view_bound.hpp"
 
-#include "hodt/dual_bound.hpp"
 #include <algorithm>
 
+#include "hodt/dual_bound.hpp"
 #include "hodt/k_order.hpp"
 
 namespace hodt {
@@ -59,13 +59,12 @@ std::optional<ViewBound> view_bound(const Mesh& dt, const Regions& R, Objective 
     const StateDpResult sol = solve_states(relaxed, dp);
     ViewBound b;
     b.bound = out ? tighter(info(o).sense, out->bound, sol.value) : sol.value;  // (every round's is a bound)
-    if (sol.bound_only) {  // (counts: the dual bound is usually far tighter than mini-buckets)
+    b.rounds = round + 1;
+    if (sol.bound_only) {
+      // (counts: the dual bound is usually far tighter than mini-buckets)
       DualLimits dual;
       dual.progress = limits.dp.progress;
       if (const std::optional<double> d = DualProof(relaxed, dual).bound()) b.bound = tighter(info(o).sense, b.bound, *d);
-    }
-    b.rounds = round + 1;
-    if (sol.bound_only) {
       b.split_regions = out ? out->split_regions : 0;
       out = std::move(b);
       break;
