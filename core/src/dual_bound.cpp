@@ -54,9 +54,11 @@ void min_along(const std::vector<double>& t, size_t inner, size_t d, double* out
 // The ascent on a simplified graph, in min form (every value times `sign`).
 struct Ascent {
   const StateGraph& g;
+  std::vector<const ImplicitFactor*> implicit;
   double sign;
   std::vector<std::vector<double>> unary;             // reparametrised, per variable and state
-  std::vector<std::vector<std::vector<double>>> msg;  // per factor, scope position and class
+  // Per factor (the tables, then the implicit ones), scope position and class.
+  std::vector<std::vector<std::vector<double>>> msg;
   std::vector<double> factor_least;                   // per factor: its least reparametrised entry
   // Updates are numbered: per variable the last that changed a message to it,
   // per factor its last.
@@ -64,7 +66,8 @@ struct Ascent {
   std::vector<uint64_t> changed, updated;
   bool in_range = true;
 
-  explicit Ascent(const StateGraph& graph) : g(graph), sign(graph.sense == Sense::Min ? 1.0 : -1.0) {
+  Ascent(const StateGraph& graph, std::vector<const ImplicitFactor*> implicit_factors)
+      : g(graph), implicit(std::move(implicit_factors)), sign(graph.sense == Sense::Min ? 1.0 : -1.0) {
     for (const auto& u : g.unary) {
       unary.emplace_back(u);
       for (double& v : unary.back()) v *= sign;
@@ -73,10 +76,45 @@ struct Ascent {
       msg.emplace_back();
       for (uint32_t d : f.dims) msg.back().emplace_back(d, 0.0);
     }
-    factor_least.resize(g.factors.size());
-    for (size_t fi = 0; fi < g.factors.size(); ++fi) set_least(fi);
+    for (const ImplicitFactor* f : implicit) {
+      msg.emplace_back();
+      for (uint32_t x : f->scope) msg.back().emplace_back(g.domain[x], 0.0);
+    }
+    factor_least.resize(msg.size());
+    for (size_t fi = 0; fi < msg.size(); ++fi) set_least(fi);
     changed.assign(g.domain.size(), 1);
-    updated.assign(g.factors.size(), 0);
+    updated.assign(msg.size(), 0);
+  }
+
+  // The same block update for an implicit factor (its classes are the states).
+  void update_implicit(size_t fi) {
+    const ImplicitFactor& f = *implicit[fi - g.factors.size()];
+    const size_t m = f.scope.size();
+    if (std::all_of(f.scope.begin(), f.scope.end(), [&](uint32_t x) { return changed[x] <= updated[fi]; })) return;
+    updated[fi] = ++clock;
+    std::vector<std::vector<double>> u(m), marginal;
+    for (size_t j = 0; j < m; ++j) {
+      u[j] = unary[f.scope[j]];
+      for (size_t s = 0; s < u[j].size(); ++s) u[j][s] -= msg[fi][j][s];
+    }
+    f.least(u, &marginal);
+    for (size_t j = 0; j < m; ++j) {
+      std::vector<double> next(u[j].size());
+      for (size_t s = 0; s < next.size(); ++s) {
+        next[s] = on_grid(marginal[j][s] / static_cast<double>(m) - u[j][s]);
+        if (!(std::fabs(next[s]) * static_cast<double>(2 * (m + 1)) < kLargest)) in_range = false;
+      }
+      if (!in_range) return;
+      if (next == msg[fi][j]) continue;
+      std::vector<double>& ux = unary[f.scope[j]];
+      for (size_t s = 0; s < ux.size(); ++s) {
+        ux[s] += next[s] - msg[fi][j][s];
+        if (!(std::fabs(ux[s]) < kLargest)) in_range = false;
+      }
+      msg[fi][j].swap(next);
+      changed[f.scope[j]] = clock;
+    }
+    set_least(fi);
   }
 
   // Factor fi's table less its messages (exact: dyadic values in range).
@@ -100,6 +138,7 @@ struct Ascent {
   // table's min-marginals go back to the variables in equal shares. The bound
   // never falls (the minimum of a sum is at least the sum of the minima).
   void update(size_t fi, WorkCounter& work, const Progress& progress, double sweep, double sweeps) {
+    if (fi >= g.factors.size()) return update_implicit(fi);
     const StateFactor& f = g.factors[fi];
     const size_t m = f.scope.size();
     // The update reads only the other factors' messages at its variables: if
@@ -151,6 +190,14 @@ struct Ascent {
 
   // Factor fi's least reparametrised entry (every entry checked in range).
   void set_least(size_t fi) {
+    if (fi >= g.factors.size()) {  // (exact: its paths add at most m messages, each below 2^31 / (2m + 2))
+      std::vector<std::vector<double>> costs = msg[fi];
+      for (auto& c : costs)
+        for (double& v : c) v = -v;
+      factor_least[fi] = implicit[fi - g.factors.size()]->least(costs, nullptr);
+      if (!(std::fabs(factor_least[fi]) < kLargest)) in_range = false;
+      return;
+    }
     const std::vector<double> t = reparametrised(fi);
     for (double v : t)
       if (!(std::fabs(v) < kLargest)) in_range = false;
@@ -268,14 +315,15 @@ struct Raised {
 
 // The ascent until it stalls, the sweeps run out, or the bound (min form)
 // reaches `enough`.
-std::optional<Raised> raise(const StateGraph& g, const DualLimits& limits, double enough) {
-  Raised r{Ascent(g), 0, 0};
+std::optional<Raised> raise(const StateGraph& g, const DualLimits& limits, double enough,
+                            const std::vector<const ImplicitFactor*>& implicit = {}) {
+  Raised r{Ascent(g, implicit), 0, 0};
   std::optional<double> b = r.ascent.bound();
   WorkCounter work;
   work.every = 1 << 16;
   while (b && r.sweeps < limits.max_sweeps && *b < enough) {
     report(limits.progress, r.sweeps, limits.max_sweeps);
-    const size_t n = g.factors.size();
+    const size_t n = r.ascent.msg.size();
     for (size_t i = 0; i < n; ++i) r.ascent.update(r.sweeps % 2 ? n - 1 - i : i, work, limits.progress, r.sweeps, limits.max_sweeps);
     ++r.sweeps;
     const std::optional<double> next = r.ascent.bound();
@@ -299,7 +347,8 @@ StateGraph prepared(const StateGraph& input, const DualLimits& limits) {
 // States that every factor reads alike differ only in their unary terms: the
 // best of each such class stands for all of them (no assignment gets worse).
 // Returns, per variable and new state, the original state.
-std::vector<std::vector<uint32_t>> keep_best_of_alike(StateGraph& g) {
+// Variables an implicit factor reads (`kept`) keep every state.
+std::vector<std::vector<uint32_t>> keep_best_of_alike(StateGraph& g, const std::vector<uint8_t>& kept = {}) {
   std::vector<std::vector<std::pair<size_t, size_t>>> reads(g.domain.size());  // (factor, position)
   for (size_t fi = 0; fi < g.factors.size(); ++fi)
     for (size_t j = 0; j < g.factors[fi].scope.size(); ++j) reads[g.factors[fi].scope[j]].push_back({fi, j});
@@ -307,6 +356,10 @@ std::vector<std::vector<uint32_t>> keep_best_of_alike(StateGraph& g) {
   std::vector<uint32_t> cls, pair;
   for (size_t x = 0; x < g.domain.size(); ++x) {
     const uint32_t dom = g.domain[x];
+    if (x < kept.size() && kept[x]) {
+      for (uint32_t s = 0; s < dom; ++s) original[x].push_back(s);
+      continue;
+    }
     cls.assign(dom, 0);
     uint32_t count = 1;
     for (const auto& [fi, j] : reads[x]) {
@@ -401,20 +454,27 @@ bool integral_sum(const StateGraph& g) {
 
 struct DualProof::Impl {
   DualLimits limits;
+  std::vector<const ImplicitFactor*> implicit;
   StateGraph g;  // prepared, with the best of alike states only
   std::vector<std::vector<uint32_t>> original;  // per variable and state of g: the input's state
   std::optional<Raised> raised;
 };
 
-DualProof::DualProof(const StateGraph& input, const DualLimits& limits, std::optional<double> stop_at)
+DualProof::DualProof(const StateGraph& input, const DualLimits& limits, std::optional<double> stop_at,
+                     std::vector<const ImplicitFactor*> implicit)
     : impl_(std::make_unique<Impl>()) {
   impl_->limits = limits;
+  impl_->implicit = std::move(implicit);
   if (!graph_applies(input)) return;
   impl_->g = prepared(input, limits);
-  impl_->original = keep_best_of_alike(impl_->g);
+  std::vector<uint8_t> kept(input.domain.size(), 0);
+  for (const ImplicitFactor* f : impl_->implicit)
+    for (uint32_t x : f->scope) kept[x] = 1;
+  impl_->original = keep_best_of_alike(impl_->g, kept);
   const double sign = impl_->g.sense == Sense::Min ? 1.0 : -1.0;
   // (Integer values: a bound above incumbent - 1 proves the incumbent.)
-  if (auto r = raise(impl_->g, limits, stop_at ? sign * *stop_at - 1 : INFINITY)) impl_->raised.emplace(std::move(*r));
+  if (auto r = raise(impl_->g, limits, stop_at ? sign * *stop_at - 1 : INFINITY, impl_->implicit))
+    impl_->raised.emplace(std::move(*r));
 }
 
 DualProof::~DualProof() = default;
@@ -425,6 +485,13 @@ std::optional<double> DualProof::bound() const {
   if (!impl_->raised) return std::nullopt;
   const double sign = impl_->g.sense == Sense::Min ? 1.0 : -1.0;
   return sign * std::ceil(impl_->raised->bound);
+}
+
+std::vector<std::vector<double>> DualProof::implicit_costs(size_t i) const {
+  std::vector<std::vector<double>> costs;
+  if (impl_->raised)
+    for (uint32_t x : impl_->implicit[i]->scope) costs.push_back(impl_->raised->ascent.unary[x]);
+  return costs;
 }
 
 uint32_t DualProof::sweeps() const { return impl_->raised ? impl_->raised->sweeps : 0; }
@@ -519,6 +586,7 @@ DualProof::Proof DualProof::prove(double incumbent, const StateDpLimits& dp_limi
       proof.proven = true;
       return proof;
     }
+    if (!impl_->implicit.empty()) return proof;  // (the DP below would not see them)
     const double penalty = std::ceil(ub - lb) + 1;
     Pruned p = prune(*g, reduced_bounds(*g, raised->ascent, lb, impl_->limits.progress), ub, penalty, proof);
     if (p.empty) {  // no state of some variable is in a better assignment

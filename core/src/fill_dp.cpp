@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
+
+#include "hodt/fill_graph.hpp"
 
 #include "hodt/error.hpp"
 #include "hodt/words_hash.hpp"
@@ -33,9 +36,10 @@ class Layer {
   };
   std::vector<Stored> states;
 
-  // Keeps c if no state has its key, or in place of that state if c is better.
+  // Keeps c if no state has its key, or in place of that state if c is better;
+  // returns the index of the state with its key.
   template <class Better>
-  void offer(const Partial& c, Better&& better) {
+  uint32_t offer(const Partial& c, Better&& better) {
     key_.clear();
     for (uint64_t e : c.open) key_.push_back(static_cast<uint32_t>(e >> 32)), key_.push_back(static_cast<uint32_t>(e));
     const uint32_t sizes[4] = {static_cast<uint32_t>(key_.size()), static_cast<uint32_t>(c.behind.size()),
@@ -51,13 +55,13 @@ class Layer {
         slots_[i] = static_cast<uint32_t>(states.size());
         states.push_back({words_.size(), {sizes[0], sizes[1], sizes[2], sizes[3]}, c.value, c.node, hash});
         words_.insert(words_.end(), key_.begin(), key_.end());
-        return;
+        return slots_[i];
       }
       Stored& t = states[s];
       if (t.hash == hash && std::equal(t.sizes, t.sizes + 4, sizes) &&
           std::equal(key_.begin(), key_.end(), words_.begin() + static_cast<std::ptrdiff_t>(t.at))) {
         if (better(c.value, t.value)) t.value = c.value, t.node = c.node;  // (the same key: only these differ)
-        return;
+        return s;
       }
     }
   }
@@ -99,10 +103,26 @@ struct Node {
 uint32_t from(uint64_t e) { return static_cast<uint32_t>(e >> 32); }
 uint32_t to(uint64_t e) { return static_cast<uint32_t>(e); }
 
+// The fill graph (fill_graph.hpp) as the DP runs: every step, merged or not,
+// as an arc between numbered kept states; entries interned as they come.
+struct Recorder {
+  FillGraph graph;
+  std::map<Tri, uint32_t> item_id;
+  std::vector<std::map<SignatureEntry, uint32_t>> entry_id;
+  std::vector<std::pair<uint32_t, uint32_t>> pending;  // the child being built: its (item, entry)
+  void take(const SignatureEntry& entry) {
+    const auto [it, fresh] = item_id.try_emplace(RegionTerms::item_of(entry), static_cast<uint32_t>(entry_id.size()));
+    if (fresh) entry_id.emplace_back();
+    auto& ids = entry_id[it->second];
+    pending.push_back({it->second, ids.try_emplace(entry, static_cast<uint32_t>(ids.size())).first->second});
+  }
+};
+
 class FillDp {
  public:
-  FillDp(const Mesh& dt, const Candidates& cand, const RegionTerms& terms, uint32_t r, const std::vector<Tri>* keep)
-      : dt_(dt), cand_(cand), T_(terms), r_(r), keep_(keep) {}
+  FillDp(const Mesh& dt, const Candidates& cand, const RegionTerms& terms, uint32_t r, const std::vector<Tri>* keep,
+         Recorder* record = nullptr)
+      : dt_(dt), cand_(cand), T_(terms), r_(r), keep_(keep), record_(record) {}
 
   std::optional<std::vector<BestFill>> run(uint64_t max_states, const Progress& progress, uint64_t* used) {
     Partial start;
@@ -114,22 +134,33 @@ class FillDp {
     layer.offer(start, [](double, double) { return false; });
     std::vector<BestFill> out;
     uint64_t states = 1, generated = 0;
+    uint32_t base = 0;  // the layer's first node (when recording)
     Partial& p = parent_;
     while (!layer.states.empty()) {
       Layer next;
+      const uint32_t next_base = base + static_cast<uint32_t>(layer.states.size());
       for (size_t i = 0; i < layer.states.size(); ++i) {
         layer.load(i, p);
         if (p.open.empty()) {
-          out.push_back({triangles_of(p.node), p.value});
+          if (record_) record_->graph.complete.push_back(base + static_cast<uint32_t>(i));
+          else out.push_back({triangles_of(p.node), p.value});
           continue;
         }
         // (Children cost their keys even when merged: they count too, a quarter each.)
         if ((states + generated / 4) > max_states) return std::nullopt;
         expand(p, [&](const Partial& child) {
           ++generated;
-          next.offer(child, [&](double a, double b) { return T_.better(a, b); });
+          const uint32_t at = next.offer(child, [&](double a, double b) { return T_.better(a, b); });
+          if (!record_) return;
+          FillGraph& g = record_->graph;
+          const Node& step = pending_[child.node];
+          g.arcs.push_back({base + static_cast<uint32_t>(i), next_base + at, child.value - p.value, step.triangle,
+                            static_cast<uint32_t>(g.taken.size()), static_cast<uint32_t>(record_->pending.size())});
+          g.taken.insert(g.taken.end(), record_->pending.begin(), record_->pending.end());
         });
       }
+      base = next_base;
+      if (record_) record_->graph.nodes = base + static_cast<uint32_t>(next.states.size());
       states += next.states.size();
       if (used) *used += next.states.size();
       if (states > max_states) return std::nullopt;
@@ -151,6 +182,7 @@ class FillDp {
   const RegionTerms& T_;
   uint32_t r_;
   const std::vector<Tri>* keep_;  // sorted items whose entries are kept (all if null)
+  Recorder* record_;              // records the fill graph (with keep_ empty)
   std::vector<uint64_t> boundary_;  // the region's boundary edges, sorted
   std::vector<Node> nodes_;    // kept states' (parent, last triangle)
   std::vector<Node> pending_;  // this layer's children, before merging
@@ -189,6 +221,7 @@ class FillDp {
   void take(Partial& p, double term) {
     p.value = T_.add(p.value, term);
     if (entry_.empty()) return;
+    if (record_) record_->take(entry_);
     if (keep_ && !std::binary_search(keep_->begin(), keep_->end(), RegionTerms::item_of(entry_))) return;
     // After the entries that are not greater (SignatureEntry order: triangle by
     // triangle, then by length, which is word by word).
@@ -270,6 +303,7 @@ class FillDp {
       }
       if (!ok) continue;
       Partial& c = child_;
+      if (record_) record_->pending.clear();
       c.value = p.value;
       c.signature.assign(p.signature.begin(), p.signature.end());
       const bool edges = T_.reads_apexes();
@@ -317,6 +351,58 @@ std::optional<std::vector<BestFill>> best_fills(const Mesh& dt, const Candidates
                                                 uint64_t* states_used, const std::vector<Tri>* keep_items) {
   FillDp dp(dt, candidates, terms, region, keep_items);
   return dp.run(max_states, progress, states_used);
+}
+
+}  // namespace hodt
+
+namespace hodt {
+
+std::optional<FillGraph> fill_graph(const Mesh& dt, const Candidates& candidates, const RegionTerms& terms,
+                                    uint32_t region, uint64_t max_states, const Progress& progress,
+                                    uint64_t* states_used) {
+  if (terms.terms().combine != TermCombine::Sum) return std::nullopt;
+  const std::vector<Tri> no_items;
+  Recorder rec;
+  FillDp dp(dt, candidates, terms, region, &no_items, &rec);
+  if (!dp.run(max_states, progress, states_used)) return std::nullopt;
+  FillGraph& g = rec.graph;
+  g.region = region;
+  // Only arcs on a path to a complete fill (arcs come layer by layer: backwards
+  // once is enough), and only the entries those take.
+  std::vector<uint8_t> alive(g.nodes, 0);
+  for (uint32_t n : g.complete) alive[n] = 1;
+  for (size_t a = g.arcs.size(); a-- > 0;) alive[g.arcs[a].parent] |= alive[g.arcs[a].child];
+  std::vector<std::vector<uint32_t>> renumber(rec.entry_id.size());
+  for (size_t i = 0; i < renumber.size(); ++i) renumber[i].assign(rec.entry_id[i].size(), UINT32_MAX);
+  std::vector<uint32_t> count(renumber.size(), 0);
+  std::vector<FillGraph::Arc> arcs;
+  std::vector<std::pair<uint32_t, uint32_t>> taken;
+  for (FillGraph::Arc arc : g.arcs) {
+    if (!alive[arc.child]) continue;
+    const uint32_t first = static_cast<uint32_t>(taken.size());
+    for (uint32_t t = arc.first_take; t < arc.first_take + arc.takes; ++t) {
+      auto [item, entry] = g.taken[t];
+      uint32_t& id = renumber[item][entry];
+      if (id == UINT32_MAX) id = count[item]++;
+      taken.push_back({item, id});
+    }
+    arc.first_take = first;
+    arcs.push_back(arc);
+  }
+  // Items in sorted order (their map's), entries by their new numbers.
+  std::vector<uint32_t> item_index(renumber.size(), UINT32_MAX);
+  for (const auto& [item, i] : rec.item_id) {
+    if (!count[i]) continue;
+    item_index[i] = static_cast<uint32_t>(g.items.size());
+    g.items.push_back(item);
+    g.entries.emplace_back(count[i]);
+    for (const auto& [entry, id] : rec.entry_id[i])
+      if (renumber[i][id] != UINT32_MAX) g.entries.back()[renumber[i][id]] = entry;
+  }
+  for (auto& [item, entry] : taken) item = item_index[item];
+  g.arcs = std::move(arcs);
+  g.taken = std::move(taken);
+  return std::move(g);
 }
 
 }  // namespace hodt

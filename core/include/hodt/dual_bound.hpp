@@ -36,6 +36,19 @@ struct DualLimits {
   Progress progress;
 };
 
+// A factor too large to tabulate, read through its min-marginals (a region's
+// fills, region_dual.hpp): the ascent updates it like a table. Min form (a
+// maximised objective's values negated); its values must be integers.
+struct ImplicitFactor {
+  std::vector<uint32_t> scope;  // distinct variables, each read state by state
+  virtual ~ImplicitFactor() = default;
+  // With costs[j][s] added where scope variable j is in state s: the least
+  // total, exact; marginals (when not null): per j and s the least total with j
+  // in state s (an estimate is enough: it only steers the ascent).
+  virtual double least(const std::vector<std::vector<double>>& costs,
+                       std::vector<std::vector<double>>* marginals) const = 0;
+};
+
 // A sum whose every value is an integer of moderate size (counts): what the
 // bound can prove exactly.
 bool integral_sum(const StateGraph& g);
@@ -46,7 +59,10 @@ class DualProof {
   // stop_at: the ascent may stop once its bound proves an assignment of this
   // value optimal. Applies to sum graphs whose every value is a moderate
   // integer (counts), with no relaxed terms and no partial variables.
-  DualProof(const StateGraph& g, const DualLimits& limits = {}, std::optional<double> stop_at = std::nullopt);
+  // implicit: factors beside the graph's (they must outlive this); with them,
+  // prove() proves only what the bound alone proves.
+  DualProof(const StateGraph& g, const DualLimits& limits = {}, std::optional<double> stop_at = std::nullopt,
+            std::vector<const ImplicitFactor*> implicit = {});
   ~DualProof();
   DualProof(const DualProof&) = delete;
 
@@ -57,6 +73,9 @@ class DualProof {
   // Per variable, its best state under the final messages: a start for local
   // search (often far from any incumbent's neighbourhood).
   std::vector<uint32_t> decoded() const;
+  // Implicit factor i's costs for decoding (its variables' final beliefs, min
+  // form): its least state under them is a start for the same search.
+  std::vector<std::vector<double>> implicit_costs(size_t i) const;
   // Proves an incumbent optimal or finds a better optimum: pruning by the
   // bound, then the exact DP over what is left (a LimitError there leaves
   // `proven` false; dp_limits.mini_buckets is ignored). The incumbent must be

@@ -1,0 +1,47 @@
+// A proven bound for counts over k-OD models whose regions are too large to
+// list: a Lagrangian dual in which each such region is one factor, read
+// through its fill graph (fill_graph.hpp), and never listed.
+//
+// A region too large to list gets one variable per item (a shared vertex or
+// edge): its states are the item's entries, each stood for by one fill that
+// takes it (a view of that item alone, region_views.hpp). The shared terms read
+// these variables as they read any region's states. The region itself becomes
+// an implicit factor over them: a set of entries costs the region's own terms
+// of the best fill that takes them all, +infinity if none does. Every k-OD
+// triangulation is an assignment of the same value, so the dual bound
+// (dual_bound.hpp) over this model bounds the optimum, however large the
+// region. Regions whose fill graph is itself too large are left to the
+// relaxation (their terms at their best).
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "hodt/dual_bound.hpp"
+#include "hodt/fill_enumerator.hpp"
+#include "hodt/region_terms.hpp"
+#include "hodt/regions.hpp"
+
+namespace hodt {
+
+struct RegionDualLimits {
+  uint64_t max_states = 200'000;      // partial fills of one region's graph
+  uint64_t max_total = 2'000'000;     // over every region's
+  DualLimits dual;
+};
+
+struct RegionDual {
+  std::optional<double> bound;  // no k-OD triangulation is better (nothing: the dual does not apply)
+  // Per region read through its graph, its best fill under the final dual
+  // costs (canonical, sorted); empty for the others: a start for local search.
+  std::vector<std::vector<Tri>> fills;
+  uint32_t graphs = 0;    // regions read through their fill graph
+  uint32_t relaxed = 0;   // regions not listed whole left to the relaxation
+};
+
+// stop_at: the value of a triangulation in hand (the ascent stops once it is proven).
+RegionDual region_dual(const Mesh& delaunay, const Regions& regions, Objective o, const Candidates& candidates,
+                       const RegionTerms& terms, std::optional<double> stop_at = std::nullopt,
+                       const RegionDualLimits& limits = {});
+
+}  // namespace hodt

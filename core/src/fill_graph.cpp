@@ -1,0 +1,95 @@
+#include "hodt/fill_graph.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hodt {
+
+namespace {
+
+// The triangles of the path through `arcs` (in any order), canonical and sorted.
+std::vector<Tri> fill_of(const FillGraph& g, const std::vector<uint32_t>& arcs) {
+  std::vector<Tri> tris;
+  for (uint32_t a : arcs) tris.push_back(canonical_triangle(g.arcs[a].triangle));
+  std::sort(tris.begin(), tris.end());
+  return tris;
+}
+
+// Per node, an arc into it and an arc out of it on a path to a complete fill
+// (UINT32_MAX: none, at the start and at complete fills).
+struct Links {
+  std::vector<uint32_t> in, out;
+  explicit Links(const FillGraph& g) : in(g.nodes, UINT32_MAX), out(g.nodes, UINT32_MAX) {
+    for (uint32_t a = 0; a < g.arcs.size(); ++a) {
+      if (in[g.arcs[a].child] == UINT32_MAX) in[g.arcs[a].child] = a;
+      if (out[g.arcs[a].parent] == UINT32_MAX) out[g.arcs[a].parent] = a;
+    }
+  }
+  // The arcs of a complete fill through arc a.
+  std::vector<uint32_t> through(const FillGraph& g, uint32_t a) const {
+    std::vector<uint32_t> path{a};
+    for (uint32_t n = g.arcs[a].parent; in[n] != UINT32_MAX; n = g.arcs[in[n]].parent) path.push_back(in[n]);
+    for (uint32_t n = g.arcs[a].child; out[n] != UINT32_MAX; n = g.arcs[out[n]].child) path.push_back(out[n]);
+    return path;
+  }
+};
+
+}  // namespace
+
+double FillGraph::least(const std::vector<std::vector<double>>& costs, std::vector<std::vector<double>>* marginals,
+                        std::vector<Tri>* best) const {
+  std::vector<double> c(arcs.size());
+  for (size_t a = 0; a < arcs.size(); ++a) {
+    double v = arcs[a].cost;
+    for (uint32_t t = arcs[a].first_take; t < arcs[a].first_take + arcs[a].takes; ++t) v += costs[taken[t].first][taken[t].second];
+    c[a] = v;
+  }
+  std::vector<double> forward(nodes, INFINITY);
+  std::vector<uint32_t> via(best ? nodes : 0, UINT32_MAX);
+  forward[0] = 0;
+  for (size_t a = 0; a < arcs.size(); ++a) {
+    const double v = forward[arcs[a].parent] + c[a];
+    if (v < forward[arcs[a].child]) {
+      forward[arcs[a].child] = v;
+      if (best) via[arcs[a].child] = static_cast<uint32_t>(a);
+    }
+  }
+  uint32_t end = complete.empty() ? 0 : complete[0];
+  for (uint32_t n : complete)
+    if (forward[n] < forward[end]) end = n;
+  if (best) {
+    std::vector<uint32_t> path;
+    for (uint32_t n = end; via[n] != UINT32_MAX; n = arcs[via[n]].parent) path.push_back(via[n]);
+    *best = fill_of(*this, path);
+  }
+  if (marginals) {
+    std::vector<double> backward(nodes, INFINITY);
+    for (uint32_t n : complete) backward[n] = 0;
+    for (size_t a = arcs.size(); a-- > 0;)
+      backward[arcs[a].parent] = std::min(backward[arcs[a].parent], c[a] + backward[arcs[a].child]);
+    marginals->resize(entries.size());
+    for (size_t i = 0; i < entries.size(); ++i) (*marginals)[i].assign(entries[i].size(), INFINITY);
+    for (size_t a = 0; a < arcs.size(); ++a) {
+      const double v = forward[arcs[a].parent] + c[a] + backward[arcs[a].child];
+      for (uint32_t t = arcs[a].first_take; t < arcs[a].first_take + arcs[a].takes; ++t) {
+        double& m = (*marginals)[taken[t].first][taken[t].second];
+        m = std::min(m, v);
+      }
+    }
+  }
+  return forward[end];
+}
+
+std::vector<std::vector<std::vector<Tri>>> FillGraph::representatives() const {
+  const Links links(*this);
+  std::vector<std::vector<std::vector<Tri>>> out(entries.size());
+  for (size_t i = 0; i < entries.size(); ++i) out[i].resize(entries[i].size());
+  for (uint32_t a = 0; a < arcs.size(); ++a)
+    for (uint32_t t = arcs[a].first_take; t < arcs[a].first_take + arcs[a].takes; ++t) {
+      auto& rep = out[taken[t].first][taken[t].second];
+      if (rep.empty()) rep = fill_of(*this, links.through(*this, a));
+    }
+  return out;
+}
+
+}  // namespace hodt

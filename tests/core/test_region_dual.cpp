@@ -1,0 +1,143 @@
+// Regions read through their fill graphs (fill_graph.hpp) and the Lagrangian
+// dual over them (region_dual.hpp), against the regions' listed
+// triangulations and brute force: the graph holds exactly the region's
+// triangulations, its min-marginals are the listed ones, and the bound never
+// passes the optimum.
+#include <doctest/doctest.h>
+
+#include <map>
+
+#include "generators.hpp"
+#include "hodt/delaunay.hpp"
+#include "hodt/fill_graph.hpp"
+#include "hodt/higher_order.hpp"
+#include "hodt/k_order.hpp"
+#include "hodt/points.hpp"
+#include "hodt/region_dual.hpp"
+#include "hodt/region_engine.hpp"
+
+using namespace hodt;
+using namespace hodt::test;
+
+namespace {
+
+bool not_past(Sense sense, double bound, double optimum) { return sense == Sense::Min ? bound <= optimum : bound >= optimum; }
+
+// Every region with a choice is marked as not listed (only its Delaunay fill kept).
+uint64_t forget_lists(Regions& R) {
+  for (Region& g : R.regions)
+    if (g.states.size() > 1) g.states.resize(1), g.complete = false, ++R.incomplete;
+  return R.incomplete;
+}
+
+}  // namespace
+
+TEST_CASE("fill graph: the region's triangulations, their best by entry, and a fill for each entry") {
+  int graphs = 0, entries = 0;
+  for (uint32_t k : {2u, 3u, 4u})
+    for (uint64_t seed = 1; seed <= 30; ++seed) {
+      const Mesh dt = delaunay(validate_points(mixed_instance(seed * 7 + k, 1)).xyz);
+      const KOrderStructure structure(dt, k, {});
+      for (const auto& oi : objectives()) {
+        const RegionEngine engine(dt, oi.objective, structure, k, RegionLimits{}, {});
+        if (engine.R.incomplete || engine.terms.terms().combine != TermCombine::Sum) continue;
+        // Every listed triangulation of each region (the enumeration, not the DP).
+        RegionLimits all;
+        all.max_states_per_region = 1'000'000;
+        all.first_pass_states = all.max_states_per_region_dp = 0;
+        Regions listed = k_order_regions(dt, k, all);
+        for (uint32_t r = 0; r < engine.R.regions.size(); ++r) {
+          const auto& states = listed.regions[r].states;
+          if (states.size() < 2 || !listed.regions[r].complete) continue;
+          const auto g = fill_graph(dt, engine.cand, engine.terms, r, 1'000'000);
+          REQUIRE(g);
+          ++graphs;
+          CAPTURE(k);
+          CAPTURE(seed);
+          CAPTURE(oi.id);
+          CAPTURE(r);
+          // Per (item, entry), the least own value over the listed triangulations that take it.
+          std::map<SignatureEntry, double> want;
+          double least = INFINITY;
+          for (const auto& s : states) {
+            const StateKey key = engine.terms.key(r, s);
+            least = std::min(least, key.value);
+            for (const SignatureEntry& e : key.signature) {
+              const auto [it, fresh] = want.try_emplace(e, key.value);
+              if (!fresh) it->second = std::min(it->second, key.value);
+            }
+          }
+          std::vector<std::vector<double>> zero(g->entries.size()), marginals;
+          for (size_t i = 0; i < zero.size(); ++i) zero[i].assign(g->entries[i].size(), 0.0);
+          std::vector<Tri> best;
+          // (Lengths and areas: the graph adds the same terms in another order.)
+          const auto near = [](double v) { return doctest::Approx(v).epsilon(1e-12); };
+          CHECK(g->least(zero, &marginals, &best) == near(least));
+          CHECK(engine.terms.key(r, best).value == near(least));
+          CHECK(std::find(states.begin(), states.end(), best) != states.end());
+          size_t count = 0;
+          const auto reps = g->representatives();
+          for (size_t i = 0; i < g->entries.size(); ++i)
+            for (size_t e = 0; e < g->entries[i].size(); ++e, ++count) {
+              const SignatureEntry& entry = g->entries[i][e];
+              CHECK(RegionTerms::item_of(entry) == g->items[i]);
+              REQUIRE(want.count(entry));
+              CHECK(marginals[i][e] == near(want.at(entry)));
+              const auto sig = engine.terms.key(r, reps[i][e]).signature;
+              CHECK(std::find(sig.begin(), sig.end(), entry) != sig.end());
+              CHECK(std::find(states.begin(), states.end(), reps[i][e]) != states.end());
+            }
+          CHECK(count == want.size());  // (no entry missing, none that no fill takes)
+          entries += static_cast<int>(count);
+        }
+      }
+    }
+  MESSAGE(graphs << " fill graphs, " << entries << " entries checked");
+  CHECK(graphs > 500);
+}
+
+TEST_CASE("region dual: regions read through their graphs never take the bound past the brute-force optimum") {
+  int runs = 0, tight = 0, relaxed = 0;
+  for (uint32_t k : {2u, 3u, 4u})
+    for (uint64_t seed = 1; seed <= 60; ++seed) {
+      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 11 + k, 1)).xyz));
+      const Mesh& dt = fo.base;
+      const KOrderStructure structure(dt, k, {});
+      for (const auto& oi : objectives()) {
+        RegionEngine engine(dt, oi.objective, structure, k, RegionLimits{}, {});
+        if (!integral_sum(engine.model.graph) || engine.R.incomplete || engine.model.graph.relaxed_terms) continue;
+        if (!forget_lists(engine.R)) continue;
+        SolveOptions bf;
+        bf.method = Method::BruteForce;
+        const double want = solve_k_order(fo, oi.objective, k, bf).value;
+        RegionDualLimits limits;
+        limits.dual.max_sweeps = 1 + seed % 50;
+        limits.dual.cluster_entries = seed % 2 ? 1.0 : 4096.0;
+        if (seed % 5 == 0) limits.max_states = 20;  // (some graphs too large: left to the relaxation)
+        const RegionDual d = region_dual(dt, engine.R, oi.objective, engine.cand, engine.terms, std::nullopt, limits);
+        CAPTURE(k);
+        CAPTURE(seed);
+        CAPTURE(oi.id);
+        if (!d.graphs) continue;
+        REQUIRE(d.bound);
+        ++runs;
+        relaxed += d.relaxed > 0;
+        CHECK(not_past(oi.sense, *d.bound, want));
+        tight += *d.bound == want;
+        // The decoded fills, with the Delaunay fill elsewhere: a k-OD triangulation no better than the bound.
+        std::vector<Tri> tris;
+        for (uint32_t r = 0; r < engine.R.regions.size(); ++r) {
+          const auto& fill = d.fills[r].empty() ? engine.R.regions[r].states[0] : d.fills[r];
+          tris.insert(tris.end(), fill.begin(), fill.end());
+        }
+        const Mesh m = mesh_of(dt.coords, tris);
+        CHECK(is_k_order(m, dt, k));
+        CHECK(not_past(oi.sense, *d.bound, evaluate(oi.objective, m)));
+      }
+    }
+  MESSAGE(runs << " bounds over regions read through their graphs, " << tight << " equal to the optimum, " << relaxed
+                << " with some regions relaxed");
+  CHECK(runs > 300);
+  CHECK(tight > runs / 2);
+  CHECK(relaxed >= 10);
+}
