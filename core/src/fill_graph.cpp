@@ -37,7 +37,11 @@ struct Links {
 }  // namespace
 
 double FillGraph::least(const std::vector<std::vector<double>>& costs, std::vector<std::vector<double>>* marginals,
-                        std::vector<Tri>* best) const {
+                        std::vector<Tri>* best, std::vector<uint32_t>* best_entries) const {
+  if (best_entries && !best) {
+    std::vector<Tri> tris;
+    return least(costs, marginals, &tris, best_entries);
+  }
   std::vector<double> c(arcs.size());
   for (size_t a = 0; a < arcs.size(); ++a) {
     double v = arcs[a].cost;
@@ -61,6 +65,12 @@ double FillGraph::least(const std::vector<std::vector<double>>& costs, std::vect
     std::vector<uint32_t> path;
     for (uint32_t n = end; via[n] != UINT32_MAX; n = arcs[via[n]].parent) path.push_back(via[n]);
     *best = fill_of(*this, path);
+    if (best_entries) {
+      best_entries->assign(entries.size(), 0);
+      for (uint32_t a : path)
+        for (uint32_t t = arcs[a].first_take; t < arcs[a].first_take + arcs[a].takes; ++t)
+          (*best_entries)[taken[t].first] = taken[t].second;
+    }
   }
   if (marginals) {
     std::vector<double> backward(nodes, INFINITY);

@@ -12,6 +12,7 @@
 #include "hodt/higher_order.hpp"
 #include "hodt/k_order_baker.hpp"
 #include "hodt/pair_measures.hpp"
+#include "hodt/region_dual.hpp"
 #include "hodt/region_engine.hpp"
 #include "hodt/region_model.hpp"
 #include "hodt/region_terms.hpp"
@@ -61,25 +62,6 @@ KOrderResult brute_force_k_order(const Mesh& dt, Objective o, uint32_t k, uint64
   r.method = "brute-force";
   r.details = std::to_string(r.enumerated) + " k-OD triangulations enumerated";
   return r;
-}
-
-// Per region, the state whose triangles all belong to `m` (0 if none does: a
-// region whose enumeration stopped early may lack it).
-std::vector<uint32_t> states_of(const Regions& R, const Mesh& m) {
-  std::set<Tri> tris;
-  for (uint32_t t = 0; t < m.num_triangles(); ++t) {
-    tris.insert(canonical_triangle(base_triangle(m, t)));
-  }
-  std::vector<uint32_t> state(R.regions.size(), 0);
-  for (size_t r = 0; r < R.regions.size(); ++r) {
-    const auto& states = R.regions[r].states;
-    for (uint32_t s = 0; s < states.size(); ++s)
-      if (std::all_of(states[s].begin(), states[s].end(), [&](const Tri& t) { return tris.count(t) > 0; })) {
-        state[r] = s;
-        break;
-      }
-  }
-  return state;
 }
 
 // Adds to each incomplete region the part of a k-OD triangulation that lies in it
@@ -157,6 +139,26 @@ bool list_whole(const Mesh& dt, Objective o, RegionEngine& engine, const Progres
   return !R.incomplete;
 }
 
+// Counts over regions not listed whole: the dual reads them through their fill
+// graphs (region_dual.hpp). Its decoded fills join the regions' lists, and the
+// listed DP (or local search) combines them with the rest. Returns the bound.
+std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEngine& engine, KOrderResult& r,
+                                           std::string& how, const Progress& progress) {
+  Regions& R = engine.R;
+  RegionDualLimits limits;
+  limits.dual.progress = progress;
+  add_states_of(R, dt, r.triangulation);
+  const RegionDual d = region_dual(dt, R, o, engine.cand, engine.terms, &r.triangulation, limits);
+  for (const std::vector<Tri>& tris : d.found) {
+    Mesh m = mesh_of(dt.coords, tris);
+    const double v = evaluate(o, m);
+    if (better(info(o).sense, v, r.value))
+      r.triangulation = std::move(m), r.value = v,
+      how += ", then descent over the regions' fill graphs from the dual (" + std::to_string(d.graphs) + " graphs)";
+  }
+  return d.bound;
+}
+
 // Counts: the dual bound (dual_bound.hpp), once the cheaper bounds left a gap.
 // Over a whole model it gives local search one more start, then proves the
 // best triangulation found optimal (r.optimal, r.method "exact") or finds the
@@ -171,7 +173,7 @@ std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& e
   DualLimits dual;
   dual.progress = progress;
   dual.max_rounds = 2;
-  if (R.incomplete) return DualProof(relaxation(model.graph), dual).bound();
+  if (R.incomplete) return bound_by_fill_graphs(dt, o, engine, r, how, progress);
   StateDpLimits dl;
   dl.progress = progress;
   // Two clusterings in turn: the ascent stops at a fixed point of its own in
@@ -262,8 +264,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
       return r;
     }
   }
-  if (options.method == Method::Exact && (!provable || R.incomplete))
-    throw LimitError("exact at order " + std::to_string(k) + ": " + refused);
+  if (options.method == Method::Exact && !provable) throw LimitError("exact at order " + std::to_string(k) + ": " + refused);
   // Otherwise: the best triangulation over the triangulations each region has
   // listed (the first order optimum's among them, so never worse than it), by the
   // same DP when its tables fit, else by local search; the bound is the
@@ -285,7 +286,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     if (better(sense, lower.value, start_value)) start = std::move(lower.triangulation), start_value = lower.value;
   }
   if (added) model = region_model(dt, R, o, {}, options.progress);
-  const ListedBest listed = engine.best_listed(states_of(R, start), options.progress);
+  const ListedBest listed = engine.best_listed(listed_states(R, start), options.progress);
   if (bounded && listed.bound_only && !R.incomplete && !model.graph.relaxed_terms &&
       !better(sense, listed.listed_value, start_value)) {
     // The model is the whole problem, so its mini-bucket value bounds the

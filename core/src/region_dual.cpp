@@ -1,6 +1,9 @@
 #include "hodt/region_dual.hpp"
 
+#include <algorithm>
+
 #include "hodt/fill_graph.hpp"
+#include "hodt/measures.hpp"
 #include "hodt/region_model.hpp"
 
 namespace hodt {
@@ -17,10 +20,7 @@ struct RegionFactor final : ImplicitFactor {
 
   double least(const std::vector<std::vector<double>>& scope_costs,
                std::vector<std::vector<double>>* scope_marginals) const override {
-    costs.resize(graph.entries.size());
-    for (size_t i = 0; i < costs.size(); ++i) costs[i].assign(graph.entries[i].size(), 0.0);
-    for (size_t j = 0; j < item_of.size(); ++j) costs[item_of[j]] = scope_costs[j];
-    const double v = graph.least(costs, scope_marginals ? &marginals : nullptr) + offset;
+    const double v = graph.least(item_costs(scope_costs), scope_marginals ? &marginals : nullptr) + offset;
     if (scope_marginals) {
       scope_marginals->resize(item_of.size());
       for (size_t j = 0; j < item_of.size(); ++j) {
@@ -30,14 +30,104 @@ struct RegionFactor final : ImplicitFactor {
     }
     return v;
   }
+  // The same with a least fill and its entries (per item of the graph).
+  double best(const std::vector<std::vector<double>>& scope_costs, std::vector<Tri>& fill,
+              std::vector<uint32_t>* entries = nullptr) const {
+    return graph.least(item_costs(scope_costs), nullptr, &fill, entries) + offset;
+  }
+
+ private:
+  const std::vector<std::vector<double>>& item_costs(const std::vector<std::vector<double>>& scope_costs) const {
+    costs.resize(graph.entries.size());
+    for (size_t i = 0; i < costs.size(); ++i) costs[i].assign(graph.entries[i].size(), 0.0);
+    for (size_t j = 0; j < item_of.size(); ++j) costs[item_of[j]] = scope_costs[j];
+    return costs;
+  }
+};
+
+// Block coordinate descent over the model with its regions' graphs: each
+// variable in turn takes its best state for the others' (min form), each region
+// read through its graph its best fill for the terms its entries meet, until
+// nothing improves. (A term over two items of one region reads the other's
+// current entry: a step may then not improve, and the passes are bounded.)
+struct Descent {
+  const StateGraph& g;
+  const std::vector<RegionFactor>& factors;  // per region (empty scope: none)
+  const std::vector<uint32_t>& regions;      // those with a graph
+  double sign;
+  std::vector<std::vector<std::pair<uint32_t, uint32_t>>> reads;  // per variable: (factor, position)
+  std::vector<uint8_t> in_block;
+
+  Descent(const StateGraph& graph, const std::vector<RegionFactor>& f, const std::vector<uint32_t>& r)
+      : g(graph), factors(f), regions(r), sign(graph.sense == Sense::Min ? 1.0 : -1.0),
+        reads(graph.domain.size()), in_block(graph.domain.size(), 0) {
+    for (uint32_t fi = 0; fi < g.factors.size(); ++fi)
+      for (uint32_t j = 0; j < g.factors[fi].scope.size(); ++j) reads[g.factors[fi].scope[j]].push_back({fi, j});
+    for (uint32_t r : regions)
+      for (uint32_t x : factors[r].scope) in_block[x] = 1;
+  }
+
+  // Variable x in each of its states, the others as they are (min form).
+  std::vector<double> local(uint32_t x, std::vector<uint32_t>& state) const {
+    std::vector<double> v(g.domain[x]);
+    const uint32_t keep = state[x];
+    for (uint32_t s = 0; s < g.domain[x]; ++s) {
+      state[x] = s;
+      double t = g.unary[x][s];
+      for (auto [fi, j] : reads[x]) {
+        const StateFactor& f = g.factors[fi];
+        size_t idx = 0, stride = 1;
+        for (size_t i = 0; i < f.scope.size(); ++i) idx += stride * f.project[i][state[f.scope[i]]], stride *= f.dims[i];
+        t += f.table[idx];
+      }
+      v[s] = sign * t;
+    }
+    state[x] = keep;
+    return v;
+  }
+
+  // Runs from `state` (per variable); fills: per region with a graph, its fill.
+  void run(std::vector<uint32_t>& state, std::vector<std::vector<Tri>>& fills) const {
+    for (int pass = 0; pass < 50; ++pass) {
+      bool moved = false;
+      for (uint32_t x = 0; x < g.domain.size(); ++x) {
+        if (in_block[x] || g.domain[x] < 2) continue;
+        const std::vector<double> v = local(x, state);
+        const uint32_t s = static_cast<uint32_t>(std::min_element(v.begin(), v.end()) - v.begin());
+        if (v[s] < v[state[x]]) state[x] = s, moved = true;
+      }
+      for (uint32_t r : regions) {
+        const RegionFactor& f = factors[r];
+        std::vector<std::vector<double>> costs(f.scope.size());
+        for (size_t j = 0; j < f.scope.size(); ++j) costs[j] = local(f.scope[j], state);
+        // Its best fill, and its best with the entries it has now: the first
+        // when strictly better (no cycling), else the second (the others see
+        // nothing change; its own terms may improve).
+        std::vector<uint32_t> entries;
+        std::vector<Tri> free, kept;
+        const double best = f.best(costs, free, &entries);
+        for (size_t j = 0; j < f.scope.size(); ++j)
+          for (uint32_t e = 0; e < costs[j].size(); ++e)
+            if (e != state[f.scope[j]]) costs[j][e] = INFINITY;
+        const double now = f.best(costs, kept);
+        if (!(best < now)) {
+          fills[r] = std::move(kept);
+          continue;
+        }
+        fills[r] = std::move(free);
+        for (size_t j = 0; j < f.scope.size(); ++j) state[f.scope[j]] = entries[f.item_of[j]];
+        moved = true;
+      }
+      if (!moved) break;
+    }
+  }
 };
 
 }  // namespace
 
 RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Candidates& cand, const RegionTerms& terms,
-                       std::optional<double> stop_at, const RegionDualLimits& limits) {
+                       const Mesh* start, const RegionDualLimits& limits) {
   RegionDual out;
-  out.fills.resize(R.regions.size());
   const double sign = info(o).sense == Sense::Min ? 1.0 : -1.0;
   // The regions not listed whole, each through its graph if it fits.
   std::vector<std::optional<FillGraph>> graphs(R.regions.size());
@@ -81,17 +171,50 @@ RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Cand
     factors[r].item_of.push_back(view - 1);
   }
   for (uint32_t r : region_of_factor) implicit.push_back(&factors[r]);
-  const DualProof proof(relaxation(model.graph), limits.dual, stop_at, implicit);
+  const StateGraph h = relaxation(model.graph);
+  const std::optional<double> stop_at = start ? std::optional<double>(evaluate(o, *start)) : std::nullopt;
+  const DualProof proof(h, limits.dual, stop_at, implicit);
   out.bound = proof.bound();
   if (!proof.applies()) return out;
+  // Local search from the dual's decoded states and fills, and from `start`.
+  const Descent descent(h, factors, region_of_factor);
+  const std::vector<uint32_t> start_states = start ? listed_states(R, *start) : std::vector<uint32_t>(R.regions.size(), 0);
+  auto found = [&](std::vector<uint32_t> state, std::vector<std::vector<Tri>> fills) {
+    descent.run(state, fills);
+    std::vector<Tri> tris;
+    for (uint32_t r = 0; r < R.regions.size(); ++r) {
+      const int32_t x = model.variable_of_region[r];
+      const auto& states = R.regions[r].states;
+      const auto& fill = graphs[r] ? fills[r] : x < 0 ? states[0] : h.domain[static_cast<uint32_t>(x)] < 2 ? states[start_states[r]] : states[state[static_cast<uint32_t>(x)]];
+      tris.insert(tris.end(), fill.begin(), fill.end());
+    }
+    out.found.push_back(std::move(tris));
+  };
+  std::vector<std::vector<Tri>> fills(R.regions.size());
+  std::vector<uint32_t> state = proof.decoded(), entries;
   for (size_t i = 0; i < region_of_factor.size(); ++i) {
     const RegionFactor& f = factors[region_of_factor[i]];
-    const std::vector<std::vector<double>> scope_costs = proof.implicit_costs(i);
-    std::vector<std::vector<double>> costs(f.graph.entries.size());
-    for (size_t j = 0; j < costs.size(); ++j) costs[j].assign(f.graph.entries[j].size(), 0.0);
-    for (size_t j = 0; j < f.item_of.size(); ++j) costs[f.item_of[j]] = scope_costs[j];
-    f.graph.least(costs, nullptr, &out.fills[region_of_factor[i]]);
+    f.best(proof.implicit_costs(i), fills[region_of_factor[i]], &entries);
+    for (size_t j = 0; j < f.scope.size(); ++j) state[f.scope[j]] = entries[f.item_of[j]];
   }
+  found(state, fills);
+  if (!start) return out;
+  // The start's states, and its fills' entries.
+  for (uint32_t x = 0; x < h.domain.size(); ++x) state[x] = h.domain[x] < 2 ? 0 : start_states[model.region_of_variable[x]];
+  for (uint32_t r : region_of_factor) {
+    const RegionFactor& f = factors[r];
+    fills[r] = R.regions[r].states[start_states[r]];
+    for (const SignatureEntry& e : terms.key(r, fills[r]).signature) {
+      const auto item = std::lower_bound(f.graph.items.begin(), f.graph.items.end(), RegionTerms::item_of(e));
+      if (item == f.graph.items.end() || *item != RegionTerms::item_of(e)) return out;  // (not its part: no start)
+      const auto& list = f.graph.entries[static_cast<size_t>(item - f.graph.items.begin())];
+      const uint32_t id = static_cast<uint32_t>(std::find(list.begin(), list.end(), e) - list.begin());
+      if (id == list.size()) return out;
+      for (size_t j = 0; j < f.scope.size(); ++j)
+        if (f.graph.items[f.item_of[j]] == *item) state[f.scope[j]] = id;
+    }
+  }
+  found(state, fills);
   return out;
 }
 

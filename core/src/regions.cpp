@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <numeric>
+#include <set>
 #include <stdexcept>
 
 #include "hodt/error.hpp"
@@ -259,5 +260,23 @@ Regions k_order_regions(const Mesh& dt, uint32_t k, const RegionLimits& limits) 
   enumerate_regions(dt, out, limits);
   return out;
 }
+
+std::vector<uint32_t> listed_states(const Regions& R, const Mesh& m) {
+  std::set<Tri> tris;
+  for (uint32_t t = 0; t < m.num_triangles(); ++t) {
+    tris.insert(canonical_triangle(base_triangle(m, t)));
+  }
+  std::vector<uint32_t> state(R.regions.size(), 0);
+  for (size_t r = 0; r < R.regions.size(); ++r) {
+    const auto& states = R.regions[r].states;
+    for (uint32_t s = 0; s < states.size(); ++s)
+      if (std::all_of(states[s].begin(), states[s].end(), [&](const Tri& t) { return tris.count(t) > 0; })) {
+        state[r] = s;
+        break;
+      }
+  }
+  return state;
+}
+
 
 }  // namespace hodt

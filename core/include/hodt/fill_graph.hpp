@@ -37,9 +37,10 @@ struct FillGraph {
   // With costs[item][entry] added where an arc takes it: the least total of a
   // complete fill (own terms plus costs). marginals (when not null): per item
   // and entry, the least total of a fill that takes it. best (when not null):
-  // the triangles of a least fill (canonical, sorted).
+  // the triangles of a least fill (canonical, sorted); best_entries (when not
+  // null): per item, the entry that fill takes.
   double least(const std::vector<std::vector<double>>& costs, std::vector<std::vector<double>>* marginals = nullptr,
-               std::vector<Tri>* best = nullptr) const;
+               std::vector<Tri>* best = nullptr, std::vector<uint32_t>* best_entries = nullptr) const;
   // Per item and entry, a complete fill that takes it (canonical, sorted).
   std::vector<std::vector<std::vector<Tri>>> representatives() const;
 };

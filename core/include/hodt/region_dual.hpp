@@ -32,16 +32,17 @@ struct RegionDualLimits {
 
 struct RegionDual {
   std::optional<double> bound;  // no k-OD triangulation is better (nothing: the dual does not apply)
-  // Per region read through its graph, its best fill under the final dual
-  // costs (canonical, sorted); empty for the others: a start for local search.
-  std::vector<std::vector<Tri>> fills;
+  // k-OD triangulations (their triangles) found by block coordinate descent,
+  // each region read through its graph taking its best fill for the others'
+  // entries: from the dual's decoded states, and from `start`.
+  std::vector<std::vector<Tri>> found;
   uint32_t graphs = 0;    // regions read through their fill graph
   uint32_t relaxed = 0;   // regions not listed whole left to the relaxation
 };
 
-// stop_at: the value of a triangulation in hand (the ascent stops once it is proven).
+// start: a k-OD triangulation whose part in every region is listed (add_states_of),
+// its value the ascent's stop (it stops once that is proven optimal).
 RegionDual region_dual(const Mesh& delaunay, const Regions& regions, Objective o, const Candidates& candidates,
-                       const RegionTerms& terms, std::optional<double> stop_at = std::nullopt,
-                       const RegionDualLimits& limits = {});
+                       const RegionTerms& terms, const Mesh* start = nullptr, const RegionDualLimits& limits = {});
 
 }  // namespace hodt

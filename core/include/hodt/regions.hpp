@@ -87,6 +87,10 @@ void enumerate_regions(const Mesh& delaunay, Regions& regions, const RegionLimit
 // Both.
 Regions k_order_regions(const Mesh& delaunay, uint32_t k, const RegionLimits& limits = {});
 
+// Per region, the state whose triangles all belong to `m` (0 if none does: a
+// region whose enumeration stopped early may lack it).
+std::vector<uint32_t> listed_states(const Regions& regions, const Mesh& m);
+
 // The Delaunay halfedges crossed by the segment u v (u, v vertices, uv not a
 // Delaunay edge and through no other point).
 std::vector<uint32_t> crossed_edges(const Mesh& delaunay, const std::vector<int32_t>& vertex_halfedge, uint32_t u,
