@@ -494,6 +494,24 @@ std::vector<std::vector<double>> DualProof::implicit_costs(size_t i) const {
   return costs;
 }
 
+std::optional<DualProof::ImplicitReduced> DualProof::implicit_reduced(size_t i) const {
+  if (!impl_->raised) return std::nullopt;
+  const Ascent& a = impl_->raised->ascent;
+  const size_t fi = impl_->g.factors.size() + i;
+  // Every piece but this factor and its variables at its least: the bound less
+  // theirs, plus what they take for the value held (exact: each below 2^31).
+  ImplicitReduced r;
+  r.offset = impl_->raised->bound - a.factor_least[fi];
+  for (size_t j = 0; j < impl_->implicit[i]->scope.size(); ++j) {
+    const std::vector<double>& u = a.unary[impl_->implicit[i]->scope[j]];
+    r.offset -= *std::min_element(u.begin(), u.end());
+    r.costs.push_back(u);
+    for (size_t s = 0; s < u.size(); ++s) r.costs.back()[s] -= a.msg[fi][j][s];
+  }
+  if (!(std::fabs(r.offset) < kLargest)) return std::nullopt;
+  return r;
+}
+
 uint32_t DualProof::sweeps() const { return impl_->raised ? impl_->raised->sweeps : 0; }
 
 std::vector<uint32_t> DualProof::decoded() const {

@@ -36,18 +36,36 @@ struct Links {
 
 }  // namespace
 
+namespace {
+
+std::vector<double> arc_costs(const FillGraph& g, const std::vector<std::vector<double>>& costs) {
+  std::vector<double> c(g.arcs.size());
+  for (size_t a = 0; a < g.arcs.size(); ++a) {
+    double v = g.arcs[a].cost;
+    for (uint32_t t = g.arcs[a].first_take; t < g.arcs[a].first_take + g.arcs[a].takes; ++t)
+      v += costs[g.taken[t].first][g.taken[t].second];
+    c[a] = v;
+  }
+  return c;
+}
+
+// Per node, the least cost from it to a complete fill.
+std::vector<double> backward(const FillGraph& g, const std::vector<double>& c) {
+  std::vector<double> b(g.nodes, INFINITY);
+  for (uint32_t n : g.complete) b[n] = 0;
+  for (size_t a = g.arcs.size(); a-- > 0;) b[g.arcs[a].parent] = std::min(b[g.arcs[a].parent], c[a] + b[g.arcs[a].child]);
+  return b;
+}
+
+}  // namespace
+
 double FillGraph::least(const std::vector<std::vector<double>>& costs, std::vector<std::vector<double>>* marginals,
                         std::vector<Tri>* best, std::vector<uint32_t>* best_entries) const {
   if (best_entries && !best) {
     std::vector<Tri> tris;
     return least(costs, marginals, &tris, best_entries);
   }
-  std::vector<double> c(arcs.size());
-  for (size_t a = 0; a < arcs.size(); ++a) {
-    double v = arcs[a].cost;
-    for (uint32_t t = arcs[a].first_take; t < arcs[a].first_take + arcs[a].takes; ++t) v += costs[taken[t].first][taken[t].second];
-    c[a] = v;
-  }
+  const std::vector<double> c = arc_costs(*this, costs);
   std::vector<double> forward(nodes, INFINITY);
   std::vector<uint32_t> via(best ? nodes : 0, UINT32_MAX);
   forward[0] = 0;
@@ -73,14 +91,11 @@ double FillGraph::least(const std::vector<std::vector<double>>& costs, std::vect
     }
   }
   if (marginals) {
-    std::vector<double> backward(nodes, INFINITY);
-    for (uint32_t n : complete) backward[n] = 0;
-    for (size_t a = arcs.size(); a-- > 0;)
-      backward[arcs[a].parent] = std::min(backward[arcs[a].parent], c[a] + backward[arcs[a].child]);
+    const std::vector<double> back = backward(*this, c);
     marginals->resize(entries.size());
     for (size_t i = 0; i < entries.size(); ++i) (*marginals)[i].assign(entries[i].size(), INFINITY);
     for (size_t a = 0; a < arcs.size(); ++a) {
-      const double v = forward[arcs[a].parent] + c[a] + backward[arcs[a].child];
+      const double v = forward[arcs[a].parent] + c[a] + back[arcs[a].child];
       for (uint32_t t = arcs[a].first_take; t < arcs[a].first_take + arcs[a].takes; ++t) {
         double& m = (*marginals)[taken[t].first][taken[t].second];
         m = std::min(m, v);
@@ -88,6 +103,51 @@ double FillGraph::least(const std::vector<std::vector<double>>& costs, std::vect
     }
   }
   return forward[end];
+}
+
+std::optional<std::vector<double>> FillGraph::through(const std::vector<std::vector<double>>& costs) const {
+  const std::vector<double> c = arc_costs(*this, costs);
+  std::vector<double> forward(nodes, INFINITY);
+  forward[0] = 0;
+  for (size_t a = 0; a < arcs.size(); ++a)
+    forward[arcs[a].child] = std::min(forward[arcs[a].child], forward[arcs[a].parent] + c[a]);
+  const std::vector<double> back = backward(*this, c);
+  auto small = [](double v) { return std::fabs(v) < 0x1p31; };
+  std::vector<double> out(arcs.size());
+  for (size_t a = 0; a < arcs.size(); ++a) {
+    if (!small(c[a]) || !small(forward[arcs[a].parent]) || !small(back[arcs[a].child])) return std::nullopt;
+    out[a] = forward[arcs[a].parent] + c[a] + back[arcs[a].child];
+  }
+  return out;
+}
+
+std::optional<std::vector<std::vector<Tri>>> FillGraph::fills(const std::vector<uint8_t>& kept, uint64_t max_fills) const {
+  // Paths to a complete fill over kept arcs, counted from each node (capped).
+  std::vector<double> paths(nodes, 0);
+  for (uint32_t n : complete) paths[n] = 1;
+  for (size_t a = arcs.size(); a-- > 0;)
+    if (kept[a]) paths[arcs[a].parent] = std::min(paths[arcs[a].parent] + paths[arcs[a].child], 1e18);
+  if (paths[0] > static_cast<double>(max_fills)) return std::nullopt;
+  // Arcs out of each node (arcs are sorted by parent).
+  std::vector<uint32_t> first(nodes + 1, 0);
+  for (const Arc& arc : arcs) ++first[arc.parent + 1];
+  for (uint32_t n = 0; n < nodes; ++n) first[n + 1] += first[n];
+  std::vector<std::vector<Tri>> out;
+  std::vector<uint32_t> path;
+  auto walk = [&](auto&& self, uint32_t n) -> void {
+    if (first[n] == first[n + 1]) {
+      if (paths[n] > 0) out.push_back(fill_of(*this, path));
+      return;
+    }
+    for (uint32_t a = first[n]; a < first[n + 1]; ++a) {
+      if (!kept[a] || paths[arcs[a].child] == 0) continue;
+      path.push_back(a);
+      self(self, arcs[a].child);
+      path.pop_back();
+    }
+  };
+  walk(walk, 0);
+  return out;
 }
 
 std::vector<std::vector<std::vector<Tri>>> FillGraph::representatives() const {

@@ -146,15 +146,29 @@ std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEn
                                            std::string& how, const Progress& progress) {
   Regions& R = engine.R;
   RegionDualLimits limits;
-  limits.dual.progress = progress;
+  limits.dual.progress = limits.dp.progress = progress;
+  limits.dp.max_table = 1 << 24;
   add_states_of(R, dt, r.triangulation);
-  const RegionDual d = region_dual(dt, R, o, engine.cand, engine.terms, &r.triangulation, limits);
+  RegionDual d = region_dual(dt, R, o, engine.cand, engine.terms, &r.triangulation, limits);
+  bool improved = false;
   for (const std::vector<Tri>& tris : d.found) {
     Mesh m = mesh_of(dt.coords, tris);
     const double v = evaluate(o, m);
-    if (better(info(o).sense, v, r.value))
-      r.triangulation = std::move(m), r.value = v,
-      how += ", then descent over the regions' fill graphs from the dual (" + std::to_string(d.graphs) + " graphs)";
+    if (better(info(o).sense, v, r.value)) r.triangulation = std::move(m), r.value = v, improved = true;
+  }
+  if (improved) how += ", then descent over the regions' fill graphs from the dual (" + std::to_string(d.graphs) + " graphs)";
+  if (d.proven) {
+    if (d.optimum) {
+      r.value = evaluate(o, *d.optimum);
+      r.triangulation = std::move(*d.optimum);
+    }
+    r.optimal = true;
+    r.bound.reset();
+    r.method = "exact";
+    r.details = region_summary(R) + "; the dual read " + std::to_string(d.graphs) +
+                " regions through their fill graphs, kept " + std::to_string(d.listed) +
+                " of their fills, and the dual proof over those proved " +
+                (d.optimum ? std::string("its optimum") : "the heuristic's result (" + how + ")") + " optimal";
   }
   return d.bound;
 }

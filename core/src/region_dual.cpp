@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include "hodt/error.hpp"
 #include "hodt/fill_graph.hpp"
+#include "hodt/k_order.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/region_model.hpp"
 
@@ -123,6 +125,51 @@ struct Descent {
   }
 };
 
+// RegionDual::proven, above.
+void prove(const Mesh& dt, const Regions& R, Objective o, const std::vector<RegionFactor>& factors,
+           const std::vector<uint32_t>& region_of_factor, const DualProof& proof, const Mesh& start,
+           const RegionDualLimits& limits, RegionDual& out) {
+  const Sense sense = info(o).sense;
+  double incumbent = evaluate(o, start);
+  for (const auto& tris : out.found) {
+    const double v = evaluate(o, mesh_of(dt.coords, tris));
+    if (better(sense, v, incumbent)) incumbent = v;
+  }
+  const double ub = (sense == Sense::Min ? 1.0 : -1.0) * incumbent;  // (min form)
+  Regions listed = R;
+  for (size_t i = 0; i < region_of_factor.size(); ++i) {
+    const uint32_t r = region_of_factor[i];
+    const RegionFactor& f = factors[r];
+    const auto red = proof.implicit_reduced(i);
+    if (!red) return;
+    std::vector<std::vector<double>> costs(f.graph.entries.size());
+    for (size_t j = 0; j < costs.size(); ++j) costs[j].assign(f.graph.entries[j].size(), 0.0);
+    for (size_t j = 0; j < f.item_of.size(); ++j) costs[f.item_of[j]] = red->costs[j];
+    const auto through = f.graph.through(costs);
+    if (!through) return;
+    // Integer values: a fill can be in a better triangulation only if its bound is at most ub - 1.
+    std::vector<uint8_t> kept(through->size());
+    for (size_t a = 0; a < kept.size(); ++a) kept[a] = red->offset + f.offset + (*through)[a] <= ub - 1;
+    const uint64_t room = std::min(limits.max_listed, limits.max_listed_total - out.listed);
+    const auto fills = f.graph.fills(kept, room);
+    if (!fills) return;
+    out.listed += fills->size();
+    auto& states = listed.regions[r].states;
+    states.resize(1);  // (the Delaunay fill stays first)
+    for (const auto& fill : *fills)
+      if (fill != states[0]) states.push_back(fill);
+    listed.regions[r].complete = true;
+  }
+  listed.incomplete = 0;
+  const RegionModel whole = region_model(dt, listed, o, {}, limits.dual.progress);
+  const DualProof again(whole.graph, limits.dual, incumbent);
+  if (!again.applies()) return;
+  const DualProof::Proof p = again.prove(incumbent, limits.dp);
+  if (!p.proven) return;
+  out.proven = true;
+  if (p.better) out.optimum = listed.triangulation(dt, whole.region_states(*p.better));
+}
+
 }  // namespace
 
 RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Candidates& cand, const RegionTerms& terms,
@@ -215,6 +262,7 @@ RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Cand
     }
   }
   found(state, fills);
+  if (!out.relaxed) prove(dt, R, o, factors, region_of_factor, proof, *start, limits, out);
   return out;
 }
 

@@ -76,6 +76,15 @@ class DualProof {
   // Implicit factor i's costs for decoding (its variables' final beliefs, min
   // form): its least state under them is a start for the same search.
   std::vector<std::vector<double>> implicit_costs(size_t i) const;
+  // Implicit factor i held at one of its values (min form): with these costs
+  // on its variables' states, `offset` plus its least total over the values
+  // that take them bounds every assignment that does (as prove() bounds
+  // states and entries). Nothing when the values left the exact range.
+  struct ImplicitReduced {
+    std::vector<std::vector<double>> costs;
+    double offset = 0;
+  };
+  std::optional<ImplicitReduced> implicit_reduced(size_t i) const;
   // Proves an incumbent optimal or finds a better optimum: pruning by the
   // bound, then the exact DP over what is left (a LimitError there leaves
   // `proven` false; dp_limits.mini_buckets is ignored). The incumbent must be

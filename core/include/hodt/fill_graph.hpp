@@ -41,6 +41,12 @@ struct FillGraph {
   // null): per item, the entry that fill takes.
   double least(const std::vector<std::vector<double>>& costs, std::vector<std::vector<double>>* marginals = nullptr,
                std::vector<Tri>* best = nullptr, std::vector<uint32_t>* best_entries = nullptr) const;
+  // Per arc, the least total of a complete fill through it; nothing if a
+  // partial total reaches 2^31 (below that, sums of grid values are exact).
+  std::optional<std::vector<double>> through(const std::vector<std::vector<double>>& costs) const;
+  // The complete fills that use only the arcs kept (canonical, sorted), or
+  // nothing if there are more than max_fills.
+  std::optional<std::vector<std::vector<Tri>>> fills(const std::vector<uint8_t>& kept, uint64_t max_fills) const;
   // Per item and entry, a complete fill that takes it (canonical, sorted).
   std::vector<std::vector<std::vector<Tri>>> representatives() const;
 };

@@ -27,7 +27,11 @@ namespace hodt {
 struct RegionDualLimits {
   uint64_t max_states = 200'000;      // partial fills of one region's graph
   uint64_t max_total = 2'000'000;     // over every region's
+  // The proof lists, per region, the fills that could beat the incumbent.
+  uint64_t max_listed = 20'000;        // per region
+  uint64_t max_listed_total = 200'000;
   DualLimits dual;
+  StateDpLimits dp;                    // for the DP over what the proof lists
 };
 
 struct RegionDual {
@@ -36,6 +40,13 @@ struct RegionDual {
   // each region read through its graph taking its best fill for the others'
   // entries: from the dual's decoded states, and from `start`.
   std::vector<std::vector<Tri>> found;
+  // The proof, with a start and every region read through a graph: each
+  // graph pruned to the fills whose bound allows a better value than the best
+  // triangulation at hand (the start's or one found), those listed, and the
+  // dual proof (its pruning and exact DP) over the model, now whole.
+  bool proven = false;           // no k-OD triangulation beats the best at hand ...
+  std::optional<Mesh> optimum;   // ... or this one, which does (then optimal)
+  uint64_t listed = 0;           // fills the proof listed
   uint32_t graphs = 0;    // regions read through their fill graph
   uint32_t relaxed = 0;   // regions not listed whole left to the relaxation
 };
