@@ -179,14 +179,32 @@ RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Cand
   // The regions not listed whole, each through its graph if it fits.
   std::vector<std::optional<FillGraph>> graphs(R.regions.size());
   std::vector<std::vector<RegionView>> views(R.regions.size());
+  // Smallest regions first; every region gets a small budget, then (when few
+  // are left) the rest a large one each, until one does not fit: a graph's
+  // partial fills cost their frontier's length, and a hopeless region's long
+  // frontier would eat the time of many that fit.
+  std::vector<uint32_t> order;
+  for (uint32_t r = 0; r < R.regions.size(); ++r)
+    if (!R.regions[r].complete) order.push_back(r);
+  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+    return R.regions[a].delaunay_triangles.size() < R.regions[b].delaunay_triangles.size();
+  });
   uint64_t used = 0;
-  for (uint32_t r = 0; r < R.regions.size(); ++r) {
-    if (R.regions[r].complete) continue;
-    uint64_t states = 0;
+  std::vector<uint32_t> left;
+  for (uint32_t r : order) {
     if (used < limits.max_total)
-      graphs[r] = fill_graph(dt, cand, terms, r, std::min(limits.max_states, limits.max_total - used),
-                             limits.dual.progress, &states);
-    used += states;
+      graphs[r] = fill_graph(dt, cand, terms, r, std::min(limits.first_states, limits.max_total - used),
+                             limits.dual.progress, &used);
+    if (!graphs[r]) left.push_back(r);
+  }
+  if (left.size() <= limits.max_second)
+    for (uint32_t r : left) {
+      if (used < limits.max_total)
+        graphs[r] = fill_graph(dt, cand, terms, r, std::min(limits.max_states, limits.max_total - used),
+                               limits.dual.progress, &used);
+      if (!graphs[r]) break;
+    }
+  for (uint32_t r : order) {
     if (!graphs[r]) {
       ++out.relaxed;
       continue;

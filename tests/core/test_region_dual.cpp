@@ -113,7 +113,7 @@ TEST_CASE("region dual: regions read through their graphs never take the bound p
         RegionDualLimits limits;
         limits.dual.max_sweeps = seed % 3 ? 1 + seed % 50 : 1;  // (short ascents: the pruning and the DP do the work)
         limits.dual.cluster_entries = seed % 2 ? 1.0 : 4096.0;
-        if (seed % 5 == 0) limits.max_states = 20;  // (some graphs too large: left to the relaxation)
+        if (seed % 5 == 0) limits.first_states = limits.max_states = 20;  // (some graphs too large: left to the relaxation)
         const RegionDual d = region_dual(dt, engine.R, oi.objective, engine.cand, engine.terms, &dt, limits);
         CAPTURE(k);
         CAPTURE(seed);

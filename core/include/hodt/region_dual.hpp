@@ -25,8 +25,13 @@
 namespace hodt {
 
 struct RegionDualLimits {
-  uint64_t max_states = 200'000;      // partial fills of one region's graph
-  uint64_t max_total = 2'000'000;     // over every region's
+  // Partial fills of one region's graph: every region first gets first_states,
+  // then, if at most max_second are left, those max_states each (smallest first,
+  // until one does not fit); max_total over all, those that did not fit included.
+  uint64_t first_states = 5'000;
+  uint64_t max_states = 200'000;
+  uint32_t max_second = 128;
+  uint64_t max_total = 2'000'000;
   // The proof lists, per region, the fills that could beat the incumbent.
   uint64_t max_listed = 20'000;        // per region
   uint64_t max_listed_total = 200'000;
