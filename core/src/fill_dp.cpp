@@ -110,6 +110,7 @@ struct Recorder {
   std::map<Tri, uint32_t> item_id;
   std::vector<std::map<SignatureEntry, uint32_t>> entry_id;
   std::vector<std::pair<uint32_t, uint32_t>> pending;  // the child being built: its (item, entry)
+  double step = 0;                                      // ... and its terms, combined
   void take(const SignatureEntry& entry) {
     const auto [it, fresh] = item_id.try_emplace(RegionTerms::item_of(entry), static_cast<uint32_t>(entry_id.size()));
     if (fresh) entry_id.emplace_back();
@@ -154,7 +155,7 @@ class FillDp {
           if (!record_) return;
           FillGraph& g = record_->graph;
           const Node& step = pending_[child.node];
-          g.arcs.push_back({base + static_cast<uint32_t>(i), next_base + at, child.value - p.value, step.triangle,
+          g.arcs.push_back({base + static_cast<uint32_t>(i), next_base + at, record_->step, step.triangle,
                             static_cast<uint32_t>(g.taken.size()), static_cast<uint32_t>(record_->pending.size())});
           g.taken.insert(g.taken.end(), record_->pending.begin(), record_->pending.end());
         });
@@ -220,6 +221,7 @@ class FillDp {
 
   void take(Partial& p, double term) {
     p.value = T_.add(p.value, term);
+    if (record_) record_->step = T_.add(record_->step, term);
     if (entry_.empty()) return;
     if (record_) record_->take(entry_);
     if (keep_ && !std::binary_search(keep_->begin(), keep_->end(), RegionTerms::item_of(entry_))) return;
@@ -303,7 +305,7 @@ class FillDp {
       }
       if (!ok) continue;
       Partial& c = child_;
-      if (record_) record_->pending.clear();
+      if (record_) record_->pending.clear(), record_->step = 0;
       c.value = p.value;
       c.signature.assign(p.signature.begin(), p.signature.end());
       const bool edges = T_.reads_apexes();
@@ -360,7 +362,6 @@ namespace hodt {
 std::optional<FillGraph> fill_graph(const Mesh& dt, const Candidates& candidates, const RegionTerms& terms,
                                     uint32_t region, uint64_t max_states, const Progress& progress,
                                     uint64_t* states_used) {
-  if (terms.terms().combine != TermCombine::Sum) return std::nullopt;
   const std::vector<Tri> no_items;
   Recorder rec;
   FillDp dp(dt, candidates, terms, region, &no_items, &rec);

@@ -357,6 +357,16 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
              std::to_string(vb->rounds) + " rounds)";
     }
   }
+  // Min-max over regions not listed whole: thresholds refuted by the dual over their fill graphs.
+  if (description.combine == TermCombine::Max && R.incomplete && better(sense, bound, r.value)) {
+    RegionDualLimits limits;
+    limits.dual.progress = options.progress;
+    limits.dual.max_sweeps = 100;
+    if (const auto t = region_threshold_bound(dt, R, o, cand, terms, bound, r.value, limits)) {
+      bound = tighter(sense, bound, *t);
+      how += ", bound by thresholds over the regions' fill graphs";
+    }
+  }
   if (provable && better(sense, bound, r.value)) {
     if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, options.progress)) {
       if (r.optimal) return r;

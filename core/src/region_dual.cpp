@@ -170,13 +170,25 @@ void prove(const Mesh& dt, const Regions& R, Objective o, const std::vector<Regi
   if (p.better) out.optimum = listed.triangulation(dt, whole.region_states(*p.better));
 }
 
-}  // namespace
+// The model with the regions not listed whole read through their graphs:
+// per item a variable (a view of one item), per region an implicit factor.
+struct GraphModel {
+  RegionModel model;
+  std::vector<RegionFactor> factors;       // per region (with a graph: a scope)
+  std::vector<uint32_t> region_of_factor;  // the regions with a graph
+  std::vector<uint8_t> has_graph;          // per region
+  uint32_t relaxed = 0;                    // regions not listed whole without one
+  std::vector<const ImplicitFactor*> implicit() const {
+    std::vector<const ImplicitFactor*> out;
+    for (uint32_t r : region_of_factor) out.push_back(&factors[r]);
+    return out;
+  }
+};
 
-RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Candidates& cand, const RegionTerms& terms,
-                       const Mesh* start, const RegionDualLimits& limits) {
-  RegionDual out;
+// Nothing if no region not listed whole has a graph that fits.
+std::optional<GraphModel> graph_model(const Mesh& dt, const Regions& R, Objective o, const Candidates& cand,
+                                      const RegionTerms& terms, const RegionDualLimits& limits) {
   const double sign = info(o).sense == Sense::Min ? 1.0 : -1.0;
-  // The regions not listed whole, each through its graph if it fits.
   std::vector<std::optional<FillGraph>> graphs(R.regions.size());
   std::vector<std::vector<RegionView>> views(R.regions.size());
   // Smallest regions first; every region gets a small budget, then (when few
@@ -204,41 +216,58 @@ RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Cand
                                limits.dual.progress, &used);
       if (!graphs[r]) break;
     }
+  GraphModel m;
+  m.has_graph.assign(R.regions.size(), 0);
   for (uint32_t r : order) {
     if (!graphs[r]) {
-      ++out.relaxed;
+      ++m.relaxed;
       continue;
     }
-    ++out.graphs;
+    m.has_graph[r] = 1;
     // Its own terms from the implicit factor: the model reads the Delaunay fill
     // for them (a constant), each item from the fills that stand for its entries.
     views[r].push_back({{}, {R.regions[r].states[0]}});
     const auto reps = graphs[r]->representatives();
     for (size_t i = 0; i < reps.size(); ++i) views[r].push_back({{graphs[r]->items[i]}, reps[i]});
   }
-  if (!out.graphs) return out;
-  RegionModel model = region_model(dt, R, o, {}, limits.dual.progress, &views);
-  std::vector<RegionFactor> factors(R.regions.size());
-  std::vector<const ImplicitFactor*> implicit;
-  std::vector<uint32_t> region_of_factor;
+  if (m.relaxed == order.size()) return std::nullopt;
+  m.model = region_model(dt, R, o, {}, limits.dual.progress, &views);
+  m.factors.resize(R.regions.size());
   for (uint32_t r = 0; r < R.regions.size(); ++r) {
     if (!graphs[r]) continue;
-    RegionFactor& f = factors[r];
+    RegionFactor& f = m.factors[r];
     f.graph = std::move(*graphs[r]);
     for (FillGraph::Arc& a : f.graph.arcs) a.cost *= sign;
     f.offset = -sign * terms.key(r, R.regions[r].states[0]).value;
-    region_of_factor.push_back(r);
+    m.region_of_factor.push_back(r);
   }
-  for (uint32_t x = 0; x < model.region_of_variable.size(); ++x) {
-    const uint32_t r = model.region_of_variable[x], view = model.view_of_variable[x];
-    if (!graphs[r] || view == 0) continue;
-    factors[r].scope.push_back(x);
-    factors[r].item_of.push_back(view - 1);
+  for (uint32_t x = 0; x < m.model.region_of_variable.size(); ++x) {
+    const uint32_t r = m.model.region_of_variable[x], view = m.model.view_of_variable[x];
+    if (!m.has_graph[r] || view == 0) continue;
+    m.factors[r].scope.push_back(x);
+    m.factors[r].item_of.push_back(view - 1);
   }
-  for (uint32_t r : region_of_factor) implicit.push_back(&factors[r]);
+  return m;
+}
+
+}  // namespace
+
+RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Candidates& cand, const RegionTerms& terms,
+                       const Mesh* start, const RegionDualLimits& limits) {
+  RegionDual out;
+  std::optional<GraphModel> built = graph_model(dt, R, o, cand, terms, limits);
+  if (!built) {
+    out.relaxed = static_cast<uint32_t>(R.incomplete);
+    return out;
+  }
+  const RegionModel& model = built->model;
+  const std::vector<RegionFactor>& factors = built->factors;
+  const std::vector<uint32_t>& region_of_factor = built->region_of_factor;
+  out.graphs = static_cast<uint32_t>(region_of_factor.size());
+  out.relaxed = built->relaxed;
   const StateGraph h = relaxation(model.graph);
   const std::optional<double> stop_at = start ? std::optional<double>(evaluate(o, *start)) : std::nullopt;
-  const DualProof proof(h, limits.dual, stop_at, implicit);
+  const DualProof proof(h, limits.dual, stop_at, built->implicit());
   out.bound = proof.bound();
   if (!proof.applies()) return out;
   // Local search from the dual's decoded states and fills, and from `start`.
@@ -250,7 +279,7 @@ RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Cand
     for (uint32_t r = 0; r < R.regions.size(); ++r) {
       const int32_t x = model.variable_of_region[r];
       const auto& states = R.regions[r].states;
-      const auto& fill = graphs[r] ? fills[r] : x < 0 ? states[0] : h.domain[static_cast<uint32_t>(x)] < 2 ? states[start_states[r]] : states[state[static_cast<uint32_t>(x)]];
+      const auto& fill = built->has_graph[r] ? fills[r] : x < 0 ? states[0] : h.domain[static_cast<uint32_t>(x)] < 2 ? states[start_states[r]] : states[state[static_cast<uint32_t>(x)]];
       tris.insert(tris.end(), fill.begin(), fill.end());
     }
     out.found.push_back(std::move(tris));
@@ -282,6 +311,62 @@ RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Cand
   found(state, fills);
   if (!out.relaxed) prove(dt, R, o, factors, region_of_factor, proof, *start, limits, out);
   return out;
+}
+
+std::optional<double> region_threshold_bound(const Mesh& dt, const Regions& R, Objective o, const Candidates& cand,
+                                             const RegionTerms& terms, double known, double incumbent,
+                                             const RegionDualLimits& limits) {
+  if (terms.terms().combine != TermCombine::Max || info(o).sense != Sense::Min || !(known < incumbent)) return std::nullopt;
+  const std::optional<GraphModel> built = graph_model(dt, R, o, cand, terms, limits);
+  if (!built) return std::nullopt;
+  const StateGraph h = relaxation(built->model.graph);  // (terms it cannot see: 0, never above t)
+  // The model's constant also holds the Delaunay fills' own terms of the
+  // regions read through graphs (their implicit factors count those): the
+  // terms fixed in every triangulation are known only when they exceed those.
+  double own = 0;
+  for (uint32_t r : built->region_of_factor) own = std::max(own, terms.key(r, R.regions[r].states[0]).value);
+  const double fixed = h.constant > own ? h.constant : 0;
+  // Every value a term can take in the model between known and incumbent.
+  std::vector<double> values;
+  auto add = [&](double v) {
+    if (v >= known && v < incumbent) values.push_back(v);
+  };
+  for (const auto& u : h.unary)
+    for (double v : u) add(v);
+  for (const StateFactor& f : h.factors)
+    for (double v : f.table) add(v);
+  for (uint32_t r : built->region_of_factor)
+    for (const FillGraph::Arc& a : built->factors[r].graph.arcs) add(a.cost);
+  add(fixed);
+  std::sort(values.begin(), values.end());
+  values.erase(std::unique(values.begin(), values.end()), values.end());
+  // Is every triangulation above t somewhere?
+  auto refuted = [&](double t) {
+    StateGraph c = h;
+    c.combine = TermCombine::Sum;
+    c.constant = fixed > t;
+    for (auto& u : c.unary)
+      for (double& v : u) v = v > t;
+    for (StateFactor& f : c.factors)
+      for (double& v : f.table) v = v > t;
+    std::vector<RegionFactor> factors = built->factors;
+    std::vector<const ImplicitFactor*> implicit;
+    for (uint32_t r : built->region_of_factor) {
+      for (FillGraph::Arc& a : factors[r].graph.arcs) a.cost = a.cost > t;
+      factors[r].offset = 0;
+      implicit.push_back(&factors[r]);
+    }
+    const DualProof proof(c, limits.dual, 2.0, implicit);  // (it may stop once the bound reaches 1)
+    return proof.bound() && *proof.bound() >= 1;
+  };
+  // The largest value refuted (values below one refuted are refuted too).
+  ptrdiff_t lo = -1, hi = static_cast<ptrdiff_t>(values.size());
+  while (hi - lo > 1) {
+    const ptrdiff_t mid = lo + (hi - lo) / 2;
+    (refuted(values[static_cast<size_t>(mid)]) ? lo : hi) = mid;
+  }
+  if (lo < 0) return std::nullopt;
+  return static_cast<size_t>(lo) + 1 < values.size() ? values[static_cast<size_t>(lo) + 1] : incumbent;
 }
 
 }  // namespace hodt

@@ -166,3 +166,38 @@ TEST_CASE("region dual: regions read through their graphs never take the bound p
   CHECK(proven > runs / 2);
   CHECK(by_pruning > 5);
 }
+
+TEST_CASE("region threshold bound: min-max objectives over regions read through their graphs, never past the optimum") {
+  int runs = 0, tight = 0;
+  for (uint32_t k : {2u, 3u, 4u})
+    for (uint64_t seed = 1; seed <= 40; ++seed) {
+      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 17 + k, 1)).xyz));
+      const Mesh& dt = fo.base;
+      const KOrderStructure structure(dt, k, {});
+      for (const auto& oi : objectives()) {
+        RegionEngine engine(dt, oi.objective, structure, k, RegionLimits{}, {});
+        if (engine.terms.terms().combine != TermCombine::Max || engine.R.incomplete) continue;
+        if (!forget_lists(engine.R)) continue;
+        SolveOptions bf;
+        bf.method = Method::BruteForce;
+        const double want = solve_k_order(fo, oi.objective, k, bf).value;
+        const double delaunay_value = evaluate(oi.objective, dt);
+        RegionDualLimits limits;
+        limits.dual.max_sweeps = 1 + seed % 100;
+        if (seed % 5 == 0) limits.first_states = limits.max_states = 20;
+        CAPTURE(k);
+        CAPTURE(seed);
+        CAPTURE(oi.id);
+        const auto b = region_threshold_bound(dt, engine.R, oi.objective, engine.cand, engine.terms,
+                                              engine.terms.floor(), delaunay_value, limits);
+        if (!b) continue;
+        ++runs;
+        CHECK(*b <= want);
+        CHECK(*b > engine.terms.floor());
+        tight += *b == want;
+      }
+    }
+  MESSAGE(runs << " threshold bounds, " << tight << " equal to the optimum");
+  CHECK(runs > 100);
+  CHECK(tight > runs / 2);
+}

@@ -22,7 +22,7 @@ namespace hodt {
 struct FillGraph {
   struct Arc {
     uint32_t parent, child;  // nodes; arcs are sorted by parent
-    double cost;             // the region's own terms completing here
+    double cost;             // the region's own terms completing here, combined (summed, or their max)
     Tri triangle;            // placed here
     uint32_t first_take, takes;  // its (item, entry) pairs in `taken`
   };
@@ -52,8 +52,7 @@ struct FillGraph {
 };
 
 // Region r's fill graph, or nothing when more than max_states partial fills
-// would be kept (*states_used counts them either way). Sums only (its arcs
-// carry differences of the region's value).
+// would be kept (*states_used adds them either way).
 std::optional<FillGraph> fill_graph(const Mesh& delaunay, const Candidates& candidates, const RegionTerms& terms,
                                     uint32_t region, uint64_t max_states, const Progress& progress = {},
                                     uint64_t* states_used = nullptr);

@@ -61,4 +61,17 @@ struct RegionDual {
 RegionDual region_dual(const Mesh& delaunay, const Regions& regions, Objective o, const Candidates& candidates,
                        const RegionTerms& terms, const Mesh* start = nullptr, const RegionDualLimits& limits = {});
 
+// Min-max objectives (terms combined by max, minimised) by thresholds: at a
+// threshold t, how many terms exceed t is a count over the same model (each
+// table entry, state and arc 1 if its value exceeds t), and a dual bound above 0
+// proves that every triangulation has a term above t, so the optimum is at
+// least the next value a term can take. A binary search over those values,
+// from `known` (a bound already proven, at least RegionTerms::floor) up to
+// `incumbent` (the value of a triangulation at hand), keeps the largest t so
+// refuted. Returns the bound (`incumbent` itself when it is optimal), nothing
+// when no threshold is refuted or no region has a graph.
+std::optional<double> region_threshold_bound(const Mesh& delaunay, const Regions& regions, Objective o,
+                                             const Candidates& candidates, const RegionTerms& terms, double known,
+                                             double incumbent, const RegionDualLimits& limits = {});
+
 }  // namespace hodt
