@@ -1,6 +1,7 @@
 #include "hodt/region_dual.hpp"
 
 #include <algorithm>
+#include <random>
 
 #include "hodt/error.hpp"
 #include "hodt/fill_graph.hpp"
@@ -89,7 +90,10 @@ struct Descent {
   }
 
   // Runs from `state` (per variable); fills: per region with a graph, its fill.
-  void run(std::vector<uint32_t>& state, std::vector<std::vector<Tri>>& fills) const {
+  // seed: the regions in a shuffled order (0: as given).
+  void run(std::vector<uint32_t>& state, std::vector<std::vector<Tri>>& fills, uint32_t seed = 0) const {
+    std::vector<uint32_t> order = regions;
+    if (seed) std::shuffle(order.begin(), order.end(), std::mt19937(seed));
     for (int pass = 0; pass < 50; ++pass) {
       bool moved = false;
       for (uint32_t x = 0; x < g.domain.size(); ++x) {
@@ -98,7 +102,7 @@ struct Descent {
         const uint32_t s = static_cast<uint32_t>(std::min_element(v.begin(), v.end()) - v.begin());
         if (v[s] < v[state[x]]) state[x] = s, moved = true;
       }
-      for (uint32_t r : regions) {
+      for (uint32_t r : order) {
         const RegionFactor& f = factors[r];
         std::vector<std::vector<double>> costs(f.scope.size());
         for (size_t j = 0; j < f.scope.size(); ++j) costs[j] = local(f.scope[j], state);
@@ -273,8 +277,8 @@ RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Cand
   // Local search from the dual's decoded states and fills, and from `start`.
   const Descent descent(h, factors, region_of_factor);
   const std::vector<uint32_t> start_states = start ? listed_states(R, *start) : std::vector<uint32_t>(R.regions.size(), 0);
-  auto found = [&](std::vector<uint32_t> state, std::vector<std::vector<Tri>> fills) {
-    descent.run(state, fills);
+  auto found = [&](std::vector<uint32_t> state, std::vector<std::vector<Tri>> fills, uint32_t seed = 0) {
+    descent.run(state, fills, seed);
     std::vector<Tri> tris;
     for (uint32_t r = 0; r < R.regions.size(); ++r) {
       const int32_t x = model.variable_of_region[r];
@@ -282,8 +286,11 @@ RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Cand
       const auto& fill = built->has_graph[r] ? fills[r] : x < 0 ? states[0] : h.domain[static_cast<uint32_t>(x)] < 2 ? states[start_states[r]] : states[state[static_cast<uint32_t>(x)]];
       tris.insert(tris.end(), fill.begin(), fill.end());
     }
+    const double v = evaluate(o, mesh_of(dt.coords, tris));
     out.found.push_back(std::move(tris));
+    return v;
   };
+  const Sense sense = info(o).sense;
   std::vector<std::vector<Tri>> fills(R.regions.size());
   std::vector<uint32_t> state = proof.decoded(), entries;
   for (size_t i = 0; i < region_of_factor.size(); ++i) {
@@ -291,7 +298,13 @@ RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Cand
     f.best(proof.implicit_costs(i), fills[region_of_factor[i]], &entries);
     for (size_t j = 0; j < f.scope.size(); ++j) state[f.scope[j]] = entries[f.item_of[j]];
   }
-  found(state, fills);
+  double best = found(state, fills);
+  // Then the regions in other orders (each descent stops in a local optimum
+  // of its own), until one meets the bound.
+  for (uint32_t seed = 1; seed <= limits.restarts && better(sense, *out.bound, best); ++seed) {
+    const double v = found(state, fills, seed);
+    if (better(sense, v, best)) best = v;
+  }
   if (!start) return out;
   // The start's states, and its fills' entries.
   for (uint32_t x = 0; x < h.domain.size(); ++x) state[x] = h.domain[x] < 2 ? 0 : start_states[model.region_of_variable[x]];

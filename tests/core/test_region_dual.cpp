@@ -125,7 +125,7 @@ TEST_CASE("region dual: regions read through their graphs never take the bound p
         CHECK(not_past(oi.sense, *d.bound, want));
         tight += *d.bound == want;
         // What the descent found (from the dual, and from Delaunay): k-OD triangulations no better than the bound.
-        CHECK(d.found.size() == 2);
+        CHECK(d.found.size() >= 2);
         bool optimum = false;
         for (const auto& tris : d.found) {
           const Mesh m = mesh_of(dt.coords, tris);

@@ -32,6 +32,7 @@ struct RegionDualLimits {
   uint64_t max_states = 200'000;
   uint32_t max_second = 128;
   uint64_t max_total = 2'000'000;
+  uint32_t restarts = 6;               // descents from the dual's states with the regions shuffled
   // The proof lists, per region, the fills that could beat the incumbent.
   uint64_t max_listed = 20'000;        // per region
   uint64_t max_listed_total = 200'000;
@@ -43,7 +44,8 @@ struct RegionDual {
   std::optional<double> bound;  // no k-OD triangulation is better (nothing: the dual does not apply)
   // k-OD triangulations (their triangles) found by block coordinate descent,
   // each region read through its graph taking its best fill for the others'
-  // entries: from the dual's decoded states, and from `start`.
+  // entries: from the dual's decoded states (the regions in their order, then
+  // shuffled until one meets the bound), and from `start`.
   std::vector<std::vector<Tri>> found;
   // The proof, with a start and every region read through a graph: each
   // graph pruned to the fills whose bound allows a better value than the best
