@@ -98,21 +98,32 @@ struct Ascent {
       for (size_t s = 0; s < u[j].size(); ++s) u[j][s] -= msg[fi][j][s];
     }
     f.least(u, &marginal);
+    send(fi, f.scope, nullptr, marginal, u);
+  }
+
+  // MPLP's messages from factor fi to its scope (project: per position, state
+  // -> class; null: the classes are the states): each variable gets its equal
+  // share of the min-marginals, less what it holds besides.
+  void send(size_t fi, const std::vector<uint32_t>& scope, const std::vector<std::vector<uint32_t>>* project,
+            const std::vector<std::vector<double>>& marginal, const std::vector<std::vector<double>>& u) {
+    const size_t m = scope.size();
     for (size_t j = 0; j < m; ++j) {
       std::vector<double> next(u[j].size());
-      for (size_t s = 0; s < next.size(); ++s) {
-        next[s] = on_grid(marginal[j][s] / static_cast<double>(m) - u[j][s]);
-        if (!(std::fabs(next[s]) * static_cast<double>(2 * (m + 1)) < kLargest)) in_range = false;
+      for (size_t c = 0; c < next.size(); ++c) {
+        next[c] = on_grid(marginal[j][c] / static_cast<double>(m) - u[j][c]);
+        // (so a table entry less all its m messages stays below 2^31 at every step)
+        if (!(std::fabs(next[c]) * static_cast<double>(2 * (m + 1)) < kLargest)) in_range = false;
       }
       if (!in_range) return;
       if (next == msg[fi][j]) continue;
-      std::vector<double>& ux = unary[f.scope[j]];
+      std::vector<double>& ux = unary[scope[j]];
       for (size_t s = 0; s < ux.size(); ++s) {
-        ux[s] += next[s] - msg[fi][j][s];
+        const size_t c = project ? (*project)[j][s] : s;
+        ux[s] += next[c] - msg[fi][j][c];
         if (!(std::fabs(ux[s]) < kLargest)) in_range = false;
       }
       msg[fi][j].swap(next);
-      changed[f.scope[j]] = clock;
+      changed[scope[j]] = clock;
     }
     set_least(fi);
   }
@@ -167,25 +178,7 @@ struct Ascent {
       min_along(joint, inner, f.dims[j], marginal[j].data());
       inner *= f.dims[j];
     }
-    for (size_t j = 0; j < m; ++j) {
-      std::vector<double> next(f.dims[j]);
-      for (uint32_t c = 0; c < f.dims[j]; ++c) {
-        next[c] = on_grid(marginal[j][c] / static_cast<double>(m) - u[j][c]);
-        // (so a table entry less all its m messages stays below 2^31 at every step)
-        if (!(std::fabs(next[c]) * static_cast<double>(2 * (m + 1)) < kLargest)) in_range = false;
-      }
-      if (!in_range) return;
-      if (next == msg[fi][j]) continue;
-      std::vector<double>& ux = unary[f.scope[j]];
-      for (size_t s = 0; s < ux.size(); ++s) {
-        const uint32_t c = f.project[j][s];
-        ux[s] += next[c] - msg[fi][j][c];
-        if (!(std::fabs(ux[s]) < kLargest)) in_range = false;
-      }
-      msg[fi][j].swap(next);
-      changed[f.scope[j]] = clock;
-    }
-    set_least(fi);
+    send(fi, f.scope, &f.project, marginal, u);
   }
 
   // Factor fi's least reparametrised entry (every entry checked in range).
