@@ -100,6 +100,10 @@ struct Node {
   Tri triangle;
 };
 
+// Open edges scanned per kept state, on average at most (frontiers are rarely
+// longer than a few dozen edges).
+constexpr uint64_t kWorkPerState = 64;
+
 uint32_t from(uint64_t e) { return static_cast<uint32_t>(e >> 32); }
 uint32_t to(uint64_t e) { return static_cast<uint32_t>(e); }
 
@@ -134,7 +138,7 @@ class FillDp {
     Layer layer;
     layer.offer(start, [](double, double) { return false; });
     std::vector<BestFill> out;
-    uint64_t states = 1, generated = 0;
+    uint64_t states = 1, generated = 0, work = 0;
     uint32_t base = 0;  // the layer's first node (when recording)
     Partial& p = parent_;
     while (!layer.states.empty()) {
@@ -147,8 +151,11 @@ class FillDp {
           else out.push_back({triangles_of(p.node), p.value});
           continue;
         }
-        // (Children cost their keys even when merged: they count too, a quarter each.)
-        if ((states + generated / 4) > max_states) return std::nullopt;
+        // (Children cost their keys even when merged: they count too, a quarter
+        // each. An expansion costs its frontier's length: a region of thousands
+        // of triangles must not take the time of millions of states.)
+        work += p.open.size();
+        if ((states + generated / 4) > max_states || work > kWorkPerState * max_states) return std::nullopt;
         expand(p, [&](const Partial& child) {
           ++generated;
           const uint32_t at = next.offer(child, [&](double a, double b) { return T_.better(a, b); });
