@@ -264,7 +264,8 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   std::string refused = engine.exact_refusal().value_or("");
   // Counts may still be proven (by the dual bound, below): asked for exact, the
   // regions over the first budgets are listed whole first, or exact refuses at once.
-  const bool provable = bounded && !model.graph.relaxed_terms && integral_sum(model.graph);
+  const bool counts = !model.graph.relaxed_terms && integral_sum(model.graph);
+  const bool provable = bounded && counts;
   if (options.method == Method::Exact && provable && R.incomplete && list_whole(dt, o, engine, options.progress))
     refused = engine.exact_refusal().value_or("");
   if (refused.empty() && options.method != Method::Approx) {
@@ -337,7 +338,11 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     if (better(sense, v, r.value)) r.triangulation = std::move(flipped), r.value = v, how += ", then k-OD flips";
   }
   r.method = "heuristic";
-  if (!bounded) return r;  // (not optimal: nothing proven)
+  if (!bounded) {  // (a start for a higher order: nothing proven, but the regions' fill graphs may improve it)
+    if (counts && R.incomplete) bound_by_fill_graphs(dt, o, engine, r, how, options.progress);
+    r.optimal = false;
+    return r;
+  }
   StateDpLimits dl;
   dl.progress = options.progress;
   // The bound: the model's relaxation, or the tighter one that reads the regions

@@ -196,9 +196,8 @@ std::optional<GraphModel> graph_model(const Mesh& dt, const Regions& R, Objectiv
   std::vector<std::optional<FillGraph>> graphs(R.regions.size());
   std::vector<std::vector<RegionView>> views(R.regions.size());
   // Smallest regions first; every region gets a small budget, then (when few
-  // are left) the rest a large one each, until one does not fit: a graph's
-  // partial fills cost their frontier's length, and a hopeless region's long
-  // frontier would eat the time of many that fit.
+  // are left) the rest a large one each, while the total lasts: many hopeless
+  // regions would otherwise eat the time of the few that fit.
   std::vector<uint32_t> order;
   for (uint32_t r = 0; r < R.regions.size(); ++r)
     if (!R.regions[r].complete) order.push_back(r);
@@ -214,12 +213,10 @@ std::optional<GraphModel> graph_model(const Mesh& dt, const Regions& R, Objectiv
     if (!graphs[r]) left.push_back(r);
   }
   if (left.size() <= limits.max_second)
-    for (uint32_t r : left) {
+    for (uint32_t r : left)
       if (used < limits.max_total)
         graphs[r] = fill_graph(dt, cand, terms, r, std::min(limits.max_states, limits.max_total - used),
                                limits.dual.progress, &used);
-      if (!graphs[r]) break;
-    }
   GraphModel m;
   m.has_graph.assign(R.regions.size(), 0);
   for (uint32_t r : order) {

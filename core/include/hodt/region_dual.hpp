@@ -26,11 +26,11 @@ namespace hodt {
 
 struct RegionDualLimits {
   // Partial fills of one region's graph: every region first gets first_states,
-  // then, if at most max_second are left, those max_states each (smallest first,
-  // until one does not fit); max_total over all, those that did not fit included.
-  uint64_t first_states = 5'000;
+  // then, if at most max_second are left, those max_states each (smallest
+  // first); max_total over all, those that did not fit included.
+  uint64_t first_states = 20'000;
   uint64_t max_states = 200'000;
-  uint32_t max_second = 128;
+  uint32_t max_second = 256;
   uint64_t max_total = 2'000'000;
   uint32_t restarts = 6;               // descents from the dual's states with the regions shuffled
   // The proof lists, per region, the fills that could beat the incumbent.
