@@ -230,7 +230,11 @@ void enumerate_regions(const Mesh& dt, Regions& out, const RegionLimits& limits)
         throw Cancelled();
       if (done[r] || region.delaunay_triangles.size() == 1) continue;
       if (region.delaunay_triangles.size() > limits.max_region_triangles) {
-        if (pass == 0 && terms) done[r] = by_dp(region, r, limits.large_region_states);
+        // (A region nothing beside it sees has one signature: the DP keeps only
+        // the frontiers, few even for a large region, so it gets the full budget.)
+        const bool unseen = terms && terms->items(r).empty();
+        if (pass == 0 && terms)
+          done[r] = by_dp(region, r, unseen ? limits.max_states_per_region_dp : limits.large_region_states);
         if (!done[r]) region.complete = false;
         continue;
       }
