@@ -150,12 +150,11 @@ std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEn
   limits.dp.max_table = 1 << 24;
   add_states_of(R, dt, r.triangulation);
   RegionDual d = region_dual(dt, R, o, engine.cand, engine.terms, &r.triangulation, limits);
-  bool improved = false;
-  for (const std::vector<Tri>& tris : d.found) {
-    Mesh m = mesh_of(dt.coords, tris);
-    const double v = evaluate(o, m);
-    if (better(info(o).sense, v, r.value)) r.triangulation = std::move(m), r.value = v, improved = true;
-  }
+  size_t best = d.found.size();
+  for (size_t i = 0; i < d.found.size(); ++i)
+    if (better(info(o).sense, d.values[i], best < d.found.size() ? d.values[best] : r.value)) best = i;
+  const bool improved = best < d.found.size();
+  if (improved) r.triangulation = mesh_of(dt.coords, d.found[best]), r.value = d.values[best];
   if (improved) how += ", then descent over the regions' fill graphs from the dual (" + std::to_string(d.graphs) + " graphs)";
   if (d.proven) {
     if (d.optimum) {

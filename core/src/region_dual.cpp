@@ -38,8 +38,7 @@ struct RegionFactor final : ImplicitFactor {
               std::vector<uint32_t>* entries = nullptr) const {
     return graph.least(item_costs(scope_costs), nullptr, &fill, entries) + offset;
   }
-
- private:
+  // Costs per scope position, as the graph reads them (per item; 0 for items without a variable).
   const std::vector<std::vector<double>>& item_costs(const std::vector<std::vector<double>>& scope_costs) const {
     costs.resize(graph.entries.size());
     for (size_t i = 0; i < costs.size(); ++i) costs[i].assign(graph.entries[i].size(), 0.0);
@@ -130,15 +129,11 @@ struct Descent {
 };
 
 // RegionDual::proven, above.
+// incumbent: the best value at hand (the start's or one found).
 void prove(const Mesh& dt, const Regions& R, Objective o, const std::vector<RegionFactor>& factors,
-           const std::vector<uint32_t>& region_of_factor, const DualProof& proof, const Mesh& start,
+           const std::vector<uint32_t>& region_of_factor, const DualProof& proof, double incumbent,
            const RegionDualLimits& limits, RegionDual& out) {
   const Sense sense = info(o).sense;
-  double incumbent = evaluate(o, start);
-  for (const auto& tris : out.found) {
-    const double v = evaluate(o, mesh_of(dt.coords, tris));
-    if (better(sense, v, incumbent)) incumbent = v;
-  }
   const double ub = (sense == Sense::Min ? 1.0 : -1.0) * incumbent;  // (min form)
   Regions listed = R;
   for (size_t i = 0; i < region_of_factor.size(); ++i) {
@@ -146,10 +141,7 @@ void prove(const Mesh& dt, const Regions& R, Objective o, const std::vector<Regi
     const RegionFactor& f = factors[r];
     const auto red = proof.implicit_reduced(i);
     if (!red) return;
-    std::vector<std::vector<double>> costs(f.graph.entries.size());
-    for (size_t j = 0; j < costs.size(); ++j) costs[j].assign(f.graph.entries[j].size(), 0.0);
-    for (size_t j = 0; j < f.item_of.size(); ++j) costs[f.item_of[j]] = red->costs[j];
-    const auto through = f.graph.through(costs);
+    const auto through = f.graph.through(f.item_costs(red->costs));
     if (!through) return;
     // Integer values: a fill can be in a better triangulation only if its bound is at most ub - 1.
     std::vector<uint8_t> kept(through->size());
@@ -285,6 +277,7 @@ RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Cand
     }
     const double v = evaluate(o, mesh_of(dt.coords, tris));
     out.found.push_back(std::move(tris));
+    out.values.push_back(v);
     return v;
   };
   const Sense sense = info(o).sense;
@@ -318,8 +311,10 @@ RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Cand
         if (f.graph.items[f.item_of[j]] == *item) state[f.scope[j]] = id;
     }
   }
-  found(state, fills);
-  if (!out.relaxed) prove(dt, R, o, factors, region_of_factor, proof, *start, limits, out);
+  const double v = found(state, fills);
+  if (better(sense, v, best)) best = v;
+  if (better(sense, *stop_at, best)) best = *stop_at;
+  if (!out.relaxed) prove(dt, R, o, factors, region_of_factor, proof, best, limits, out);
   return out;
 }
 

@@ -127,10 +127,12 @@ TEST_CASE("region dual: regions read through their graphs never take the bound p
         // What the descent found (from the dual, and from Delaunay): k-OD triangulations no better than the bound.
         CHECK(d.found.size() >= 2);
         bool optimum = false;
-        for (const auto& tris : d.found) {
-          const Mesh m = mesh_of(dt.coords, tris);
+        REQUIRE(d.values.size() == d.found.size());
+        for (size_t i = 0; i < d.found.size(); ++i) {
+          const Mesh m = mesh_of(dt.coords, d.found[i]);
           CHECK(is_k_order(m, dt, k));
           const double v = evaluate(oi.objective, m);
+          CHECK(d.values[i] == v);
           CHECK(not_past(oi.sense, *d.bound, v));
           CHECK(not_past(oi.sense, want, v));
           optimum = optimum || v == want;

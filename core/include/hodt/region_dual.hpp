@@ -47,6 +47,7 @@ struct RegionDual {
   // entries: from the dual's decoded states (the regions in their order, then
   // shuffled until one meets the bound), and from `start`.
   std::vector<std::vector<Tri>> found;
+  std::vector<double> values;  // of each found, evaluated
   // The proof, with a start and every region read through a graph: each
   // graph pruned to the fills whose bound allows a better value than the best
   // triangulation at hand (the start's or one found), those listed, and the
