@@ -4,9 +4,8 @@
 #include <array>
 #include <map>
 
-#include "hodt/fill_graph.hpp"
-
 #include "hodt/error.hpp"
+#include "hodt/fill_graph.hpp"
 #include "hodt/words_hash.hpp"
 
 namespace hodt {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <set>
 #include <unordered_set>
 
 #include "hodt/dual_bound.hpp"
@@ -140,8 +139,8 @@ bool list_whole(const Mesh& dt, Objective o, RegionEngine& engine, const Progres
 }
 
 // Counts over regions not listed whole: the dual reads them through their fill
-// graphs (region_dual.hpp). Its decoded fills join the regions' lists, and the
-// listed DP (or local search) combines them with the rest. Returns the bound.
+// graphs (region_dual.hpp); the best triangulation its descents found replaces
+// r when better, and its proof makes r optimal. Returns the bound.
 std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEngine& engine, KOrderResult& r,
                                            std::string& how, const Progress& progress) {
   Regions& R = engine.R;
@@ -262,7 +261,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   KOrderResult r;
   std::string refused = engine.exact_refusal().value_or("");
   // Counts may still be proven (by the dual bound, below): asked for exact, the
-  // regions over the first budgets are listed whole first, or exact refuses at once.
+  // regions over the first budgets are listed whole first.
   const bool counts = !model.graph.relaxed_terms && integral_sum(model.graph);
   const bool provable = bounded && counts;
   if (options.method == Method::Exact && provable && R.incomplete && list_whole(dt, o, engine, options.progress))
