@@ -4,6 +4,7 @@
 #include <chrono>
 #include <unordered_set>
 
+#include "hodt/domain.hpp"
 #include "hodt/dual_bound.hpp"
 #include "hodt/error.hpp"
 #include "hodt/fill_enumerator.hpp"
@@ -16,6 +17,7 @@
 #include "hodt/region_model.hpp"
 #include "hodt/region_terms.hpp"
 #include "hodt/regions.hpp"
+#include "hodt/solve.hpp"
 #include "hodt/solve_options.hpp"
 #include "hodt/view_bound.hpp"
 
@@ -114,6 +116,34 @@ struct FirstOrderStart {
     return *mesh;
   }
 };
+
+// When every region at order k is a quad or a triangle, the k-OD
+// triangulations are the choices of a diagonal per quad: a singly flippable
+// structure, which the first order solvers take as it is (their fast paths and
+// proven bounds). The common case of DEM grids whose cells are not square, up
+// to k = 3 or more. Not within a domain (the first order rules do not hold
+// there) and not for brute force (which enumerates the instance).
+std::optional<KOrderResult> solve_as_quads(const Mesh& dt, Objective o, const Regions& skeleton,
+                                           const SolveOptions& options) {
+  if (has_domain(dt) || options.method == Method::BruteForce) return std::nullopt;
+  for (const Region& region : skeleton.regions)
+    if (region.delaunay_triangles.size() > 2) return std::nullopt;
+  std::vector<uint8_t> marked(dt.halfedges.size(), 0);
+  for (uint32_t e = 0; e < dt.halfedges.size(); ++e) marked[e] = !skeleton.fixed[e] && dt.halfedges[e] > static_cast<int32_t>(e);
+  const FirstOrder quads = first_order_of_marked(dt, marked);
+  SolveOptions one = options;
+  one.order = 1;
+  const Solution s = solve(quads, o, one);
+  KOrderResult r;
+  r.triangulation = triangulate(quads, s.choice);
+  r.value = evaluate(o, r.triangulation);
+  r.optimal = s.optimal;
+  if (s.bound) r.bound = *s.bound;
+  r.method = s.method;
+  r.details = std::to_string(quads.num_quads()) + " regions with a choice, each a quad: a diagonal per quad, solved as at order 1" +
+              (s.details.empty() ? std::string() : " (" + s.details + ")");
+  return r;
+}
 
 // Gives the regions over the first budgets a second, larger DP pass (the
 // largest first), kept only if then every region is whole; not when a region is
@@ -250,9 +280,13 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     r.details = "the first order optimum meets the bound that every triangulation of the points meets";
     return r;
   }
+  std::vector<std::pair<uint32_t, uint32_t>> useful = useful_edges(dt, k, options.progress);
+  if (k >= 2)  // (order 1 stays on the general engine: solve() takes the first order paths itself)
+    if (auto quads = solve_as_quads(dt, o, k_order_skeleton(dt, k, useful, options.progress), options))
+      return *quads;
   RegionLimits budgets;
   budgets.max_nodes_per_region = max_nodes;
-  const KOrderStructure structure(dt, k, options.progress);
+  const KOrderStructure structure(dt, k, std::move(useful), options.progress);
   RegionEngine engine(dt, o, structure, k, budgets, options.progress);
   Regions& R = engine.R;
   const Candidates& cand = engine.cand;

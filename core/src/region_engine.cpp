@@ -13,7 +13,11 @@ std::string region_summary(const Regions& R) {
 }
 
 KOrderStructure::KOrderStructure(const Mesh& dt, uint32_t k, const Progress& progress)
-    : useful(useful_edges(dt, k, progress)), candidates(k_order_candidates(dt, k, useful, progress)) {}
+    : KOrderStructure(dt, k, useful_edges(dt, k, progress), progress) {}
+
+KOrderStructure::KOrderStructure(const Mesh& dt, uint32_t k, std::vector<std::pair<uint32_t, uint32_t>> u,
+                                 const Progress& progress)
+    : useful(std::move(u)), candidates(k_order_candidates(dt, k, useful, progress)) {}
 
 RegionEngine::RegionEngine(const Mesh& dt, Objective o, const KOrderStructure& structure, uint32_t k,
                            const RegionLimits& budgets, const Progress& progress, const std::vector<uint8_t>& forced)

@@ -97,6 +97,39 @@ TEST_CASE("exact at order k equals brute force for every objective (k = 2, 3, 4)
   }
 }
 
+TEST_CASE("grids of non-square cells: every region at order k a quad, solved as at order 1, equals brute force") {
+  // Cells of 1 x 1.3 and 1.3 x 1: the useful edges of orders 2 and 3 are the
+  // cells' diagonals, so the k-OD triangulations are a diagonal per cell.
+  int as_quads = 0;
+  for (uint64_t seed = 1; seed <= 12; ++seed) {
+    std::vector<double> p = grid_points(seed % 2 ? 5 : 4, 4, seed, seed % 3 == 0);
+    for (size_t i = 0; i < p.size(); i += 3) p[i + seed % 2] *= 1.3;
+    const FirstOrder fo = first_order(delaunay(validate_points(p).xyz));
+    for (uint32_t k : {2u, 3u}) {
+      for (const auto& oi : objectives()) {
+        SolveOptions bf;
+        bf.method = Method::BruteForce;
+        const KOrderResult want = solve_k_order(fo, oi.objective, k, bf);
+        for (const Method m : {Method::Exact, Method::Auto}) {
+          SolveOptions ex;
+          ex.method = m;
+          const KOrderResult got = solve_k_order(fo, oi.objective, k, ex);
+          CAPTURE(seed);
+          CAPTURE(k);
+          CAPTURE(oi.id);
+          as_quads += got.details.find("each a quad") != std::string::npos;
+          CHECK(got.optimal);
+          CHECK(close(got.value, want.value));
+          CHECK(got.value == evaluate(oi.objective, got.triangulation));
+          CHECK(is_k_order(got.triangulation, fo.base, k));
+          CHECK(validate(got.triangulation) == "");
+        }
+      }
+    }
+  }
+  CHECK(as_quads >= 12 * 2 * 2 * 10);  // (a few objectives answer before: bounds every triangulation meets)
+}
+
 TEST_CASE("order 1 through the general engine equals the specialised first order solvers") {
   for (uint64_t seed = 1; seed <= 60; ++seed) {
     const FirstOrder fo = first_order(delaunay(validate_points(seed % 2 ? uniform_points(60, seed) : dem_points(60, seed)).xyz));

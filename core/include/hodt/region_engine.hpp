@@ -24,6 +24,9 @@ struct ListedBest {
 // candidate triangles (computed once; Baker's shifts restrict them).
 struct KOrderStructure {
   KOrderStructure(const Mesh& delaunay, uint32_t k, const Progress& progress);
+  // The same from the useful edges (useful_edges), computed once.
+  KOrderStructure(const Mesh& delaunay, uint32_t k, std::vector<std::pair<uint32_t, uint32_t>> useful,
+                  const Progress& progress);
   std::vector<std::pair<uint32_t, uint32_t>> useful;
   Candidates candidates;
 };
