@@ -21,13 +21,14 @@ void NeighborFilter::reduce(uint32_t v, std::vector<uint32_t>& nb) const {
   if (!active() || nb.empty()) return;
   key_.assign(1, v);
   key_.insert(key_.end(), nb.begin(), nb.end());
-  const auto it = kept_.find(key_);
-  if (it != kept_.end()) {
-    nb = it->second;
+  bool found = false;
+  const std::span<const uint32_t> kept = kept_.find(key_, found);
+  if (found) {
+    nb.assign(kept.begin(), kept.end());
     return;
   }
   d_.drop_neighbors(dt_, v, fixed_[v], nb);
-  kept_.emplace(key_, nb);
+  kept_.insert(key_, nb);
 }
 
 }  // namespace hodt

@@ -4,13 +4,12 @@
 // keep only these, so fans that differ in nothing a term can see are one state.
 #pragma once
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "hodt/mesh.hpp"
 #include "hodt/objective_terms.hpp"
 #include "hodt/regions.hpp"
-#include "hodt/words_hash.hpp"
+#include "hodt/words_memo.hpp"
 
 namespace hodt {
 
@@ -27,7 +26,7 @@ class NeighborFilter {
   const Mesh& dt_;
   const ObjectiveTerms& d_;
   std::vector<std::vector<uint32_t>> fixed_;
-  mutable std::unordered_map<std::vector<uint32_t>, std::vector<uint32_t>, WordsHash> kept_;  // (v, nb) -> kept
+  mutable WordsMemo kept_;  // (v, nb) -> kept
   mutable std::vector<uint32_t> key_;
 };
 
