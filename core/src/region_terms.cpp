@@ -83,14 +83,18 @@ RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o, const Ca
 bool RegionTerms::harmless(uint32_t v, const Tri& t) const {
   if (candidate_fan_.empty()) return false;
   const Tri c = canonical_triangle(t);
-  const auto [it, fresh] = harmless_.try_emplace({v, c[0], c[1], c[2]}, true);
-  if (fresh)
-    for (const Tri& other : candidate_fan_[v])
-      if (other != c && d_.pair(dt_, c, other, floor_) > floor_) {
-        it->second = false;
-        break;
-      }
-  return it->second;
+  const std::array<uint32_t, 4> key{v, c[0], c[1], c[2]};
+  bool found = false;
+  const std::span<const uint32_t> known = harmless_.find(key, found);
+  if (found) return known[0] != 0;
+  uint32_t ok = 1;
+  for (const Tri& other : candidate_fan_[v])
+    if (other != c && d_.pair(dt_, c, other, floor_) > floor_) {
+      ok = 0;
+      break;
+    }
+  harmless_.insert(key, {&ok, 1});
+  return ok != 0;
 }
 
 double RegionTerms::fixed_edges_least(double at_least) const {

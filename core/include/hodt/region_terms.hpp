@@ -19,7 +19,7 @@
 #include "hodt/neighbor_filter.hpp"
 #include "hodt/objective_terms.hpp"
 #include "hodt/regions.hpp"
-#include "hodt/words_hash.hpp"
+#include "hodt/words_memo.hpp"
 
 namespace hodt {
 
@@ -139,7 +139,7 @@ class RegionTerms {
   std::vector<uint8_t> canonical_;       // [fixed mask][mask] -> canonical mask, class counts up to 4
   std::vector<uint32_t> useful_degree_;  // per vertex: its useful edges, the most neighbours it can have
   std::vector<std::vector<Tri>> candidate_fan_;  // per vertex: its k-OD triangles (vertex pairs, with a floor)
-  mutable std::unordered_map<std::array<uint32_t, 4>, bool, WordsHash> harmless_;  // (v, triangle) -> harmless
+  mutable WordsMemo harmless_;  // (v, triangle) -> harmless (1 word)
   mutable std::vector<Tri> star_, fan_;
   mutable std::vector<uint32_t> nb_, fan_nb_;
 };
