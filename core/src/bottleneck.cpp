@@ -21,12 +21,12 @@ bool BottleneckBuilder::below_floor(const double* v, int n) const {
 }
 
 PairTerm* BottleneckBuilder::find(uint32_t q, uint32_t r) {
-  const auto it = index_.find((uint64_t(q) << 32) | r);
-  return it == index_.end() ? nullptr : &model_.terms[it->second];
+  const uint32_t at = index_.find((uint64_t(q) << 32) | r);
+  return at == FlatIndex::kNone ? nullptr : &model_.terms[at];
 }
 
 void BottleneckBuilder::add(const PairTerm& t, uint32_t seq) {
-  index_.emplace((uint64_t(uint32_t(t.q)) << 32) | uint32_t(t.r), static_cast<uint32_t>(model_.terms.size()));
+  index_.insert((uint64_t(uint32_t(t.q)) << 32) | uint32_t(t.r), static_cast<uint32_t>(model_.terms.size()));
   model_.terms.push_back(t);
   seq_.push_back(seq);
 }
@@ -71,7 +71,7 @@ void BottleneckBuilder::binary(uint32_t q, uint32_t r, const double v[4]) {
 BottleneckModel BottleneckBuilder::finish(const Progress& progress) {
   // Terms kept before the floor rose may have fallen under it.
   report(progress, 0, 3);
-  index_ = {};  // freed now, between progress points
+  index_.clear();  // freed now, between progress points
   report(progress, 1, 3);
   std::vector<uint32_t> order;
   for (uint32_t k = 0; k < model_.terms.size(); ++k)

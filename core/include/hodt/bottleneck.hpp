@@ -5,10 +5,10 @@
 // at most t?" by the paper's eliminations and a linear-time 2-SAT.
 #pragma once
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "hodt/first_order.hpp"
+#include "hodt/flat_index.hpp"
 #include "hodt/progress.hpp"
 #include "hodt/skeleton.hpp"
 
@@ -81,7 +81,7 @@ class BottleneckBuilder {
   uint32_t next_seq_ = 0;               // positions in the full model: a unary term at
   std::vector<uint32_t> unary_seq_;     // its first part (per quad), a binary one at its last
   std::vector<uint32_t> seq_;           // per kept term
-  std::unordered_map<uint64_t, uint32_t> index_;  // (q, r) -> kept term
+  FlatIndex index_;  // (q, r) -> kept term
 };
 
 }  // namespace hodt
