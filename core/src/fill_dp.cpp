@@ -6,6 +6,7 @@
 
 #include "hodt/error.hpp"
 #include "hodt/fill_graph.hpp"
+#include "hodt/flat_index.hpp"
 #include "hodt/words_hash.hpp"
 
 namespace hodt {
@@ -196,7 +197,7 @@ class FillDp {
   SignatureEntry entry_;
   std::vector<uint32_t> fan_;  // the fan being extended
   Partial parent_, child_;     // the state being expanded, the child being built
-  std::vector<std::pair<uint64_t, uint32_t>> next_open_;
+  mutable FlatIndex counts_;  // open edge -> its candidate triangles
 
   std::vector<Tri> triangles_of(uint32_t node) const {
     std::vector<Tri> tris;
@@ -205,9 +206,16 @@ class FillDp {
     return tris;
   }
 
+  // (Every expansion reads the count of every open edge: memoised in a flat
+  // table, as a long region's frontier has hundreds.)
   size_t candidates(uint64_t e) const {
-    const auto it = cand_.find(e);
-    return it == cand_.end() ? 0 : it->second.size();
+    uint32_t n = counts_.find(e);
+    if (n == FlatIndex::kNone) {
+      const auto it = cand_.find(e);
+      n = it == cand_.end() ? 0 : static_cast<uint32_t>(it->second.size());
+      counts_.insert(e, n);
+    }
+    return n;
   }
 
   // Does open edge e touch a triangle already placed? (It does if a triangle
@@ -315,24 +323,29 @@ class FillDp {
       c.value = p.value;
       c.signature.assign(p.signature.begin(), p.signature.end());
       const bool edges = T_.reads_apexes();
-      // The new frontier: without u -> v and the closed edges, with the opened ones.
-      std::vector<std::pair<uint64_t, uint32_t>>& open = next_open_;
-      open.clear();
-      c.open.clear();
-      c.behind.clear();
-      for (size_t j = 0; j < p.open.size(); ++j)
-        if (j != at && static_cast<int>(j) != close[0] && static_cast<int>(j) != close[1])
-          open.push_back({p.open[j], edges ? p.behind[j] : 0});
+      // The new frontier: without u -> v and the closed edges, with the opened
+      // ones merged in (keys are distinct: an opened edge's reverse was not open).
+      std::pair<uint64_t, uint32_t> opened[2];
+      size_t n_opened = 0;
       for (int s = 0; s < 2; ++s)
         if (close[s] < 0) {
           const uint32_t a = side[s][1], b = side[s][0], behind = s == 0 ? u : v;
-          open.push_back({edge_key(a, b), edges ? T_.apex_kind(a, b, behind) : 0});
+          opened[n_opened++] = {edge_key(a, b), edges ? T_.apex_kind(a, b, behind) : 0};
         }
-      std::sort(open.begin(), open.end());
-      for (auto [e, b] : open) {
+      if (n_opened == 2 && opened[1].first < opened[0].first) std::swap(opened[0], opened[1]);
+      c.open.clear();
+      c.behind.clear();
+      size_t next = 0;
+      auto push = [&](uint64_t e, uint32_t b) {
         c.open.push_back(e);
         if (edges) c.behind.push_back(b);
+      };
+      for (size_t j = 0; j < p.open.size(); ++j) {
+        if (j == at || static_cast<int>(j) == close[0] || static_cast<int>(j) == close[1]) continue;
+        for (; next < n_opened && opened[next].first < p.open[j]; ++next) push(opened[next].first, opened[next].second);
+        push(p.open[j], edges ? p.behind[j] : 0);
       }
+      for (; next < n_opened; ++next) push(opened[next].first, opened[next].second);
       c.around.assign(p.around.begin(), p.around.end());
       if (T_.reads_edges()) {  // the edges this triangle completes: u -> v and the sides it closes
         auto behind = [&](int j) { return edges ? p.behind[static_cast<size_t>(j)] : kNoApex; };

@@ -1,5 +1,6 @@
 #include "hodt/fill_enumerator.hpp"
 
+#include <algorithm>
 #include <unordered_set>
 
 #include "hodt/circle_count.hpp"
@@ -47,6 +48,10 @@ Candidates restrict_candidates(const Candidates& all, const std::vector<std::pai
 
 bool segments_cross(const Mesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
   if (a == c || a == d || b == c || b == d) return false;
+  // Boxes apart: no crossing (exact comparisons; most pairs a frontier scan tests).
+  const double *pa = m.point(a), *pb = m.point(b), *pc = m.point(c), *pd = m.point(d);
+  for (int i = 0; i < 2; ++i)
+    if (std::max(pa[i], pb[i]) < std::min(pc[i], pd[i]) || std::max(pc[i], pd[i]) < std::min(pa[i], pb[i])) return false;
   if (orient2d(m.point(a), m.point(b), m.point(c)) * orient2d(m.point(a), m.point(b), m.point(d)) >= 0) return false;
   return orient2d(m.point(c), m.point(d), m.point(a)) * orient2d(m.point(c), m.point(d), m.point(b)) < 0;
 }
