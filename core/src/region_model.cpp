@@ -39,11 +39,18 @@ struct Fans {
 
 // States with the same neighbours at a vertex (or the same neighbour classes)
 // share a class: what vertex terms see; for vertex-pair terms, the same triangles.
+// items: a view's (only their vertices are read from it); null: every vertex
+// (a region, or its first view, which speaks for everything no other view does).
 Fans fans_of(const Mesh& dt, const ObjectiveTerms& d, const std::vector<std::vector<Tri>>& states,
-             const std::function<void()>& tick) {
+             const std::vector<Tri>* items, const std::function<void()>& tick) {
   const bool by_neighbors = !reads_star_triangles(d);
   Fans f;
-  for (const Tri& t : states[0]) f.vertices.insert(f.vertices.end(), t.begin(), t.end());
+  if (items) {  // (a view of one vertex of a long region: not its hundreds of others)
+    for (const Tri& item : *items)
+      if (item == RegionTerms::vertex_item(item[1])) f.vertices.push_back(item[1]);
+  } else {
+    for (const Tri& t : states[0]) f.vertices.insert(f.vertices.end(), t.begin(), t.end());
+  }
   std::sort(f.vertices.begin(), f.vertices.end());
   f.vertices.erase(std::unique(f.vertices.begin(), f.vertices.end()), f.vertices.end());
   const size_t nv = f.vertices.size();
@@ -57,7 +64,10 @@ Fans fans_of(const Mesh& dt, const ObjectiveTerms& d, const std::vector<std::vec
     tick();
     for (auto& a : around) a.clear();
     for (const Tri& t : states[s])
-      for (uint32_t v : t) around[f.local(v)].push_back(t);
+      for (uint32_t v : t) {
+        const uint32_t lv = f.local(v);
+        if (lv < nv && f.vertices[lv] == v) around[lv].push_back(t);
+      }
     for (size_t i = 0; i < nv; ++i) {
       key = around[i];
       if (by_neighbors) {  // the neighbours (or their classes), as one-vertex entries
@@ -212,7 +222,10 @@ struct Builder {
     std::vector<Fans> fans(src.size());
     std::vector<uint8_t> have(src.size(), 0);
     auto fans_at = [&](uint32_t i) -> const Fans& {
-      if (!have[i]) fans[i] = fans_of(dt, d, states(i), [&] { tick(i, src.size()); }), have[i] = 1;
+      if (!have[i]) {
+        const std::vector<Tri>* items = i == first_src[src[i].region] ? nullptr : src[i].items;
+        fans[i] = fans_of(dt, d, states(i), items, [&] { tick(i, src.size()); }), have[i] = 1;
+      }
       return fans[i];
     };
     std::vector<uint8_t> on_hull(dt.num_vertices(), 0);
