@@ -181,6 +181,19 @@ struct GraphModel {
   }
 };
 
+// What a view of one item needs of a fill (region_model reads a vertex item's
+// fan and an edge item's apex only): the triangles at the item's vertices. A
+// long region's fills are hundreds of triangles, and it has hundreds of items.
+std::vector<Tri> near_item(const std::vector<Tri>& fill, const Tri& item) {
+  const bool vertex = item == RegionTerms::vertex_item(item[1]);
+  if (!vertex && item != RegionTerms::edge_item(item[1], item[2])) return fill;
+  const uint32_t a = item[1], b = vertex ? item[1] : item[2];
+  std::vector<Tri> out;
+  for (const Tri& t : fill)
+    if (std::find(t.begin(), t.end(), a) != t.end() || std::find(t.begin(), t.end(), b) != t.end()) out.push_back(t);
+  return out;
+}
+
 // Nothing if no region not listed whole has a graph that fits.
 std::optional<GraphModel> graph_model(const Mesh& dt, const Regions& R, Objective o, const Candidates& cand,
                                       const RegionTerms& terms, const RegionDualLimits& limits) {
@@ -220,8 +233,11 @@ std::optional<GraphModel> graph_model(const Mesh& dt, const Regions& R, Objectiv
     // Its own terms from the implicit factor: the model reads the Delaunay fill
     // for them (a constant), each item from the fills that stand for its entries.
     views[r].push_back({{}, {R.regions[r].states[0]}});
-    const auto reps = graphs[r]->representatives();
-    for (size_t i = 0; i < reps.size(); ++i) views[r].push_back({{graphs[r]->items[i]}, reps[i]});
+    auto reps = graphs[r]->representatives();
+    for (size_t i = 0; i < reps.size(); ++i) {
+      for (auto& fill : reps[i]) fill = near_item(fill, graphs[r]->items[i]);
+      views[r].push_back({{graphs[r]->items[i]}, std::move(reps[i])});
+    }
   }
   if (m.relaxed == order.size()) return std::nullopt;
   m.model = region_model(dt, R, o, {}, limits.dual.progress, &views);
