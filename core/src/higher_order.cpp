@@ -12,13 +12,19 @@ namespace hodt {
 
 namespace {
 
+uint32_t smallest_cap(const Mesh& m, uint32_t a, uint32_t b, const std::vector<uint32_t>& side);
+
 struct Walker {
   const Mesh& m;
   uint32_t u;
   uint32_t max_crossings;
   std::vector<uint32_t> left, right;  // ends of the crossed edges, along the path
-  // Called for each candidate w with the crossed edges' left and right ends.
-  std::vector<std::pair<uint32_t, std::pair<std::vector<uint32_t>, std::vector<uint32_t>>>> found;
+  // Each candidate w > u that crosses edges, with the smallest cap on each side
+  // (Lemma 1 reads only those: the crossed edges' ends are not kept).
+  struct Found {
+    uint32_t w, left_cap, right_cap;
+  };
+  std::vector<Found> found;
 
   const double* p(uint32_t v) const { return m.point(v); }
 
@@ -42,7 +48,7 @@ struct Walker {
     // orientation "right end first", which is the halfedge itself (u is on the
     // other side of it), and likewise w -> l.
     if (inside_right && inside_left) {
-      found.push_back({w, {left, right}});
+      if (w > u) found.push_back({w, smallest_cap(m, u, w, left), smallest_cap(m, w, u, right)});
       cross(rw, wr, w);
       cross(wl_edge, w, wl);
     } else if (!inside_left) {  // w on or beyond the left ray: rays leave through r -> w
@@ -93,28 +99,20 @@ std::vector<std::pair<uint32_t, uint32_t>> useful_edges(const Mesh& m, uint32_t 
     uint32_t e = static_cast<uint32_t>(start[u]);
     for (;;) {  // every triangle around u: u, a, b counterclockwise
       const uint32_t a = m.target(e), b = m.apex(e);
-      if (a > u) walk.found.push_back({a, {{}, {}}});
+      if (a > u) out.push_back({u, a});  // a Delaunay edge: useful for every k >= 0 (found from the smaller end)
       walk.cross(next_halfedge(e), a, b);
       const int32_t t = m.halfedges[prev_halfedge(e)];
       if (t < 0) {
-        if (b > u) walk.found.push_back({b, {{}, {}}});
+        if (b > u) out.push_back({u, b});
         break;
       }
       e = static_cast<uint32_t>(t);
       if (e == static_cast<uint32_t>(start[u])) break;
     }
-    for (auto& [w, sides] : walk.found) {
-      if (w < u) continue;  // found from the smaller end too
-      auto& [left, right] = sides;
-      if (left.empty()) {  // a Delaunay edge: useful for every k >= 0
-        out.push_back({u, w});
-        continue;
-      }
-      // Lemma 1 on each side (both sides have points: uw crosses edges).
-      const uint32_t s1 = smallest_cap(m, u, w, left);
-      const uint32_t s2 = smallest_cap(m, w, u, right);
-      if (cap_is_k_order(m, circles, u, w, s1, k) && cap_is_k_order(m, circles, w, u, s2, k)) out.push_back({u, w});
-    }
+    // Lemma 1 on each side (both sides have points: uw crosses edges).
+    for (const Walker::Found& f : walk.found)
+      if (cap_is_k_order(m, circles, u, f.w, f.left_cap, k) && cap_is_k_order(m, circles, f.w, u, f.right_cap, k))
+        out.push_back({u, f.w});
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
