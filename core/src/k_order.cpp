@@ -105,12 +105,14 @@ struct FirstOrderStart {
   const SolveOptions& options;
   std::optional<Mesh> mesh;
   double value = 0;
+  std::optional<Solution> solution;  // (method auto)
   const Mesh& get() {
     if (!mesh) {
       SolveOptions first = options;
       first.method = Method::Auto;
       first.order = 1;
-      mesh = triangulate(fo, solve(fo, o, first).choice);
+      solution = solve(fo, o, first);
+      mesh = triangulate(fo, solution->choice);
       value = evaluate(o, *mesh);
     }
     return *mesh;
@@ -123,17 +125,30 @@ struct FirstOrderStart {
 // proven bounds). The common case of DEM grids whose cells are not square, up
 // to k = 3 or more. Not within a domain (the first order rules do not hold
 // there) and not for brute force (which enumerates the instance).
+// When the quads are the first order ones (every first order quad is one, so
+// equal counts say so), the first order result is the answer (method auto:
+// the ladder's, solved once).
 std::optional<KOrderResult> solve_as_quads(const Mesh& dt, Objective o, const Regions& skeleton,
-                                           const SolveOptions& options) {
+                                           const SolveOptions& options, FirstOrderStart& first_order) {
   if (has_domain(dt) || options.method == Method::BruteForce) return std::nullopt;
-  for (const Region& region : skeleton.regions)
+  uint32_t quads_at_k = 0;
+  for (const Region& region : skeleton.regions) {
     if (region.delaunay_triangles.size() > 2) return std::nullopt;
-  std::vector<uint8_t> marked(dt.halfedges.size(), 0);
-  for (uint32_t e = 0; e < dt.halfedges.size(); ++e) marked[e] = !skeleton.fixed[e] && dt.halfedges[e] > static_cast<int32_t>(e);
-  const FirstOrder quads = first_order_of_marked(dt, marked);
+    quads_at_k += region.delaunay_triangles.size() == 2;
+  }
+  const bool same = quads_at_k == first_order.fo.num_quads();
+  std::optional<FirstOrder> own;
+  if (!same) {
+    std::vector<uint8_t> marked(dt.halfedges.size(), 0);
+    for (uint32_t e = 0; e < dt.halfedges.size(); ++e) marked[e] = !skeleton.fixed[e] && dt.halfedges[e] > static_cast<int32_t>(e);
+    own = first_order_of_marked(dt, marked);
+  }
+  const FirstOrder& quads = same ? first_order.fo : *own;
   SolveOptions one = options;
   one.order = 1;
-  const Solution s = solve(quads, o, one);
+  const bool reuse = same && options.method == Method::Auto;
+  if (reuse) first_order.get();
+  const Solution s = reuse ? *first_order.solution : solve(quads, o, one);
   KOrderResult r;
   r.triangulation = triangulate(quads, s.choice);
   r.value = evaluate(o, r.triangulation);
@@ -282,7 +297,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   }
   std::vector<std::pair<uint32_t, uint32_t>> useful = useful_edges(dt, k, options.progress);
   if (k >= 2)  // (order 1 stays on the general engine: solve() takes the first order paths itself)
-    if (auto quads = solve_as_quads(dt, o, k_order_skeleton(dt, k, useful, options.progress), options))
+    if (auto quads = solve_as_quads(dt, o, k_order_skeleton(dt, k, useful, options.progress), options, first_order))
       return *quads;
   RegionLimits budgets;
   budgets.max_nodes_per_region = max_nodes;
@@ -424,7 +439,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
 
 KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes) {
   if (!fo.is_delaunay) throw InputError("higher order needs the Delaunay triangulation: not for user triangulations");
-  FirstOrderStart first_order{fo, o, options, {}};
+  FirstOrderStart first_order{fo, o, options, {}, 0, {}};
   KOrderResult r = solve_regions(fo, o, k, options, max_nodes, first_order);
   r.delaunay_value = evaluate(o, fo.base);
   return r;
