@@ -210,17 +210,18 @@ std::optional<GraphModel> graph_model(const Mesh& dt, const Regions& R, Objectiv
     return R.regions[a].delaunay_triangles.size() < R.regions[b].delaunay_triangles.size();
   });
   uint64_t used = 0;
+  const uint64_t max_total = std::max(limits.max_total, limits.max_total_per_point * dt.num_vertices());
   std::vector<uint32_t> left;
   for (uint32_t r : order) {
-    if (used < limits.max_total)
-      graphs[r] = fill_graph(dt, cand, terms, r, std::min(limits.first_states, limits.max_total - used),
+    if (used < max_total)
+      graphs[r] = fill_graph(dt, cand, terms, r, std::min(limits.first_states, max_total - used),
                              limits.dual.progress, &used);
     if (!graphs[r]) left.push_back(r);
   }
   if (left.size() <= limits.max_second)
     for (uint32_t r : left)
-      if (used < limits.max_total)
-        graphs[r] = fill_graph(dt, cand, terms, r, std::min(limits.max_states, limits.max_total - used),
+      if (used < max_total)
+        graphs[r] = fill_graph(dt, cand, terms, r, std::min(limits.max_states, max_total - used),
                                limits.dual.progress, &used);
   GraphModel m;
   m.has_graph.assign(R.regions.size(), 0);

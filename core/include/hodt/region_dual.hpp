@@ -32,6 +32,9 @@ struct RegionDualLimits {
   uint64_t max_states = 200'000;
   uint32_t max_second = 256;
   uint64_t max_total = 2'000'000;
+  // ... or this many per point when that is more (a large DEM at k = 5 is
+  // hundreds of strips of a few thousand partial fills each).
+  uint64_t max_total_per_point = 24;
   uint32_t restarts = 6;               // descents from the dual's states with the regions shuffled
   // The proof lists, per region, the fills that could beat the incumbent.
   uint64_t max_listed = 20'000;        // per region
