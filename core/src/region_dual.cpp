@@ -218,11 +218,14 @@ std::optional<GraphModel> graph_model(const Mesh& dt, const Regions& R, Objectiv
                              limits.dual.progress, &used);
     if (!graphs[r]) left.push_back(r);
   }
-  if (left.size() <= limits.max_second)
-    for (uint32_t r : left)
-      if (used < max_total)
-        graphs[r] = fill_graph(dt, cand, terms, r, std::min(limits.max_states, max_total - used),
-                               limits.dual.progress, &used);
+  // (Many left: the second pass goes on while its regions fit, smallest first;
+  // a run of failures says the rest are hopeless.)
+  uint32_t failures = 0;
+  for (uint32_t r : left) {
+    if (used >= max_total || (left.size() > limits.max_second && failures >= limits.max_second_failures)) break;
+    graphs[r] = fill_graph(dt, cand, terms, r, std::min(limits.max_states, max_total - used), limits.dual.progress, &used);
+    failures = graphs[r] ? 0 : failures + 1;
+  }
   GraphModel m;
   m.has_graph.assign(R.regions.size(), 0);
   for (uint32_t r : order) {

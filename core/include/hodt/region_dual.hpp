@@ -26,15 +26,17 @@ namespace hodt {
 
 struct RegionDualLimits {
   // Partial fills of one region's graph: every region first gets first_states,
-  // then, if at most max_second are left, those max_states each (smallest
-  // first); max_total over all, those that did not fit included.
+  // then those left max_states each (smallest first; when more than max_second
+  // are left, until max_second_failures in a row do not fit); max_total over
+  // all, those that did not fit included.
   uint64_t first_states = 20'000;
   uint64_t max_states = 200'000;
   uint32_t max_second = 256;
+  uint32_t max_second_failures = 8;
   uint64_t max_total = 2'000'000;
   // ... or this many per point when that is more (a large DEM at k = 5 is
   // hundreds of strips of a few thousand partial fills each).
-  uint64_t max_total_per_point = 24;
+  uint64_t max_total_per_point = 32;
   uint32_t restarts = 6;               // descents from the dual's states with the regions shuffled
   // The proof lists, per region, the fills that could beat the incumbent.
   uint64_t max_listed = 20'000;        // per region
