@@ -4,7 +4,6 @@
 #include <cmath>
 #include <deque>
 #include <map>
-#include <numeric>
 #include <queue>
 #include <string>
 #include <unordered_map>
@@ -439,26 +438,18 @@ Threshold threshold_graph(const StateGraph& g, double t, const std::vector<doubl
   return th;
 }
 
-// Every assignment is at least each table's smallest entry.
-double least_max(const StateGraph& g) {
+// Min-max: binary search over the values the tables hold, each threshold a
+// feasibility DP over 0/1 tables (which merge far more classes than values do).
+StateDpResult bottleneck(const StateGraph& g, const StateDpLimits& limits) {
+  // Every assignment is at least each table's smallest entry.
   double lo = g.constant;
   auto min_of = [](const std::vector<double>& t) { return *std::min_element(t.begin(), t.end()); };
   for (const auto& u : g.unary) lo = std::max(lo, min_of(u));
   for (const StateFactor& f : g.factors) lo = std::max(lo, min_of(f.table));
-  return lo;
-}
-
-// Min-max: binary search over the values the tables hold, each threshold a
-// feasibility DP over 0/1 tables (which merge far more classes than values do).
-// floor: a threshold known to be needed elsewhere; the search stops at it if it
-// can (the value returned is then at most floor).
-StateDpResult bottleneck_search(const StateGraph& g, const StateDpLimits& limits, double floor) {
-  const double lo = std::max(least_max(g), floor);
   const double hi = evaluate_states(g, std::vector<uint32_t>(g.domain.size(), 0));
   std::vector<double> top;
   for (const StateFactor& f : g.factors) top.push_back(*std::max_element(f.table.begin(), f.table.end()));
   std::vector<double> values = {hi};
-  if (lo < hi) values.push_back(lo);
   auto collect = [&](const std::vector<double>& t) {
     for (double v : t)
       if (v >= lo && v < hi) values.push_back(v);
@@ -492,76 +483,6 @@ StateDpResult bottleneck_search(const StateGraph& g, const StateDpLimits& limits
   // (with mini-buckets, an infeasible verdict is still a proof: the threshold
   // found bounds the optimum)
   best.value = best.bound_only ? values[b] : evaluate_states(g, best.state);
-  return best;
-}
-
-// The variables of each connected component (variables linked by factors).
-std::vector<std::vector<uint32_t>> components(const StateGraph& g) {
-  std::vector<uint32_t> parent(g.domain.size());
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto find = [&](uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (const StateFactor& f : g.factors)  // (every factor has a scope)
-    for (uint32_t x : f.scope) parent[find(x)] = find(f.scope[0]);
-  std::vector<std::vector<uint32_t>> out;
-  std::vector<uint32_t> id(g.domain.size(), UINT32_MAX);
-  for (uint32_t x = 0; x < g.domain.size(); ++x) {
-    uint32_t& c = id[find(x)];
-    if (c == UINT32_MAX) c = static_cast<uint32_t>(out.size()), out.emplace_back();
-    out[c].push_back(x);
-  }
-  return out;
-}
-
-// Min-max over independent components: the optimum is the largest of theirs, so
-// each component needs only a threshold search from the largest found so far
-// (most stop at once), over its own small tables. The components are taken
-// largest bound first. (One search over the whole graph copied every table at
-// each of its 20-odd thresholds.)
-StateDpResult bottleneck(const StateGraph& g, const StateDpLimits& limits) {
-  const bool scoped = std::none_of(g.factors.begin(), g.factors.end(), [](const StateFactor& f) { return f.scope.empty(); });
-  const std::vector<std::vector<uint32_t>> parts = scoped ? components(g) : std::vector<std::vector<uint32_t>>{};
-  if (parts.size() < 2) return bottleneck_search(g, limits, -INFINITY);
-  std::vector<uint32_t> local(g.domain.size()), part_of(g.domain.size());
-  std::vector<StateGraph> graphs(parts.size());
-  for (size_t c = 0; c < parts.size(); ++c) {
-    StateGraph& h = graphs[c];
-    h.combine = g.combine;
-    h.sense = g.sense;
-    h.term_max = g.term_max;
-    h.constant = g.constant;
-    for (uint32_t x : parts[c]) {
-      local[x] = static_cast<uint32_t>(h.domain.size());
-      part_of[x] = static_cast<uint32_t>(c);
-      h.domain.push_back(g.domain[x]);
-      h.unary.push_back(g.unary[x]);
-      h.unary_terms.push_back(g.unary_terms[x]);
-      h.partial.push_back(g.partial.empty() ? 0 : g.partial[x]);
-    }
-  }
-  for (const StateFactor& f : g.factors) {
-    StateFactor c = f;
-    for (uint32_t& x : c.scope) x = local[x];
-    graphs[part_of[f.scope[0]]].factors.push_back(std::move(c));
-  }
-  std::vector<double> lo(parts.size());
-  std::vector<uint32_t> order(parts.size());
-  for (size_t c = 0; c < parts.size(); ++c) lo[c] = least_max(graphs[c]), order[c] = static_cast<uint32_t>(c);
-  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return lo[a] > lo[b]; });
-  StateDpResult best;
-  best.state.assign(g.domain.size(), 0);
-  double reached = -INFINITY;  // the largest component optimum (or bound) so far
-  for (uint32_t c : order) {
-    const StateDpResult r = bottleneck_search(graphs[c], limits, reached);
-    reached = std::max(reached, r.value);
-    best.width = std::max(best.width, r.width);
-    best.bound_only = best.bound_only || r.bound_only;
-    best.largest_table = std::max(best.largest_table, r.largest_table);
-    for (size_t i = 0; i < parts[c].size(); ++i) best.state[parts[c][i]] = r.state[i];
-  }
-  best.value = best.bound_only ? reached : evaluate_states(g, best.state);
   return best;
 }
 
