@@ -300,13 +300,13 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     return r;
   }
   std::vector<std::pair<uint32_t, uint32_t>> useful = useful_edges(dt, k, options.progress);
+  Regions skeleton = k_order_skeleton(dt, k, useful, options.progress);
   if (k >= 2)  // (order 1 stays on the general engine: solve() takes the first order paths itself)
-    if (auto quads = solve_as_quads(dt, o, k_order_skeleton(dt, k, useful, options.progress), options, first_order))
-      return *quads;
+    if (auto quads = solve_as_quads(dt, o, skeleton, options, first_order)) return *quads;
   RegionLimits budgets;
   budgets.max_nodes_per_region = max_nodes;
   const KOrderStructure structure(dt, k, std::move(useful), options.progress);
-  RegionEngine engine(dt, o, structure, k, budgets, options.progress);
+  RegionEngine engine(dt, o, structure, std::move(skeleton), budgets, options.progress);
   Regions& R = engine.R;
   const Candidates& cand = engine.cand;
   const RegionTerms& terms = engine.terms;

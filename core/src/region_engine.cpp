@@ -21,9 +21,15 @@ KOrderStructure::KOrderStructure(const Mesh& dt, uint32_t k, std::vector<std::pa
 
 RegionEngine::RegionEngine(const Mesh& dt, Objective o, const KOrderStructure& structure, uint32_t k,
                            const RegionLimits& budgets, const Progress& progress, const std::vector<uint8_t>& forced)
-    : R(k_order_skeleton(dt, k, structure.useful, progress, forced)),
-      restricted_(forced.empty() ? Candidates{} : restrict_candidates(structure.candidates, R.useful)),
-      cand(forced.empty() ? structure.candidates : restricted_),
+    : RegionEngine(dt, o, structure, k_order_skeleton(dt, k, structure.useful, progress, forced), budgets, progress) {}
+
+// (Forced edges drop the useful edges that cross them: the candidates follow.)
+RegionEngine::RegionEngine(const Mesh& dt, Objective o, const KOrderStructure& structure, Regions skeleton,
+                           const RegionLimits& budgets, const Progress& progress)
+    : R(std::move(skeleton)),
+      restricted_(R.useful.size() < structure.useful.size() ? restrict_candidates(structure.candidates, R.useful)
+                                                             : Candidates{}),
+      cand(R.useful.size() < structure.useful.size() ? restricted_ : structure.candidates),
       terms(dt, R, o, &cand),
       limits(budgets) {
   limits.candidates = &cand;

@@ -37,6 +37,10 @@ struct RegionEngine {
   // its candidates, terms and progress are set here).
   RegionEngine(const Mesh& delaunay, Objective o, const KOrderStructure& structure, uint32_t k,
                const RegionLimits& budgets, const Progress& progress, const std::vector<uint8_t>& forced = {});
+  // The same from a skeleton of the structure's useful edges (k_order_skeleton),
+  // computed once.
+  RegionEngine(const Mesh& delaunay, Objective o, const KOrderStructure& structure, Regions skeleton,
+               const RegionLimits& budgets, const Progress& progress);
   RegionEngine(const RegionEngine&) = delete;
 
   Regions R;
