@@ -12,7 +12,14 @@ namespace hodt {
 
 namespace {
 
-uint32_t smallest_cap(const Mesh& m, uint32_t a, uint32_t b, const std::vector<uint32_t>& side);
+// The point among `side` whose circle with a, b (a, b, s counterclockwise) is the
+// smallest cap: no other point of `side` inside it.
+uint32_t smallest_cap(const Mesh& m, uint32_t a, uint32_t b, const std::vector<uint32_t>& side) {
+  uint32_t best = side[0];
+  for (uint32_t s : side)
+    if (s != best && in_circle(m.point(a), m.point(b), m.point(best), m.point(s))) best = s;
+  return best;
+}
 
 struct Walker {
   const Mesh& m;
@@ -60,15 +67,6 @@ struct Walker {
     right.pop_back();
   }
 };
-
-// The point among `side` whose circle with a, b (a, b, s counterclockwise) is the
-// smallest cap: no other point of `side` inside it.
-uint32_t smallest_cap(const Mesh& m, uint32_t a, uint32_t b, const std::vector<uint32_t>& side) {
-  uint32_t best = side[0];
-  for (uint32_t s : side)
-    if (s != best && in_circle(m.point(a), m.point(b), m.point(best), m.point(s))) best = s;
-  return best;
-}
 
 // Is the triangle a, b, s (counterclockwise) k-OD, with s the smallest cap on its
 // side of ab? Walks the points inside its circle; a point inside on s's side of ab
