@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 
 #include "hodt/error.hpp"
@@ -133,7 +134,7 @@ class FillDp {
     Partial start;
     for (auto [a, b] : T_.regions().regions[r_].boundary) start.open.push_back(edge_key(a, b));
     std::sort(start.open.begin(), start.open.end());
-    boundary_ = start.open;
+    set_axis(start.open);
     if (T_.reads_apexes()) start.behind.assign(start.open.size(), kNoApex);  // (the outside: never read)
     Layer layer;
     layer.offer(start, [](double, double) { return false; });
@@ -191,13 +192,34 @@ class FillDp {
   uint32_t r_;
   const std::vector<Tri>* keep_;  // sorted items whose entries are kept (all if null)
   Recorder* record_;              // records the fill graph (with keep_ empty)
-  std::vector<uint64_t> boundary_;  // the region's boundary edges, sorted
   std::vector<Node> nodes_;    // kept states' (parent, last triangle)
   std::vector<Node> pending_;  // this layer's children, before merging
   SignatureEntry entry_;
   std::vector<uint32_t> fan_;  // the fan being extended
   Partial parent_, child_;     // the state being expanded, the child being built
   mutable FlatIndex counts_;  // open edge -> its candidate triangles
+  double origin_[2] = {0, 0}, axis_[2] = {1, 0};  // the sweep (see expand)
+
+  // The boundary's centroid and principal axis (the eigenvector of the larger
+  // eigenvalue of its covariance; + - * / and sqrt only, so that native and wasm
+  // sweep alike).
+  void set_axis(const std::vector<uint64_t>& boundary) {
+    double n = 0, sxx = 0, sxy = 0, syy = 0;
+    for (uint64_t e : boundary) origin_[0] += dt_.point(from(e))[0], origin_[1] += dt_.point(from(e))[1], n += 1;
+    if (n == 0) return;
+    origin_[0] /= n, origin_[1] /= n;
+    for (uint64_t e : boundary) {
+      const double x = dt_.point(from(e))[0] - origin_[0], y = dt_.point(from(e))[1] - origin_[1];
+      sxx += x * x, sxy += x * y, syy += y * y;
+    }
+    const double half = (sxx - syy) / 2, root = std::sqrt(half * half + sxy * sxy);
+    if (root == 0) return;  // no principal axis: sweep along x
+    if (half >= 0) axis_[0] = half + root, axis_[1] = sxy;
+    else axis_[0] = sxy, axis_[1] = root - half;
+  }
+  double along(uint32_t v) const {
+    return (dt_.point(v)[0] - origin_[0]) * axis_[0] + (dt_.point(v)[1] - origin_[1]) * axis_[1];
+  }
 
   std::vector<Tri> triangles_of(uint32_t node) const {
     std::vector<Tri> tris;
@@ -216,15 +238,6 @@ class FillDp {
       counts_.insert(e, n);
     }
     return n;
-  }
-
-  // Does open edge e touch a triangle already placed? (It does if a triangle
-  // opened it, or, when fans are kept, if one of its ends has a fan.)
-  bool touches_cover(const Partial& p, uint64_t e) const {
-    if (!std::binary_search(boundary_.begin(), boundary_.end(), e)) return true;
-    for (size_t pos = 0; pos < p.around.size(); pos += 2 + p.around[pos + 1])
-      if (p.around[pos] == from(e) || p.around[pos] == to(e)) return true;
-    return false;
   }
 
   bool on_frontier(const Partial& p, uint32_t v) const {
@@ -287,18 +300,28 @@ class FillDp {
   template <class Emit>
   void expand(const Partial& p, Emit&& emit) {
     // The open edge to grow from, a function of the frontier so that equal
-    // frontiers expand alike: a forced one (a single candidate) first, else one
-    // touching the covered part (fills grow as one front: separate fronts would
-    // multiply their states), with the fewest candidate triangles (ties: smallest key).
+    // frontiers expand alike: a forced one (a single candidate) first, else the
+    // one furthest back along the region's principal axis (ties: the fewest
+    // candidate triangles, then the smallest key). The fill then sweeps the
+    // region lengthwise and its frontier stays as short as the region is wide:
+    // on regions glued from strips, or DEM regions of tens of triangles, this
+    // keeps up to 6 times fewer partial fills than growing at the edge with the
+    // fewest candidates.
     size_t at = 0;
-    uint64_t best = UINT64_MAX;
+    double back = 0;
+    size_t fewest = 0;
     for (size_t i = 0; i < p.open.size(); ++i) {
       const size_t c = candidates(p.open[i]);
       if (c == 0) return;  // a dead end
-      if (c >= best) continue;  // (it cannot win even touching: no need to look)
-      const uint64_t rank = c == 1 ? 0 : (touches_cover(p, p.open[i]) ? 0 : uint64_t(1) << 32) + c;
-      if (rank < best) best = rank, at = i;
+      if (c == 1) {
+        at = i, fewest = 1;
+        break;
+      }
+      const double pos = std::min(along(from(p.open[i])), along(to(p.open[i])));
+      if (fewest == 0 || pos < back || (pos == back && c < fewest)) at = i, back = pos, fewest = c;
     }
+    for (size_t i = at + 1; fewest == 1 && i < p.open.size(); ++i)
+      if (candidates(p.open[i]) == 0) return;  // (a dead end after the forced edge)
     const uint32_t u = from(p.open[at]), v = to(p.open[at]);
     for (uint32_t w : cand_.find(p.open[at])->second) {
       // Sides v -> w and w -> u: each closes an open edge in the same direction,

@@ -277,6 +277,8 @@ RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Cand
   const std::vector<RegionFactor>& factors = built->factors;
   const std::vector<uint32_t>& region_of_factor = built->region_of_factor;
   out.graphs = static_cast<uint32_t>(region_of_factor.size());
+  out.graph_nodes.assign(R.regions.size(), 0);
+  for (uint32_t r : region_of_factor) out.graph_nodes[r] = factors[r].graph.nodes;
   out.relaxed = built->relaxed;
   const StateGraph h = relaxation(model.graph);
   const std::optional<double> stop_at = start ? std::optional<double>(evaluate(o, *start)) : std::nullopt;

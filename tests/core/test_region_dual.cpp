@@ -10,6 +10,7 @@
 #include "generators.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/fill_graph.hpp"
+#include "hodt/glue_regions.hpp"
 #include "hodt/higher_order.hpp"
 #include "hodt/k_order.hpp"
 #include "hodt/points.hpp"
@@ -202,4 +203,87 @@ TEST_CASE("region threshold bound: min-max objectives over regions read through 
   MESSAGE(runs << " threshold bounds, " << tight << " equal to the optimum");
   CHECK(runs > 100);
   CHECK(tight > runs / 2);
+}
+
+TEST_CASE("glued regions: the same k-OD triangulations, and a dual over them never past the optimum") {
+  int runs = 0, tight = 0, glued_runs = 0, proven = 0;
+  for (uint32_t k : {2u, 3u, 4u})
+    for (uint64_t seed = 1; seed <= 120; ++seed) {
+      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 13 + k, 1)).xyz));
+      const Mesh& dt = fo.base;
+      const KOrderStructure structure(dt, k, {});
+      CAPTURE(k);
+      CAPTURE(seed);
+      // Glued once and twice, every pair allowed: each region is a union of the
+      // first ones, and the product of the regions' triangulations is the same.
+      Regions R = k_order_skeleton(dt, k, structure.useful, {});
+      RegionLimits all;
+      all.max_states_per_region = 1'000'000;
+      all.first_pass_states = all.max_states_per_region_dp = 0;
+      all.max_region_triangles = 1'000;
+      const auto product = [&](const Regions& g) {
+        double p = 1;
+        for (const Region& region : g.regions) {
+          REQUIRE(region.complete);
+          p *= static_cast<double>(region.states.size());
+        }
+        return p;
+      };
+      enumerate_regions(dt, R, all);
+      const double want_count = product(R);
+      for (int level = 1; level <= 2; ++level) {
+        const Regions next = glue_pairs(dt, R, [](uint32_t, uint32_t) { return true; });
+        CHECK(next.regions.size() <= R.regions.size());
+        glued_runs += next.regions.size() < R.regions.size();
+        for (uint32_t t = 0; t < dt.num_triangles(); ++t)
+          for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
+            const int32_t twin = dt.halfedges[e];
+            if (twin < 0) continue;
+            const bool apart = next.region_of_triangle[t] != next.region_of_triangle[static_cast<uint32_t>(twin) / 3];
+            if (apart) CHECK(next.fixed[e]);  // (regions meet only at fixed edges)
+            if (!next.fixed[e]) CHECK(!apart);
+          }
+        R = next;
+        enumerate_regions(dt, R, all);
+        CHECK(product(R) == want_count);
+      }
+      // The dual over the glued regions, each read through its graph.
+      for (const auto& oi : objectives()) {
+        if (objective_terms(oi.objective, dt).combine != TermCombine::Sum) continue;
+        Regions forgotten = R;
+        if (!forget_lists(forgotten)) continue;
+        const RegionTerms forgotten_terms(dt, forgotten, oi.objective, &structure.candidates);
+        SolveOptions bf;
+        bf.method = Method::BruteForce;
+        const double want = solve_k_order(fo, oi.objective, k, bf, 20'000'000).value;
+        RegionDualLimits limits;
+        limits.dual.max_sweeps = 1 + seed % 60;
+        const RegionDual d = region_dual(dt, forgotten, oi.objective, structure.candidates, forgotten_terms, &dt, limits);
+        const std::string name(oi.id);
+        CAPTURE(name);
+        if (!d.graphs || !d.bound) continue;
+        ++runs;
+        CHECK(not_past(oi.sense, *d.bound, want));
+        tight += *d.bound == want;
+        for (size_t i = 0; i < d.found.size(); ++i) {
+          const Mesh m = mesh_of(dt.coords, d.found[i]);
+          CHECK(is_k_order(m, dt, k));
+          CHECK(not_past(oi.sense, want, evaluate(oi.objective, m)));
+        }
+        if (d.proven) {
+          ++proven;
+          double best = evaluate(oi.objective, dt);
+          for (const double v : d.values)
+            if (better(oi.sense, v, best)) best = v;
+          if (d.optimum) best = evaluate(oi.objective, *d.optimum);
+          CHECK(best == want);
+        }
+      }
+    }
+  MESSAGE(runs << " bounds over glued regions, " << tight << " equal to the optimum, " << proven << " proven; "
+                << glued_runs << " gluings");
+  CHECK(glued_runs > 300);
+  CHECK(runs > 1000);
+  CHECK(tight > runs / 2);
+  CHECK(proven > runs / 2);
 }

@@ -61,6 +61,7 @@ struct RegionDual {
   std::optional<Mesh> optimum;   // ... or this one, which does (then optimal)
   uint64_t listed = 0;           // fills the proof listed
   uint32_t graphs = 0;    // regions read through their fill graph
+  std::vector<uint32_t> graph_nodes;  // ... per region, its graph's partial fills (0: none)
   uint32_t relaxed = 0;   // regions not listed whole left to the relaxation
 };
 
