@@ -6,7 +6,8 @@
 
 namespace hodt {
 
-Regions glue_pairs(const Mesh& dt, const Regions& R, const std::function<bool(uint32_t, uint32_t)>& may_glue) {
+Regions glue_pairs(const Mesh& dt, const Regions& R, const std::function<bool(uint32_t, uint32_t)>& may_glue,
+                   std::vector<std::pair<uint32_t, uint32_t>>* glued) {
   const uint32_t n = static_cast<uint32_t>(R.regions.size());
   // Fixed edges shared by two regions, per pair.
   std::map<std::pair<uint32_t, uint32_t>, uint32_t> shared;
@@ -22,7 +23,10 @@ Regions glue_pairs(const Mesh& dt, const Regions& R, const std::function<bool(ui
   std::stable_sort(pairs.begin(), pairs.end(), [](const auto& x, const auto& y) { return std::get<0>(x) > std::get<0>(y); });
   std::vector<uint32_t> mate(n, UINT32_MAX);
   for (const auto& [count, a, b] : pairs)
-    if (mate[a] == UINT32_MAX && mate[b] == UINT32_MAX) mate[a] = b, mate[b] = a;
+    if (mate[a] == UINT32_MAX && mate[b] == UINT32_MAX) {
+      mate[a] = b, mate[b] = a;
+      if (glued) glued->push_back({a, b});
+    }
 
   Regions out;
   out.order = R.order;

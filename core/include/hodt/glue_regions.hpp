@@ -10,6 +10,8 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <utility>
+#include <vector>
 #include "hodt/regions.hpp"
 
 namespace hodt {
@@ -17,7 +19,9 @@ namespace hodt {
 // Neighbouring regions a and b that `may_glue(a, b)` are paired, greedily the
 // pairs sharing the most fixed edges first (ties by index), each region in one
 // pair at most. The edges between a pair are no longer fixed; a pair becomes one
-// region holding only its Delaunay fill, incomplete. Other regions stay as they are.
-Regions glue_pairs(const Mesh& delaunay, const Regions& regions, const std::function<bool(uint32_t, uint32_t)>& may_glue);
+// region holding only its Delaunay fill, incomplete. Other regions stay as they
+// are. pairs: the pairs glued (their indices in `regions`).
+Regions glue_pairs(const Mesh& delaunay, const Regions& regions, const std::function<bool(uint32_t, uint32_t)>& may_glue,
+                   std::vector<std::pair<uint32_t, uint32_t>>* pairs = nullptr);
 
 }  // namespace hodt
