@@ -11,6 +11,8 @@
 #include "hodt/k_order.hpp"
 #include "hodt/objective_terms.hpp"
 #include "hodt/points.hpp"
+#include "hodt/region_dual.hpp"
+#include "hodt/region_engine.hpp"
 #include "hodt/region_model.hpp"
 #include "hodt/regions.hpp"
 #include "hodt/solve.hpp"
@@ -281,4 +283,32 @@ TEST_CASE("heuristic bounds at order k (relaxation, floor, fixed edges, counts) 
       }
     }
   }
+}
+
+TEST_CASE("long regions glued: counts on a gridded DEM at order 4 read through glued strips, never past what they find") {
+  // Column strips of 2 x 40 vertices coupled along whole sides: the dual over
+  // their fill graphs leaves a gap, and gluing them in pairs is tried.
+  const FirstOrder fo = first_order(delaunay(validate_points(cone_grid(12, 41)).xyz));
+  int glued = 0;
+  for (Objective o : {Objective::MaxConvexEdges, Objective::MinMixedVertices, Objective::MaxConvexVertices}) {
+    SolveOptions options;
+    options.order = 4;
+    const Solution s = solve(fo, o, options);
+    CAPTURE(s.details);
+    CHECK(is_k_order(*s.mesh, fo.base, 4));
+    CHECK(s.value == evaluate(o, *s.mesh));
+    CHECK(s.optimal != s.bound.has_value());
+    if (s.bound) CHECK(better(info(o).sense, *s.bound, s.value));
+    glued += s.details.find("glued in pairs") != std::string::npos;
+    // Never past the bound of the strips read unglued.
+    const KOrderStructure structure(fo.base, 4, {});
+    RegionEngine engine(fo.base, o, structure, 4, RegionLimits{}, {});
+    REQUIRE(engine.R.incomplete);
+    const RegionDual d = region_dual(fo.base, engine.R, o, engine.cand, engine.terms);
+    REQUIRE(d.bound);
+    CHECK(!better(info(o).sense, s.value, *d.bound));
+    MESSAGE(std::string(info(o).id) << ": " << s.value << (s.optimal ? " optimal" : " bound " + std::to_string(*s.bound))
+                                    << " (unglued bound " << *d.bound << ")");
+  }
+  CHECK(glued >= 1);
 }
