@@ -1,0 +1,57 @@
+// A proven bound for counts at order k from the vertices' stars alone: every
+// vertex picks one of its fans, and the fans agree only through multipliers.
+//
+// A vertex's fan is the cycle of its triangles in one triangulation (at a hull
+// vertex, from one hull edge round to the other). In a k-OD triangulation each is
+// made of candidate triangles (k-OD, empty, three useful edges), so listing every
+// such cycle lists every star the vertex can have. A count whose terms sit at
+// vertices (over the star) or at interior edges (over the two triangles, both in
+// the fan of the edge's smaller end) is then the sum over vertices of a term of
+// its fan. Lagrangian relaxation of "a triangle is in the fan of each of its
+// corners, or of none": with multipliers summing to 0 over each triangle's
+// corners, any triangulation keeps its value, and the sum of each vertex's best
+// fan bounds the optimum. Subgradient steps lower it. No region is needed: on the
+// volcano at k = 6, one region of 10,320 triangles, the bound on max-convex-vertices
+// is 2768 for 2752 found (the regions' relaxation: 5015).
+//
+// Exact: multipliers are integers in units of 2^-12, every sum an integer, and
+// the bound is the floor of the best (max) or the ceiling (min).
+#pragma once
+#include <cstdint>
+#include <optional>
+
+#include "hodt/fill_enumerator.hpp"
+#include "hodt/mesh.hpp"
+#include "hodt/objectives.hpp"
+#include "hodt/progress.hpp"
+
+namespace hodt {
+
+struct StarBoundLimits {
+  // Fans as prefix trees (a node per triangle, 24 bytes): per vertex, and in
+  // all; vertices beyond are left out (their terms at their best), and when
+  // more than max_left_out of them are, the bound is not worth its steps.
+  uint64_t max_nodes_per_vertex = 20'000;
+  uint64_t max_nodes = 12'000'000;
+  double max_left_out = 0.05;
+  // Steps: at most this many, and none once `patience` steps in a row lowered
+  // the bound by less than a unit.
+  uint32_t iterations = 300;
+  uint32_t patience = 40;
+  Progress progress;
+};
+
+struct StarBound {
+  double bound;           // no k-OD triangulation is better
+  uint64_t nodes = 0;     // of the fans' prefix trees
+  uint32_t left_out = 0;  // vertices whose fans were over the budgets
+};
+
+// Counts only: terms summed, integers, at vertices (not vertex pairs) or
+// interior edges, and no domain; nothing otherwise, or when too many vertices
+// were left out. incumbent: the value of a
+// triangulation at hand (the steps aim at it; they stop once it is proven).
+std::optional<StarBound> star_bound(const Mesh& delaunay, Objective o, const Candidates& candidates, double incumbent,
+                                    const StarBoundLimits& limits = {});
+
+}  // namespace hodt

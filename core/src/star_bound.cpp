@@ -1,0 +1,250 @@
+#include "hodt/star_bound.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "hodt/domain.hpp"
+#include "hodt/error.hpp"
+#include "hodt/objective_terms.hpp"
+#include "hodt/predicates.hpp"
+#include "hodt/words_hash.hpp"
+
+namespace hodt {
+
+namespace {
+
+constexpr int64_t kUnit = 4096;  // multipliers in units of 2^-12: every sum exact
+constexpr uint32_t kNone = UINT32_MAX;
+
+int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
+
+// Every vertex's fans as prefix trees, in preorder: a root per first neighbour
+// (no triangle), then a node per triangle (v, the parent's neighbour, its own).
+struct FanTrees {
+  std::vector<uint32_t> corner, neighbor, parent;  // per node (corner: its triangle's at v, 3 id + position; parent, corner: kNone at a root)
+  std::vector<uint64_t> leaf;              // per fan: its last node
+  std::vector<uint64_t> first_node, first_leaf;  // per vertex, and one past the last
+  void truncate(uint64_t nodes, uint64_t leaves) {
+    corner.resize(nodes), neighbor.resize(nodes), parent.resize(nodes), leaf.resize(leaves);
+  }
+};
+
+// Lists fans by depth-first search over the candidate triangles at v, in
+// counterclockwise order.
+class FanLister {
+ public:
+  FanLister(const Mesh& dt, const Candidates& cand, FanTrees& t) : dt_(dt), cand_(cand), t_(t) {}
+
+  // Around an interior vertex each fan from its smallest neighbour (of
+  // `starts`), once round; at a hull vertex from hull neighbour `from` round
+  // to `to`. False when over the budget of nodes (nothing is kept of v then).
+  bool list(uint32_t v, const std::vector<uint32_t>& starts, bool cyclic, uint32_t to, uint64_t budget) {
+    const uint64_t nodes = t_.corner.size(), leaves = t_.leaf.size();
+    limit_ = nodes + budget, v_ = v, cyclic_ = cyclic;
+    for (const uint32_t s : starts) {
+      start_ = s, end_ = cyclic ? s : to;
+      const uint64_t root = push(kNone, kNone, s), before = t_.leaf.size();
+      if (!grow(root, s)) {
+        t_.truncate(nodes, leaves);
+        return false;
+      }
+      if (t_.leaf.size() == before) t_.truncate(root, before);  // (no fan from s)
+    }
+    return true;
+  }
+  uint64_t triangles() const { return ids_.size(); }
+
+ private:
+  const Mesh& dt_;
+  const Candidates& cand_;
+  FanTrees& t_;
+  std::unordered_map<Tri, uint32_t, WordsHash> ids_;
+  uint64_t limit_ = 0;
+  uint32_t v_ = 0, start_ = 0, end_ = 0;
+  bool cyclic_ = true;
+
+  uint64_t push(uint32_t corner, uint64_t parent, uint32_t w) {
+    t_.corner.push_back(corner), t_.parent.push_back(static_cast<uint32_t>(parent)), t_.neighbor.push_back(w);
+    return t_.corner.size() - 1;
+  }
+  uint32_t corner(uint32_t u, uint32_t w) {
+    const Tri c = canonical_triangle(Tri{v_, u, w});
+    const uint32_t id = ids_.try_emplace(c, static_cast<uint32_t>(ids_.size())).first->second;
+    return 3 * id + static_cast<uint32_t>(std::find(c.begin(), c.end(), v_) - c.begin());
+  }
+  // The fans going on from node `at`, whose neighbour is cur (the candidates
+  // on the left of v -> cur are the next triangles counterclockwise).
+  bool grow(uint64_t at, uint32_t cur) {
+    const auto it = cand_.find(edge_key(v_, cur));
+    if (it == cand_.end()) return true;
+    const double* pv = dt_.point(v_);
+    for (const uint32_t w : it->second) {
+      if (t_.corner.size() >= limit_) return false;
+      if (w == end_) {
+        t_.leaf.push_back(push(corner(cur, w), at, w));
+        continue;
+      }
+      // Once round only: no step over the first neighbour's direction.
+      if (cyclic_ && (w < start_ || (orient2d(pv, dt_.point(cur), dt_.point(start_)) > 0 &&
+                                     orient2d(pv, dt_.point(start_), dt_.point(w)) > 0)))
+        continue;
+      const uint64_t node = push(corner(cur, w), at, w), before = t_.leaf.size();
+      if (!grow(node, w)) return false;
+      if (t_.leaf.size() == before) t_.truncate(node, before);  // (a dead end)
+    }
+    return true;
+  }
+};
+
+}  // namespace
+
+std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidates& cand, double incumbent,
+                                    const StarBoundLimits& limits) {
+  const ObjectiveTerms& d = objective_terms(o, dt);
+  const bool at_vertices = d.site == TermSite::InteriorVertex || d.site == TermSite::Vertex;
+  if (d.combine != TermCombine::Sum || has_domain(dt) || !(at_vertices || d.site == TermSite::InteriorEdge) ||
+      !(d.term_max < 1e6) || d.term_max != std::floor(d.term_max) || !std::isfinite(incumbent))
+    return std::nullopt;
+  const int64_t sign = info(o).sense == Sense::Max ? 1 : -1;  // the relaxation maximises sign * value
+  const uint32_t n = dt.num_vertices();
+  std::vector<std::vector<uint32_t>> around(n);  // useful neighbours (the candidates' edges)
+  for (const auto& [key, apexes] : cand)
+    if (!apexes.empty()) around[static_cast<uint32_t>(key >> 32)].push_back(static_cast<uint32_t>(key));
+  for (auto& a : around) std::sort(a.begin(), a.end()), a.erase(std::unique(a.begin(), a.end()), a.end());
+  std::vector<int64_t> hull_at(n, -1);
+  for (size_t i = 0; i < dt.hull.size(); ++i) hull_at[dt.hull[i]] = static_cast<int64_t>(i);
+
+  // The fans.
+  FanTrees t;
+  FanLister lister(dt, cand, t);
+  std::vector<uint8_t> in(n, 0);  // its fans listed (else its terms at their best)
+  StarBound out;
+  for (uint32_t v = 0; v < n; ++v) {
+    t.first_node.push_back(t.corner.size()), t.first_leaf.push_back(t.leaf.size());
+    const uint64_t room = std::min(limits.max_nodes_per_vertex, limits.max_nodes - std::min(limits.max_nodes, t.corner.size()));
+    if (hull_at[v] < 0) {
+      in[v] = lister.list(v, around[v], true, 0, room);
+    } else {  // (from the next hull vertex round to the previous: the other way is outside)
+      const size_t h = dt.hull.size(), i = static_cast<size_t>(hull_at[v]);
+      in[v] = lister.list(v, {dt.hull[(i + 1) % h]}, false, dt.hull[(i + h - 1) % h], room);
+    }
+    in[v] = in[v] && t.leaf.size() > t.first_leaf.back();
+    if (!in[v]) t.truncate(t.first_node.back(), t.first_leaf.back());
+    out.left_out += !in[v];
+    if (limits.progress && v % 4096 == 0 && !limits.progress(v, 2.0 * n)) throw Cancelled();
+  }
+  t.first_node.push_back(t.corner.size()), t.first_leaf.push_back(t.leaf.size());
+  out.nodes = t.corner.size();
+  if (out.left_out > limits.max_left_out * n) return std::nullopt;
+
+  // Each fan's terms. An interior edge's belongs to its smaller end with fans
+  // listed; terms no listed fan holds are at their best.
+  const int64_t best_term = sign > 0 ? static_cast<int64_t>(d.term_max) : 0;
+  int64_t constant = 0;  // (in units)
+  auto owner = [&](uint32_t a, uint32_t b) { return in[a] && (!in[b] || a < b) ? a : in[b] ? b : kNone; };
+  if (at_vertices) {
+    for (uint32_t v = 0; v < n; ++v)
+      if (!in[v] && (d.site == TermSite::Vertex || hull_at[v] < 0)) constant += best_term * kUnit;
+  } else {
+    for (uint32_t v = 0; v < n; ++v)
+      for (const uint32_t u : around[v])
+        if (v < u && owner(v, u) == kNone) constant += best_term * kUnit;
+  }
+  std::vector<int64_t> weight(t.leaf.size());
+  std::vector<uint32_t> seq, nb;
+  const std::vector<Tri> no_triangles;
+  for (uint32_t v = 0; v < n; ++v) {
+    const bool cyclic = hull_at[v] < 0;
+    for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f) {
+      seq.clear();
+      for (uint64_t x = t.leaf[f]; x != kNone; x = t.parent[x]) seq.push_back(t.neighbor[x]);
+      std::reverse(seq.begin(), seq.end());
+      if (cyclic) seq.pop_back();  // (the first neighbour, closing the cycle)
+      const size_t m = seq.size();
+      double w = 0;
+      if (at_vertices) {
+        if (d.site == TermSite::Vertex || cyclic) {
+          nb = seq;
+          std::sort(nb.begin(), nb.end());
+          w = vertex_term(d, dt, Star(v, nb, no_triangles));
+        }
+      } else {
+        for (size_t j = 0; j < m; ++j)
+          if ((cyclic || (j > 0 && j + 1 < m)) && owner(v, seq[j]) == v)
+            w += edge_term(d, dt, v, seq[j], seq[(j + 1) % m], seq[(j + m - 1) % m]);
+      }
+      if (!(w == std::floor(w) && std::fabs(w) < 1e6)) return std::nullopt;  // (counts only)
+      weight[f] = sign * static_cast<int64_t>(w) * kUnit;
+    }
+  }
+
+  // Subgradient steps on the multipliers (one per corner of each triangle; only
+  // corners in some listed fan move, and those of a triangle sum to 0).
+  const size_t corners = 3 * lister.triangles();
+  std::vector<int64_t> lambda(corners, 0), acc(t.corner.size(), 0);
+  std::vector<uint8_t> live(corners, 0), chosen(corners, 0);
+  for (const uint32_t c : t.corner)
+    if (c != kNone) live[c] = 1;
+  std::vector<uint64_t> best_leaf(n, kNone);
+  const double target = static_cast<double>(sign) * incumbent;
+  int64_t best = INT64_MAX;
+  double theta = 1.0;
+  uint32_t stale = 0, since_unit = 0;
+  int64_t last_unit = INT64_MAX;  // the bound when it last fell by a unit
+  std::vector<double> g(corners, 0.0);
+  for (uint32_t it = 0; it < limits.iterations; ++it) {
+    int64_t total = constant;
+    for (uint32_t v = 0; v < n; ++v) {
+      if (!in[v]) continue;
+      for (uint64_t x = t.first_node[v]; x < t.first_node[v + 1]; ++x)
+        acc[x] = (t.parent[x] == kNone ? 0 : acc[t.parent[x]]) + (t.corner[x] == kNone ? 0 : lambda[t.corner[x]]);
+      int64_t top = INT64_MIN;
+      for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f)
+        if (weight[f] + acc[t.leaf[f]] > top) top = weight[f] + acc[t.leaf[f]], best_leaf[v] = f;
+      total += top;
+    }
+    if (total < best) best = total, stale = 0;
+    else if (++stale >= 10) theta /= 2, stale = 0;
+    if (best < last_unit - kUnit) last_unit = best, since_unit = 0;
+    else if (++since_unit >= limits.patience) break;
+    // Proven once the bound, an integer, meets the incumbent.
+    if (static_cast<double>(floor_div(best, kUnit)) <= target) break;
+    if (limits.progress && !limits.progress(n + static_cast<double>(it) * n / limits.iterations, 2.0 * n)) throw Cancelled();
+    // The subgradient: per corner, whether its vertex's best fan takes the
+    // triangle, less the mean over the triangle's live corners.
+    std::fill(chosen.begin(), chosen.end(), 0);
+    for (uint32_t v = 0; v < n; ++v)
+      if (in[v])
+        for (uint64_t x = t.leaf[best_leaf[v]]; x != kNone; x = t.parent[x])
+          if (t.corner[x] != kNone) chosen[t.corner[x]] = 1;
+    double norm = 0;
+    for (size_t tri = 0; tri < corners / 3; ++tri) {
+      double sum = 0, count = 0;
+      for (size_t c = 3 * tri; c < 3 * tri + 3; ++c)
+        if (live[c]) sum += chosen[c], count += 1;
+      for (size_t c = 3 * tri; c < 3 * tri + 3; ++c) {
+        g[c] = live[c] && count > 1 ? chosen[c] - sum / count : 0.0;
+        norm += g[c] * g[c];
+      }
+    }
+    if (norm == 0) break;  // (the best fans agree: no step lowers the bound)
+    const double gap = std::max(static_cast<double>(total) / kUnit - target, 1.0);
+    const double step = theta * gap / norm * static_cast<double>(kUnit);
+    for (size_t tri = 0; tri < corners / 3; ++tri) {
+      int64_t sum = 0;
+      size_t last = kNone;
+      for (size_t c = 3 * tri; c < 3 * tri + 3; ++c) {
+        if (g[c] == 0.0 && !live[c]) continue;
+        lambda[c] -= std::llround(step * g[c]);
+        lambda[c] = std::clamp<int64_t>(lambda[c], -(int64_t{1} << 32), int64_t{1} << 32);
+        sum += lambda[c], last = c;
+      }
+      if (last != kNone) lambda[last] -= sum;  // (exactly 0 over the triangle)
+    }
+  }
+  out.bound = static_cast<double>(sign * floor_div(best, kUnit));
+  return out;
+}
+
+}  // namespace hodt

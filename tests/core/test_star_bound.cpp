@@ -1,0 +1,73 @@
+// The bound from the vertices' stars (star_bound.hpp) against brute force:
+// never past the optimum, at every order, with every fan listed or some left
+// out, and tight where the stars see enough.
+#include <doctest/doctest.h>
+
+#include "generators.hpp"
+#include "hodt/delaunay.hpp"
+#include "hodt/higher_order.hpp"
+#include "hodt/k_order.hpp"
+#include "hodt/points.hpp"
+#include "hodt/region_engine.hpp"
+#include "hodt/star_bound.hpp"
+
+using namespace hodt;
+using namespace hodt::test;
+
+TEST_CASE("star bound: never past the brute-force optimum (k = 1 to 4), with fans left out too") {
+  int runs = 0, tight = 0, partial = 0;
+  for (uint32_t k : {1u, 2u, 3u, 4u})
+    for (uint64_t seed = 1; seed <= 100; ++seed) {
+      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 19 + k, 1)).xyz));
+      const Mesh& dt = fo.base;
+      const KOrderStructure structure(dt, k, {});
+      for (const auto& oi : objectives()) {
+        const double delaunay_value = evaluate(oi.objective, dt);
+        StarBoundLimits limits;
+        limits.iterations = 1 + static_cast<uint32_t>(seed % 3) * 100;
+        if (seed % 4 == 0) limits.max_nodes_per_vertex = 1 + seed % 7, limits.max_left_out = 1;  // (some vertices left out)
+        const auto b = star_bound(dt, oi.objective, structure.candidates, delaunay_value, limits);
+        if (!b) continue;
+        SolveOptions bf;
+        bf.method = Method::BruteForce;
+        const double want = solve_k_order(fo, oi.objective, k, bf, 20'000'000).value;
+        CAPTURE(k);
+        CAPTURE(seed);
+        CAPTURE(std::string(oi.id));
+        ++runs;
+        partial += b->left_out > 0;
+        CHECK(b->bound == std::floor(b->bound));
+        if (oi.sense == Sense::Max) CHECK(b->bound >= want);
+        else CHECK(b->bound <= want);
+        tight += b->bound == want;
+      }
+    }
+  MESSAGE(runs << " star bounds, " << tight << " equal to the optimum, " << partial << " with vertices left out");
+  CHECK(runs > 1000);
+  CHECK(tight > runs / 2);
+  CHECK(partial > 50);
+}
+
+TEST_CASE("star bound: counts only; a triangulation's value is never past it on a large instance") {
+  const FirstOrder fo = first_order(delaunay(validate_points(dem_points(300, 5)).xyz));
+  const KOrderStructure structure(fo.base, 6, {});
+  int applied = 0;
+  for (const auto& oi : objectives()) {
+    CAPTURE(std::string(oi.id));
+    if (objective_terms(oi.objective, fo.base).combine == TermCombine::Max) {
+      CHECK(!star_bound(fo.base, oi.objective, structure.candidates, evaluate(oi.objective, fo.base)));
+      continue;
+    }
+    const KOrderResult r = solve_k_order(fo, oi.objective, 6, {});
+    const auto b = star_bound(fo.base, oi.objective, structure.candidates, r.value);
+    if (!b) {
+      CHECK(oi.objective == Objective::MinTotalEdgeLength);
+      continue;
+    }
+    ++applied;
+    if (oi.sense == Sense::Max) CHECK(b->bound >= r.value);
+    else CHECK(b->bound <= r.value);
+    if (r.bound) CHECK(!better(oi.sense, *r.bound, b->bound));  // (the solver keeps the tighter)
+  }
+  CHECK(applied == 5);  // convex vertices and edges, minima, extrema, mixed vertices
+}
