@@ -28,7 +28,7 @@
 namespace hodt {
 
 struct StarBoundLimits {
-  // Fans as prefix trees (a node per triangle, 24 bytes): per vertex, and in
+  // Fans as prefix trees (a node per triangle, 20 bytes): per vertex, and in
   // all; vertices beyond are left out (their terms at their best), and when
   // more than max_left_out of them are, the bound is not worth its steps.
   uint64_t max_nodes_per_vertex = 20'000;
