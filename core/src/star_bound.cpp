@@ -122,7 +122,7 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   StarBound out;
   for (uint32_t v = 0; v < n; ++v) {
     t.first_node.push_back(t.corner.size()), t.first_leaf.push_back(t.leaf.size());
-    const uint64_t room = std::min(limits.max_nodes_per_vertex, limits.max_nodes - std::min(limits.max_nodes, t.corner.size()));
+    const uint64_t room = std::min(limits.max_nodes_per_vertex, limits.max_nodes - std::min<uint64_t>(limits.max_nodes, t.corner.size()));
     if (hull_at[v] < 0) {
       in[v] = lister.list(v, around[v], true, 0, room);
     } else {  // (from the next hull vertex round to the previous: the other way is outside)
