@@ -53,13 +53,14 @@ class FanLister {
     }
     return true;
   }
-  uint64_t triangles() const { return ids_.size(); }
+  const std::vector<Tri>& triangles() const { return tris_; }
 
  private:
   const Mesh& dt_;
   const Candidates& cand_;
   FanTrees& t_;
   std::unordered_map<Tri, uint32_t, WordsHash> ids_;
+  std::vector<Tri> tris_;  // by id
   uint64_t limit_ = 0;
   uint32_t v_ = 0, start_ = 0, end_ = 0;
   bool cyclic_ = true;
@@ -70,7 +71,9 @@ class FanLister {
   }
   uint32_t corner(uint32_t u, uint32_t w) {
     const Tri c = canonical_triangle(Tri{v_, u, w});
-    const uint32_t id = ids_.try_emplace(c, static_cast<uint32_t>(ids_.size())).first->second;
+    const auto [it, fresh] = ids_.try_emplace(c, static_cast<uint32_t>(ids_.size()));
+    if (fresh) tris_.push_back(c);
+    const uint32_t id = it->second;
     return 3 * id + static_cast<uint32_t>(std::find(c.begin(), c.end(), v_) - c.begin());
   }
   // The fans going on from node `at`, whose neighbour is cur (the candidates
@@ -179,69 +182,74 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     }
   }
 
-  // Subgradient steps on the multipliers (one per corner of each triangle; only
-  // corners in some listed fan move, and those of a triangle sum to 0).
-  const size_t corners = 3 * lister.triangles();
+  // Block coordinate descent on the multipliers (MPLP, Globerson and Jaakkola
+  // 2007, with a triangle's corners as the block): each live corner's best fan
+  // with the triangle and without it, then multipliers that make every corner
+  // indifferent by the same margin. Each update lowers the bound or keeps it;
+  // the sums stay exact (rounded to units, the last corner takes the rest).
+  const std::vector<Tri>& tris = lister.triangles();
+  const size_t corners = 3 * tris.size();
   std::vector<int64_t> lambda(corners, 0), acc(t.corner.size(), 0);
-  std::vector<uint8_t> live(corners, 0), chosen(corners, 0);
+  std::vector<uint8_t> live(corners, 0), has(t.corner.size(), 0);
   for (const uint32_t c : t.corner)
     if (c != kNone) live[c] = 1;
-  std::vector<uint64_t> best_leaf(n, kNone);
-  const double target = static_cast<double>(sign) * incumbent;
-  int64_t best = INT64_MAX;
-  double theta = 1.0;
-  uint32_t stale = 0, since_unit = 0;
-  int64_t last_unit = INT64_MAX;  // the bound when it last fell by a unit
-  std::vector<double> g(corners, 0.0);
-  for (uint32_t it = 0; it < limits.iterations; ++it) {
+  auto bound_now = [&] {
     int64_t total = constant;
     for (uint32_t v = 0; v < n; ++v) {
       if (!in[v]) continue;
       for (uint64_t x = t.first_node[v]; x < t.first_node[v + 1]; ++x)
         acc[x] = (t.parent[x] == kNone ? 0 : acc[t.parent[x]]) + (t.corner[x] == kNone ? 0 : lambda[t.corner[x]]);
       int64_t top = INT64_MIN;
-      for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f)
-        if (weight[f] + acc[t.leaf[f]] > top) top = weight[f] + acc[t.leaf[f]], best_leaf[v] = f;
+      for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f) top = std::max(top, weight[f] + acc[t.leaf[f]]);
       total += top;
     }
-    if (total < best) best = total, stale = 0;
-    else if (++stale >= 10) theta /= 2, stale = 0;
-    if (best < last_unit - kUnit) last_unit = best, since_unit = 0;
-    else if (++since_unit >= limits.patience) break;
-    // Proven once the bound, an integer, meets the incumbent.
-    if (static_cast<double>(floor_div(best, kUnit)) <= target) break;
-    if (limits.progress && !limits.progress(n + static_cast<double>(it) * n / limits.iterations, 2.0 * n)) throw Cancelled();
-    // The subgradient: per corner, whether its vertex's best fan takes the
-    // triangle, less the mean over the triangle's live corners.
-    std::fill(chosen.begin(), chosen.end(), 0);
-    for (uint32_t v = 0; v < n; ++v)
-      if (in[v])
-        for (uint64_t x = t.leaf[best_leaf[v]]; x != kNone; x = t.parent[x])
-          if (t.corner[x] != kNone) chosen[t.corner[x]] = 1;
-    double norm = 0;
-    for (size_t tri = 0; tri < corners / 3; ++tri) {
-      double sum = 0, count = 0;
-      for (size_t c = 3 * tri; c < 3 * tri + 3; ++c)
-        if (live[c]) sum += chosen[c], count += 1;
-      for (size_t c = 3 * tri; c < 3 * tri + 3; ++c) {
-        g[c] = live[c] && count > 1 ? chosen[c] - sum / count : 0.0;
-        norm += g[c] * g[c];
-      }
+    return total;
+  };
+  // The best fan of v with corner c and the best without (c's own multiplier
+  // left out; INT64_MIN: none).
+  auto split = [&](uint32_t v, uint32_t c) {
+    int64_t with = INT64_MIN, without = INT64_MIN;
+    for (uint64_t x = t.first_node[v]; x < t.first_node[v + 1]; ++x) {
+      const bool root = t.parent[x] == kNone, own = t.corner[x] == c;
+      has[x] = own || (!root && has[t.parent[x]]);
+      acc[x] = (root ? 0 : acc[t.parent[x]]) + (t.corner[x] == kNone || own ? 0 : lambda[t.corner[x]]);
     }
-    if (norm == 0) break;  // (the best fans agree: no step lowers the bound)
-    const double gap = std::max(static_cast<double>(total) / kUnit - target, 1.0);
-    const double step = theta * gap / norm * static_cast<double>(kUnit);
-    for (size_t tri = 0; tri < corners / 3; ++tri) {
+    for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f) {
+      int64_t& side = has[t.leaf[f]] ? with : without;
+      side = std::max(side, weight[f] + acc[t.leaf[f]]);
+    }
+    return std::pair{with, without};
+  };
+  const double target = static_cast<double>(sign) * incumbent;
+  int64_t best = bound_now();
+  constexpr double kCap = double(int64_t{1} << 32);  // (a corner every fan takes: its margin is capped)
+  std::vector<std::pair<uint32_t, double>> block;  // (corner, margin)
+  uint32_t stale = 0;
+  for (uint32_t sweep = 0; sweep < limits.iterations && static_cast<double>(floor_div(best, kUnit)) > target; ++sweep) {
+    for (size_t tri = 0; tri < tris.size(); ++tri) {
+      block.clear();
+      for (uint32_t c = static_cast<uint32_t>(3 * tri); c < 3 * tri + 3; ++c)
+        if (live[c]) {
+          const auto [with, without] = split(tris[tri][c - 3 * tri], c);
+          const double margin = without == INT64_MIN ? kCap : static_cast<double>(with) - static_cast<double>(without);
+          block.push_back({c, std::clamp(margin, -kCap, kCap)});
+        }
+      if (block.size() < 2) continue;
+      double mean = 0;
+      for (const auto& [c, m] : block) mean += m;
+      mean /= static_cast<double>(block.size());
       int64_t sum = 0;
-      size_t last = kNone;
-      for (size_t c = 3 * tri; c < 3 * tri + 3; ++c) {
-        if (g[c] == 0.0 && !live[c]) continue;
-        lambda[c] -= std::llround(step * g[c]);
-        lambda[c] = std::clamp<int64_t>(lambda[c], -(int64_t{1} << 32), int64_t{1} << 32);
-        sum += lambda[c], last = c;
+      for (size_t i = 0; i + 1 < block.size(); ++i) {
+        lambda[block[i].first] = std::llround(mean - block[i].second);
+        sum += lambda[block[i].first];
       }
-      if (last != kNone) lambda[last] -= sum;  // (exactly 0 over the triangle)
+      lambda[block.back().first] = -sum;  // (exactly 0 over the triangle)
     }
+    const int64_t now = bound_now();
+    if (limits.progress && !limits.progress(n + static_cast<double>(sweep + 1) * n / limits.iterations, 2.0 * n)) throw Cancelled();
+    stale = now < best - kUnit / 2 ? 0 : stale + 1;
+    best = std::min(best, now);
+    if (stale >= limits.patience) break;  // (sweeps that gain less than half a unit: the fixed point is near)
   }
   out.bound = static_cast<double>(sign * floor_div(best, kUnit));
   return out;
