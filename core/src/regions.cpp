@@ -90,6 +90,34 @@ Mesh Regions::triangulation(const Mesh& dt, const std::vector<uint32_t>& state) 
   return mesh_of(dt.coords, tris);
 }
 
+void cut_into_regions(const Mesh& dt, Regions& out) {
+  // Delaunay triangles glued across free edges.
+  const uint32_t nt = dt.num_triangles();
+  std::vector<uint32_t> parent(nt);
+  std::iota(parent.begin(), parent.end(), 0u);
+  for (uint32_t e = 0; e < dt.halfedges.size(); ++e)
+    if (!out.fixed[e]) parent[find(parent, e / 3)] = find(parent, static_cast<uint32_t>(dt.halfedges[e]) / 3);
+  out.regions.clear();
+  out.region_of_triangle.assign(nt, UINT32_MAX);
+  std::vector<uint32_t> id(nt, UINT32_MAX);
+  for (uint32_t t = 0; t < nt; ++t) {
+    const uint32_t root = find(parent, t);
+    if (id[root] == UINT32_MAX) id[root] = static_cast<uint32_t>(out.regions.size()), out.regions.emplace_back();
+    out.region_of_triangle[t] = id[root];
+    out.regions[id[root]].delaunay_triangles.push_back(t);
+  }
+  for (Region& region : out.regions) {
+    std::vector<Tri> delaunay;
+    for (uint32_t t : region.delaunay_triangles) {
+      delaunay.push_back(base_triangle(dt, t));
+      for (uint32_t e = 3 * t; e < 3 * t + 3; ++e)
+        if (dt.halfedges[e] < 0 || out.fixed[e]) region.boundary.push_back({dt.origin(e), dt.target(e)});
+    }
+    region.states.push_back(canonical(std::move(delaunay)));
+  }
+  out.incomplete = 0;
+}
+
 Regions k_order_skeleton(const Mesh& dt, uint32_t k, const Progress& progress, const std::vector<uint8_t>& forced) {
   return k_order_skeleton(dt, k, useful_edges(dt, k, progress), progress, forced);
 }
@@ -115,29 +143,7 @@ Regions k_order_skeleton(const Mesh& dt, uint32_t k, const std::vector<std::pair
       out.fixed[static_cast<uint32_t>(dt.halfedges[h])] = 0;
     }
   }
-  // Regions: Delaunay triangles glued across free edges.
-  const uint32_t nt = dt.num_triangles();
-  std::vector<uint32_t> parent(nt);
-  std::iota(parent.begin(), parent.end(), 0u);
-  for (uint32_t e = 0; e < dt.halfedges.size(); ++e)
-    if (!out.fixed[e]) parent[find(parent, e / 3)] = find(parent, static_cast<uint32_t>(dt.halfedges[e]) / 3);
-  out.region_of_triangle.assign(nt, UINT32_MAX);
-  std::vector<uint32_t> id(nt, UINT32_MAX);
-  for (uint32_t t = 0; t < nt; ++t) {
-    const uint32_t root = find(parent, t);
-    if (id[root] == UINT32_MAX) id[root] = static_cast<uint32_t>(out.regions.size()), out.regions.emplace_back();
-    out.region_of_triangle[t] = id[root];
-    out.regions[id[root]].delaunay_triangles.push_back(t);
-  }
-  for (Region& region : out.regions) {
-    std::vector<Tri> delaunay;
-    for (uint32_t t : region.delaunay_triangles) {
-      delaunay.push_back(base_triangle(dt, t));
-      for (uint32_t e = 3 * t; e < 3 * t + 3; ++e)
-        if (dt.halfedges[e] < 0 || out.fixed[e]) region.boundary.push_back({dt.origin(e), dt.target(e)});
-    }
-    region.states.push_back(canonical(std::move(delaunay)));
-  }
+  cut_into_regions(dt, out);
   return out;
 }
 

@@ -81,6 +81,10 @@ Regions k_order_skeleton(const Mesh& delaunay, uint32_t k, const Progress& progr
 // The same from the useful k-OD edges (useful_edges), computed once.
 Regions k_order_skeleton(const Mesh& delaunay, uint32_t k, const std::vector<std::pair<uint32_t, uint32_t>>& useful,
                          const Progress& progress, const std::vector<uint8_t>& forced = {});
+// The regions of out.fixed (Delaunay triangles glued across the edges not
+// fixed), each with its Delaunay triangulation only: replaces out.regions and
+// out.region_of_triangle.
+void cut_into_regions(const Mesh& delaunay, Regions& out);
 // Each region's k-OD triangulations (within the limits: a region over them keeps
 // the ones found and is marked incomplete).
 void enumerate_regions(const Mesh& delaunay, Regions& regions, const RegionLimits& limits = {});
