@@ -193,24 +193,12 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   std::vector<uint8_t> live(corners, 0), has(t.corner.size(), 0);
   for (const uint32_t c : t.corner)
     if (c != kNone) live[c] = 1;
-  auto bound_now = [&] {
-    int64_t total = constant;
-    for (uint32_t v = 0; v < n; ++v) {
-      if (!in[v]) continue;
-      for (uint64_t x = t.first_node[v]; x < t.first_node[v + 1]; ++x)
-        acc[x] = (t.parent[x] == kNone ? 0 : acc[t.parent[x]]) + (t.corner[x] == kNone ? 0 : lambda[t.corner[x]]);
-      int64_t top = INT64_MIN;
-      for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f) top = std::max(top, weight[f] + acc[t.leaf[f]]);
-      total += top;
-    }
-    return total;
-  };
   // The best fan of v with corner c and the best without (c's own multiplier
   // left out; INT64_MIN: none).
   auto split = [&](uint32_t v, uint32_t c) {
     int64_t with = INT64_MIN, without = INT64_MIN;
     for (uint64_t x = t.first_node[v]; x < t.first_node[v + 1]; ++x) {
-      const bool root = t.parent[x] == kNone, own = t.corner[x] == c;
+      const bool root = t.parent[x] == kNone, own = c != kNone && t.corner[x] == c;
       has[x] = own || (!root && has[t.parent[x]]);
       acc[x] = (root ? 0 : acc[t.parent[x]]) + (t.corner[x] == kNone || own ? 0 : lambda[t.corner[x]]);
     }
@@ -219,6 +207,13 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
       side = std::max(side, weight[f] + acc[t.leaf[f]]);
     }
     return std::pair{with, without};
+  };
+  // The bound: per vertex its best fan (with no corner set apart, all fans are "without").
+  auto bound_now = [&] {
+    int64_t total = constant;
+    for (uint32_t v = 0; v < n; ++v)
+      if (in[v]) total += split(v, kNone).second;
+    return total;
   };
   const double target = static_cast<double>(sign) * incumbent;
   int64_t best = bound_now();
