@@ -64,8 +64,17 @@ void BottleneckBuilder::binary(uint32_t q, uint32_t r, const double v[4]) {
   PairTerm* kept = find(uint32_t(t.q), uint32_t(t.r));
   if (kept) seq_[static_cast<size_t>(kept - model_.terms.data())] = seq;  // even when this part is pruned
   if (below_floor(t.v, 4)) return;
-  if (!kept) return add(t, seq);
-  for (int k = 0; k < 4; ++k) kept->v[k] = std::max(kept->v[k], t.v[k]);
+  if (!kept) {
+    add(t, seq);
+    kept = &model_.terms.back();
+  } else {
+    for (int k = 0; k < 4; ++k) kept->v[k] = std::max(kept->v[k], t.v[k]);
+  }
+  // Likewise the pair takes one of its four states: the search's lower end.
+  // (On a grid, where every term is binary, the floor rises to it and prunes
+  // the rest as they come; an entry a cut answered is at most the floor and
+  // raises nothing.)
+  if (prune_) model_.floor = std::max(model_.floor, *std::min_element(kept->v, kept->v + 4));
 }
 
 BottleneckModel BottleneckBuilder::finish(const Progress& progress) {

@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include "generators.hpp"
+#include "hodt/bottleneck.hpp"
 #include "hodt/pair_measures.hpp"
 #include "hodt/skeleton.hpp"
 #include "hodt/terrain.hpp"
@@ -49,4 +50,50 @@ TEST_CASE("pair filters: the measure, or at most the cut when the measure is") {
   }
   MESSAGE(pairs << " pairs and cuts, " << filtered << " answered by a filter or a pruning");
   CHECK(filtered > pairs / 10);
+}
+
+// A pruned model (measures with a cut, the floor raised by every term's least
+// value) keeps only what the search reads: the same thresholds, the same
+// clauses in the same order, so the same answer as the full model, ties and all.
+TEST_CASE("pair models: pruned, the bottleneck search answers as over the full model") {
+  size_t steps = 0;
+  for (uint64_t seed = 1; seed <= 24; ++seed) {
+    const int w = 4 + static_cast<int>(seed % 7);
+    std::vector<double> xyz = seed % 4 == 0   ? dem_points(150, seed)
+                              : seed % 4 == 1 ? grid_points(w, w + 1, seed, seed % 8 == 1)
+                              : seed % 4 == 2 ? jittered_grid(w, w, 1e-9, seed)
+                                              : grid_points(w + 2, w, seed);
+    if (seed % 4 == 3)  // (a raster after reprojection: no coordinate an integer)
+      for (size_t i = 0; i < xyz.size(); i += 3) xyz[i] = 731012.3456789 + 74.98765 * xyz[i], xyz[i + 1] = 4100000.25 + 74.98765 * xyz[i + 1];
+    const Terrain t = Terrain::from_points(xyz);
+    const FirstOrder& fo = t.structure();
+    const Mesh& m = fo.base;
+    auto ratio = [&](const Tri& s, const Tri& u, double cut) { return pair_area_ratio(m, s, u, cut); };
+    auto angle = [&](const Tri& s, const Tri& u, double cut) { return pair_normal_angle(m, s, u, cut); };
+    auto circle = [&](const Tri& s, const Tri& u, double cut) { return pair_enclosing_circle(m, s, u, cut); };
+    auto full_ratio = [&](const Tri& s, const Tri& u) { return pair_area_ratio(m, s, u); };
+    auto full_angle = [&](const Tri& s, const Tri& u) { return pair_normal_angle(m, s, u); };
+    auto full_circle = [&](const Tri& s, const Tri& u) { return pair_enclosing_circle(m, s, u); };
+    const std::pair<BottleneckModel, BottleneckModel> models[] = {
+        {edge_pair_model(fo, ratio), edge_pair_model(fo, full_ratio)},
+        {edge_pair_model(fo, angle), edge_pair_model(fo, full_angle)},
+        {edge_pair_model(fo, circle), edge_pair_model(fo, full_circle)},
+        {vertex_pair_model(fo, ratio), vertex_pair_model(fo, full_ratio)},
+        {vertex_pair_model(fo, angle), vertex_pair_model(fo, full_angle)},
+    };
+    for (const auto& [pruned, full] : models) {
+      CHECK(pruned.terms.size() <= full.terms.size());
+      const BottleneckResult a = solve_bottleneck(pruned), b = solve_bottleneck(full);
+      CHECK(a.value == b.value);
+      CHECK(a.choice == b.choice);
+      REQUIRE(a.trace.size() == b.trace.size());
+      for (size_t i = 0; i < a.trace.size(); ++i) {
+        CHECK(a.trace[i].threshold == b.trace[i].threshold);
+        CHECK(a.trace[i].satisfiable == b.trace[i].satisfiable);
+      }
+      steps += a.trace.size();
+    }
+  }
+  MESSAGE(steps << " threshold tests alike");
+  CHECK(steps > 50);
 }

@@ -24,7 +24,7 @@ struct PairTerm {
 struct BottleneckModel {
   uint32_t num_quads = 0;
   double floor = 0;              // a lower bound of the optimum: the worst pair between fixed
-                                 // triangles (pruned models: or a unary term's smaller value)
+                                 // triangles (pruned models: or a term's least value)
   std::vector<PairTerm> terms;   // one per quad (unary) or pair of quads (binary)
 };
 

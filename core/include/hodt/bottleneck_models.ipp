@@ -89,8 +89,7 @@ BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure, const P
       for (size_t j = i + 1; j < fixed.size(); ++j) b.constant(measure_above(measure, fixed[i], fixed[j], b.floor()));
     if (work.tick(kMeasureWork * (1 + fixed.size() * fixed.size() / 2.0))) report(progress, v, total);
   }
-  const double cut = b.floor();
-  auto pair = [&](const Tri& s, const Tri& t) { return measure_above(measure, s, t, cut); };
+  auto pair = [&](const Tri& s, const Tri& t) { return measure_above(measure, s, t, b.floor()); };
   std::vector<Tri> at[2];  // triangles of each quad at v, per choice
   std::vector<uint32_t> count[2];
   for (uint32_t v = 0; v < m.num_vertices(); ++v) {
