@@ -3,102 +3,23 @@
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/objective_terms.hpp"
 #include "hodt/predicates.hpp"
 #include "hodt/words_hash.hpp"
+#include "fan_trees.hpp"
+#include "star_decode.hpp"
 
 namespace hodt {
 
 namespace {
 
 constexpr int64_t kUnit = 4096;  // multipliers in units of 2^-12: every sum exact
-constexpr uint32_t kNone = UINT32_MAX;
 
 int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
-
-// Every vertex's fans as prefix trees, in preorder: a root per first neighbour
-// (no triangle), then a node per triangle (v, the parent's neighbour, its own).
-struct FanTrees {
-  std::vector<uint32_t> corner, neighbor, parent;  // per node (corner: its triangle's at v, 3 id + position; parent, corner: kNone at a root)
-  std::vector<uint64_t> leaf;              // per fan: its last node
-  std::vector<uint64_t> first_node, first_leaf;  // per vertex, and one past the last
-  void truncate(uint64_t nodes, uint64_t leaves) {
-    corner.resize(nodes), neighbor.resize(nodes), parent.resize(nodes), leaf.resize(leaves);
-  }
-};
-
-// Lists fans by depth-first search over the candidate triangles at v, in
-// counterclockwise order.
-class FanLister {
- public:
-  FanLister(const Mesh& dt, const Candidates& cand, FanTrees& t) : dt_(dt), cand_(cand), t_(t) {}
-
-  // Around an interior vertex each fan from its smallest neighbour (of
-  // `starts`), once round; at a hull vertex from hull neighbour `from` round
-  // to `to`. False when over the budget of nodes (nothing is kept of v then).
-  bool list(uint32_t v, const std::vector<uint32_t>& starts, bool cyclic, uint32_t to, uint64_t budget) {
-    const uint64_t nodes = t_.corner.size(), leaves = t_.leaf.size();
-    limit_ = nodes + budget, v_ = v, cyclic_ = cyclic;
-    for (const uint32_t s : starts) {
-      start_ = s, end_ = cyclic ? s : to;
-      const uint64_t root = push(kNone, kNone, s), before = t_.leaf.size();
-      if (!grow(root, s)) {
-        t_.truncate(nodes, leaves);
-        return false;
-      }
-      if (t_.leaf.size() == before) t_.truncate(root, before);  // (no fan from s)
-    }
-    return true;
-  }
-  const std::vector<Tri>& triangles() const { return tris_; }
-
- private:
-  const Mesh& dt_;
-  const Candidates& cand_;
-  FanTrees& t_;
-  std::unordered_map<Tri, uint32_t, WordsHash> ids_;
-  std::vector<Tri> tris_;  // by id
-  uint64_t limit_ = 0;
-  uint32_t v_ = 0, start_ = 0, end_ = 0;
-  bool cyclic_ = true;
-
-  uint64_t push(uint32_t corner, uint64_t parent, uint32_t w) {
-    t_.corner.push_back(corner), t_.parent.push_back(static_cast<uint32_t>(parent)), t_.neighbor.push_back(w);
-    return t_.corner.size() - 1;
-  }
-  uint32_t corner(uint32_t u, uint32_t w) {
-    const Tri c = canonical_triangle(Tri{v_, u, w});
-    const auto [it, fresh] = ids_.try_emplace(c, static_cast<uint32_t>(ids_.size()));
-    if (fresh) tris_.push_back(c);
-    const uint32_t id = it->second;
-    return 3 * id + static_cast<uint32_t>(std::find(c.begin(), c.end(), v_) - c.begin());
-  }
-  // The fans going on from node `at`, whose neighbour is cur (the candidates
-  // on the left of v -> cur are the next triangles counterclockwise).
-  bool grow(uint64_t at, uint32_t cur) {
-    const auto it = cand_.find(edge_key(v_, cur));
-    if (it == cand_.end()) return true;
-    const double* pv = dt_.point(v_);
-    for (const uint32_t w : it->second) {
-      if (t_.corner.size() >= limit_) return false;
-      if (w == end_) {
-        t_.leaf.push_back(push(corner(cur, w), at, w));
-        continue;
-      }
-      // Once round only: no step over the first neighbour's direction.
-      if (cyclic_ && (w < start_ || (orient2d(pv, dt_.point(cur), dt_.point(start_)) > 0 &&
-                                     orient2d(pv, dt_.point(start_), dt_.point(w)) > 0)))
-        continue;
-      const uint64_t node = push(corner(cur, w), at, w), before = t_.leaf.size();
-      if (!grow(node, w)) return false;
-      if (t_.leaf.size() == before) t_.truncate(node, before);  // (a dead end)
-    }
-    return true;
-  }
-};
 
 }  // namespace
 
@@ -145,14 +66,14 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   // listed; terms no listed fan holds are at their best.
   const int64_t best_term = sign > 0 ? static_cast<int64_t>(d.term_max) : 0;
   int64_t constant = 0;  // (in units)
-  auto owner = [&](uint32_t a, uint32_t b) { return in[a] && (!in[b] || a < b) ? a : in[b] ? b : kNone; };
+  auto owner = [&](uint32_t a, uint32_t b) { return in[a] && (!in[b] || a < b) ? a : in[b] ? b : kNoFanNode; };
   if (at_vertices) {
     for (uint32_t v = 0; v < n; ++v)
       if (!in[v] && (d.site == TermSite::Vertex || hull_at[v] < 0)) constant += best_term * kUnit;
   } else {
     for (uint32_t v = 0; v < n; ++v)
       for (const uint32_t u : around[v])
-        if (v < u && owner(v, u) == kNone) constant += best_term * kUnit;
+        if (v < u && owner(v, u) == kNoFanNode) constant += best_term * kUnit;
   }
   std::vector<int64_t> weight(t.leaf.size());
   std::vector<uint32_t> seq, nb;
@@ -161,7 +82,7 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     const bool cyclic = hull_at[v] < 0;
     for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f) {
       seq.clear();
-      for (uint64_t x = t.leaf[f]; x != kNone; x = t.parent[x]) seq.push_back(t.neighbor[x]);
+      for (uint64_t x = t.leaf[f]; x != kNoFanNode; x = t.parent[x]) seq.push_back(t.neighbor[x]);
       std::reverse(seq.begin(), seq.end());
       if (cyclic) seq.pop_back();  // (the first neighbour, closing the cycle)
       const size_t m = seq.size();
@@ -192,15 +113,15 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   std::vector<int64_t> lambda(corners, 0), acc(t.corner.size(), 0);
   std::vector<uint8_t> live(corners, 0), has(t.corner.size(), 0);
   for (const uint32_t c : t.corner)
-    if (c != kNone) live[c] = 1;
+    if (c != kNoFanNode) live[c] = 1;
   // The best fan of v with corner c and the best without (c's own multiplier
   // left out; INT64_MIN: none).
   auto split = [&](uint32_t v, uint32_t c) {
     int64_t with = INT64_MIN, without = INT64_MIN;
     for (uint64_t x = t.first_node[v]; x < t.first_node[v + 1]; ++x) {
-      const bool root = t.parent[x] == kNone, own = c != kNone && t.corner[x] == c;
+      const bool root = t.parent[x] == kNoFanNode, own = c != kNoFanNode && t.corner[x] == c;
       has[x] = own || (!root && has[t.parent[x]]);
-      acc[x] = (root ? 0 : acc[t.parent[x]]) + (t.corner[x] == kNone || own ? 0 : lambda[t.corner[x]]);
+      acc[x] = (root ? 0 : acc[t.parent[x]]) + (t.corner[x] == kNoFanNode || own ? 0 : lambda[t.corner[x]]);
     }
     for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f) {
       int64_t& side = has[t.leaf[f]] ? with : without;
@@ -212,11 +133,12 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   auto bound_now = [&] {
     int64_t total = constant;
     for (uint32_t v = 0; v < n; ++v)
-      if (in[v]) total += split(v, kNone).second;
+      if (in[v]) total += split(v, kNoFanNode).second;
     return total;
   };
   const double target = static_cast<double>(sign) * incumbent;
   int64_t best = bound_now();
+  std::vector<int64_t> best_lambda = limits.decode ? lambda : std::vector<int64_t>();  // (the multipliers of `best`)
   constexpr double kCap = double(int64_t{1} << 32);  // (a corner every fan takes: its margin is capped)
   std::vector<std::pair<uint32_t, double>> block;  // (corner, margin)
   uint32_t stale = 0;
@@ -243,10 +165,38 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     const int64_t now = bound_now();
     if (limits.progress && !limits.progress(n + static_cast<double>(sweep + 1) * n / limits.iterations, 2.0 * n)) throw Cancelled();
     stale = now < best - kUnit / 2 ? 0 : stale + 1;
+    if (now < best && limits.decode) best_lambda = lambda;
     best = std::min(best, now);
     if (stale >= limits.patience) break;  // (sweeps that gain less than half a unit: the fixed point is near)
   }
   out.bound = static_cast<double>(sign * floor_div(best, kUnit));
+  // A gap left: a triangulation from the fans best under the multipliers.
+  if (limits.decode && out.left_out == 0 && static_cast<double>(floor_div(best, kUnit)) > target) {
+    std::vector<int64_t> value(t.leaf.size());
+    for (uint64_t f = 0; f < t.leaf.size(); ++f) {
+      value[f] = weight[f];
+      for (uint64_t x = t.leaf[f]; x != kNoFanNode; x = t.parent[x])
+        if (t.corner[x] != kNoFanNode) value[f] += best_lambda[t.corner[x]];
+    }
+    // Sweeps four ways (each leaves other disagreements to the end); then, with
+    // a start, once more with ties going to the start's fans (a repair of it).
+    const double axes[4][2] = {{1, 0.001}, {-1, -0.001}, {0.001, 1}, {-0.001, -1}};
+    for (const auto& axis : axes)
+      if (auto d = decode_fans(dt, t, value, axis, limits.decode_steps_per_vertex * n)) out.decoded.push_back(std::move(*d));
+    if (limits.start) {
+      std::unordered_set<Tri, WordsHash> kept;
+      for (uint32_t i = 0; i < limits.start->num_triangles(); ++i) kept.insert(canonical_triangle(base_triangle(*limits.start, i)));
+      std::vector<uint8_t> in_start(tris.size());
+      for (size_t i = 0; i < tris.size(); ++i) in_start[i] = kept.count(tris[i]) > 0;
+      for (uint64_t f = 0; f < t.leaf.size(); ++f) {
+        bool all = true;
+        for (uint64_t x = t.leaf[f]; x != kNoFanNode && all; x = t.parent[x])
+          all = t.corner[x] == kNoFanNode || in_start[t.corner[x] / 3];
+        value[f] = 2 * value[f] + all;
+      }
+      if (auto d = decode_fans(dt, t, value, axes[0], limits.decode_steps_per_vertex * n)) out.decoded.push_back(std::move(*d));
+    }
+  }
   return out;
 }
 

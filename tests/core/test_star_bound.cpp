@@ -9,6 +9,7 @@
 #include "hodt/k_order.hpp"
 #include "hodt/points.hpp"
 #include "hodt/region_engine.hpp"
+#include "hodt/objective_terms.hpp"
 #include "hodt/star_bound.hpp"
 
 using namespace hodt;
@@ -70,4 +71,65 @@ TEST_CASE("star bound: counts only; a triangulation's value is never past it on 
     if (r.bound) CHECK(!better(oi.sense, *r.bound, b->bound));  // (the solver keeps the tighter)
   }
   CHECK(applied == 5);  // convex vertices and edges, minima, extrema, mixed vertices
+}
+
+// Every triangulation read off the stars (star_decode.hpp) is a k-OD
+// triangulation of the points, so never past the brute-force optimum; on these
+// small instances, whose relaxations are mostly tight, most reach it. Tiny step
+// budgets stop the search part way (then nothing, never a partial answer).
+TEST_CASE("star decode: k-OD triangulations, never past the optimum, mostly at it") {
+  int decoded = 0, optimal = 0, runs = 0;
+  for (uint32_t k : {2u, 3u, 4u})
+    for (uint64_t seed = 1; seed <= 60; ++seed) {
+      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 23 + k, 1)).xyz));
+      const Mesh& dt = fo.base;
+      const KOrderStructure structure(dt, k, {});
+      for (const auto& oi : objectives()) {
+        if (objective_terms(oi.objective, dt).combine != TermCombine::Sum) continue;
+        StarBoundLimits limits;
+        limits.decode = true;
+        if (seed % 5 == 0) limits.decode_steps_per_vertex = 1;
+        const double delaunay_value = evaluate(oi.objective, dt);
+        const auto b = star_bound(dt, oi.objective, structure.candidates, delaunay_value, limits);
+        if (!b) continue;
+        ++runs;
+        if (b->decoded.empty()) continue;
+        SolveOptions bf;
+        bf.method = Method::BruteForce;
+        const double want = solve_k_order(fo, oi.objective, k, bf, 20'000'000).value;
+        CAPTURE(k);
+        CAPTURE(seed);
+        CAPTURE(std::string(oi.id));
+        for (const std::vector<Tri>& tris : b->decoded) {
+          ++decoded;
+          REQUIRE(tris.size() == dt.num_triangles());
+          const Mesh m = mesh_of(dt.coords, tris);
+          CHECK(is_k_order(m, dt, k));
+          const double v = evaluate(oi.objective, m);
+          CHECK(!better(oi.sense, v, want));
+          CHECK(!better(oi.sense, v, b->bound));
+          optimal += v == want;
+        }
+      }
+    }
+  MESSAGE(runs << " star bounds with a gap to Delaunay, " << decoded << " triangulations decoded, " << optimal << " optimal");
+  CHECK(decoded > 200);
+  CHECK(optimal > decoded / 2);
+}
+
+TEST_CASE("star decode: a DEM at k = 8, every sweep a k-OD triangulation") {
+  const FirstOrder fo = first_order(delaunay(validate_points(grid_points(12, 11, 3)).xyz));
+  const KOrderStructure structure(fo.base, 8, {});
+  for (const Objective o : {Objective::MaxConvexEdges, Objective::MaxConvexVertices}) {
+    StarBoundLimits limits;
+    limits.decode = true;
+    const auto b = star_bound(fo.base, o, structure.candidates, evaluate(o, fo.base), limits);
+    REQUIRE(b);
+    CHECK(!b->decoded.empty());
+    for (const std::vector<Tri>& tris : b->decoded) {
+      const Mesh m = mesh_of(fo.base.coords, tris);
+      CHECK(is_k_order(m, fo.base, 8));
+      CHECK(evaluate(o, m) <= b->bound);
+    }
+  }
 }

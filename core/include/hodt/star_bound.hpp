@@ -21,6 +21,7 @@
 #pragma once
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "hodt/fill_enumerator.hpp"
 #include "hodt/mesh.hpp"
@@ -40,6 +41,11 @@ struct StarBoundLimits {
   // sweeps in a row lowered the bound by less than half a unit.
   uint32_t iterations = 50;
   uint32_t patience = 3;
+  // A gap left: read a triangulation off the fans best under the multipliers
+  // (star_decode.hpp), within this many fans tried per vertex.
+  bool decode = false;
+  uint64_t decode_steps_per_vertex = 64;
+  const Mesh* start = nullptr;  // (decode) a triangulation whose fans win ties
   Progress progress;
 };
 
@@ -47,6 +53,7 @@ struct StarBound {
   double bound;           // no k-OD triangulation is better
   uint64_t nodes = 0;     // of the fans' prefix trees
   uint32_t left_out = 0;  // vertices whose fans were over the budgets
+  std::vector<std::vector<Tri>> decoded;  // (decode) k-OD triangulations (their triangles)
 };
 
 // Counts only: terms summed, integers, at vertices (not vertex pairs) or

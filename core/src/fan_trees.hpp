@@ -1,0 +1,100 @@
+// Every fan a vertex can have at order k, as prefix trees (star_bound.hpp):
+// shared by the bound and by the decoding of a triangulation from it.
+#pragma once
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "hodt/fill_enumerator.hpp"
+#include "hodt/mesh.hpp"
+#include "hodt/predicates.hpp"
+#include "hodt/skeleton.hpp"
+#include "hodt/words_hash.hpp"
+
+namespace hodt {
+
+constexpr uint32_t kNoFanNode = UINT32_MAX;
+
+// Every vertex's fans as prefix trees, in preorder: a root per first neighbour
+// (no triangle), then a node per triangle (v, the parent's neighbour, its own).
+struct FanTrees {
+  std::vector<uint32_t> corner, neighbor, parent;  // per node (corner: its triangle's at v, 3 id + position; parent, corner: kNoFanNode at a root)
+  std::vector<uint64_t> leaf;              // per fan: its last node
+  std::vector<uint64_t> first_node, first_leaf;  // per vertex, and one past the last
+  void truncate(uint64_t nodes, uint64_t leaves) {
+    corner.resize(nodes), neighbor.resize(nodes), parent.resize(nodes), leaf.resize(leaves);
+  }
+};
+
+// Lists fans by depth-first search over the candidate triangles at v, in
+// counterclockwise order.
+class FanLister {
+ public:
+  FanLister(const Mesh& dt, const Candidates& cand, FanTrees& t) : dt_(dt), cand_(cand), t_(t) {}
+
+  // Around an interior vertex each fan from its smallest neighbour (of
+  // `starts`), once round; at a hull vertex from hull neighbour `from` round
+  // to `to`. False when over the budget of nodes (nothing is kept of v then).
+  bool list(uint32_t v, const std::vector<uint32_t>& starts, bool cyclic, uint32_t to, uint64_t budget) {
+    const uint64_t nodes = t_.corner.size(), leaves = t_.leaf.size();
+    limit_ = nodes + budget, v_ = v, cyclic_ = cyclic;
+    for (const uint32_t s : starts) {
+      start_ = s, end_ = cyclic ? s : to;
+      const uint64_t root = push(kNoFanNode, kNoFanNode, s), before = t_.leaf.size();
+      if (!grow(root, s)) {
+        t_.truncate(nodes, leaves);
+        return false;
+      }
+      if (t_.leaf.size() == before) t_.truncate(root, before);  // (no fan from s)
+    }
+    return true;
+  }
+  const std::vector<Tri>& triangles() const { return tris_; }
+
+ private:
+  const Mesh& dt_;
+  const Candidates& cand_;
+  FanTrees& t_;
+  std::unordered_map<Tri, uint32_t, WordsHash> ids_;
+  std::vector<Tri> tris_;  // by id
+  uint64_t limit_ = 0;
+  uint32_t v_ = 0, start_ = 0, end_ = 0;
+  bool cyclic_ = true;
+
+  uint64_t push(uint32_t corner, uint64_t parent, uint32_t w) {
+    t_.corner.push_back(corner), t_.parent.push_back(static_cast<uint32_t>(parent)), t_.neighbor.push_back(w);
+    return t_.corner.size() - 1;
+  }
+  uint32_t corner(uint32_t u, uint32_t w) {
+    const Tri c = canonical_triangle(Tri{v_, u, w});
+    const auto [it, fresh] = ids_.try_emplace(c, static_cast<uint32_t>(ids_.size()));
+    if (fresh) tris_.push_back(c);
+    const uint32_t id = it->second;
+    return 3 * id + static_cast<uint32_t>(std::find(c.begin(), c.end(), v_) - c.begin());
+  }
+  // The fans going on from node `at`, whose neighbour is cur (the candidates
+  // on the left of v -> cur are the next triangles counterclockwise).
+  bool grow(uint64_t at, uint32_t cur) {
+    const auto it = cand_.find(edge_key(v_, cur));
+    if (it == cand_.end()) return true;
+    const double* pv = dt_.point(v_);
+    for (const uint32_t w : it->second) {
+      if (t_.corner.size() >= limit_) return false;
+      if (w == end_) {
+        t_.leaf.push_back(push(corner(cur, w), at, w));
+        continue;
+      }
+      // Once round only: no step over the first neighbour's direction.
+      if (cyclic_ && (w < start_ || (orient2d(pv, dt_.point(cur), dt_.point(start_)) > 0 &&
+                                     orient2d(pv, dt_.point(start_), dt_.point(w)) > 0)))
+        continue;
+      const uint64_t node = push(corner(cur, w), at, w), before = t_.leaf.size();
+      if (!grow(node, w)) return false;
+      if (t_.leaf.size() == before) t_.truncate(node, before);  // (a dead end)
+    }
+    return true;
+  }
+};
+
+
+}  // namespace hodt

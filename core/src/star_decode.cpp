@@ -1,0 +1,129 @@
+#include "star_decode.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace hodt {
+
+namespace {
+
+// What a fan says of one neighbour u: whether its edge is in the fan, and if
+// so the apexes before and after it (counterclockwise; none at a hull end).
+struct Edge {
+  bool present = false;
+  uint32_t before = kNoFanNode, after = kNoFanNode;
+  bool operator==(const Edge&) const = default;
+};
+
+class Fans {
+ public:
+  Fans(const Mesh& dt, const FanTrees& t) : t_(t), hull_(dt.num_vertices(), 0) {
+    for (uint32_t h : dt.hull) hull_[h] = 1;
+  }
+  // The neighbours of fan f of v in counterclockwise order (a cycle at an
+  // interior vertex: the first is not repeated).
+  const std::vector<uint32_t>& ring(uint32_t v, uint64_t f) {
+    ring_.clear();
+    for (uint64_t x = t_.leaf[f]; x != kNoFanNode; x = t_.parent[x]) ring_.push_back(t_.neighbor[x]);
+    std::reverse(ring_.begin(), ring_.end());
+    if (!hull_[v]) ring_.pop_back();
+    return ring_;
+  }
+  Edge edge(uint32_t v, uint64_t f, uint32_t u) {
+    const std::vector<uint32_t>& r = ring(v, f);
+    const size_t m = r.size();
+    const auto it = std::find(r.begin(), r.end(), u);
+    if (it == r.end()) return {};
+    const size_t j = static_cast<size_t>(it - r.begin());
+    const bool cyclic = !hull_[v];
+    return {true, cyclic || j > 0 ? r[(j + m - 1) % m] : kNoFanNode, cyclic || j + 1 < m ? r[(j + 1) % m] : kNoFanNode};
+  }
+  bool cyclic(uint32_t v) const { return !hull_[v]; }
+
+ private:
+  const FanTrees& t_;
+  std::vector<uint8_t> hull_;
+  std::vector<uint32_t> ring_;
+};
+
+}  // namespace
+
+std::optional<std::vector<Tri>> decode_fans(const Mesh& dt, const FanTrees& t, const std::vector<int64_t>& value,
+                                            const double axis[2], uint64_t max_steps) {
+  const uint32_t n = dt.num_vertices();
+  Fans fans(dt, t);
+  // Neighbours: any two vertices one's fans pass through the other.
+  std::vector<std::vector<uint32_t>> near(n);
+  std::vector<uint32_t> owner(t.leaf.size());
+  std::vector<std::vector<uint64_t>> domain(n);
+  for (uint32_t v = 0; v < n; ++v) {
+    if (t.first_leaf[v] == t.first_leaf[v + 1]) return std::nullopt;
+    for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f) {
+      owner[f] = v;
+      domain[v].push_back(f);
+      for (uint32_t u : fans.ring(v, f)) near[v].push_back(u), near[u].push_back(v);
+    }
+    std::stable_sort(domain[v].begin(), domain[v].end(), [&](uint64_t a, uint64_t b) { return value[a] > value[b]; });
+  }
+  for (auto& a : near) std::sort(a.begin(), a.end()), a.erase(std::unique(a.begin(), a.end()), a.end());
+  std::vector<uint32_t> order(n);
+  std::iota(order.begin(), order.end(), 0u);
+  std::vector<double> along(n);
+  for (uint32_t v = 0; v < n; ++v) along[v] = axis[0] * dt.point(v)[0] + axis[1] * dt.point(v)[1];
+  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return along[a] < along[b]; });
+
+  constexpr uint64_t kNoFan = UINT64_MAX;
+  std::vector<uint64_t> chosen(n, kNoFan), trail;
+  std::vector<uint8_t> alive(t.leaf.size(), 1);
+  std::vector<uint64_t> left(n), mark(n), next(n, 0);
+  for (uint32_t v = 0; v < n; ++v) left[v] = domain[v].size();
+  auto undo = [&](uint64_t to) {
+    for (; trail.size() > to; trail.pop_back()) alive[trail.back()] = 1, ++left[owner[trail.back()]];
+  };
+  // Fan f of v chosen: each neighbour not yet decided keeps the fans that say
+  // of v what f says of it (the same triangles on their edge). False when one
+  // has none left.
+  auto choose = [&](uint32_t v, uint64_t f) {
+    chosen[v] = f;
+    for (uint32_t u : near[v]) {
+      if (chosen[u] != kNoFan) continue;
+      const Edge said = fans.edge(v, f, u);
+      const Edge wanted = said.present ? Edge{true, said.after, said.before} : Edge{};
+      for (uint64_t g : domain[u])
+        if (alive[g] && !(fans.edge(u, g, v) == wanted)) alive[g] = 0, --left[u], trail.push_back(g);
+      if (left[u] == 0) return false;
+    }
+    return true;
+  };
+  uint64_t steps = 0;
+  for (int64_t i = 0; i < static_cast<int64_t>(n);) {
+    const uint32_t v = order[static_cast<size_t>(i)];
+    if (chosen[v] != kNoFan) undo(mark[v]), chosen[v] = kNoFan;  // (back here: its next fan)
+    bool placed = false;
+    while (!placed && next[v] < domain[v].size()) {
+      const uint64_t f = domain[v][next[v]++];
+      if (!alive[f]) continue;
+      if (++steps > max_steps) return std::nullopt;
+      mark[v] = trail.size();
+      placed = choose(v, f);
+      if (!placed) undo(mark[v]), chosen[v] = kNoFan;
+    }
+    if (placed) {
+      if (++i < static_cast<int64_t>(n)) next[order[static_cast<size_t>(i)]] = 0;
+    } else {
+      next[v] = 0;
+      if (--i < 0) return std::nullopt;
+    }
+  }
+  std::vector<Tri> out;
+  for (uint32_t v = 0; v < n; ++v) {
+    const std::vector<uint32_t>& r = fans.ring(v, chosen[v]);
+    const size_t m = r.size(), last = fans.cyclic(v) ? m : m - 1;
+    for (size_t j = 0; j < last; ++j) out.push_back(canonical_triangle(Tri{v, r[j], r[(j + 1) % m]}));
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+}  // namespace hodt
