@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -10,8 +11,8 @@
 #include "hodt/objective_terms.hpp"
 #include "hodt/predicates.hpp"
 #include "hodt/words_hash.hpp"
-#include "fan_trees.hpp"
-#include "star_decode.hpp"
+#include "hodt/fan_trees.hpp"
+#include "hodt/star_decode.hpp"
 
 namespace hodt {
 
@@ -178,24 +179,8 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
       for (uint64_t x = t.leaf[f]; x != kNoFanNode; x = t.parent[x])
         if (t.corner[x] != kNoFanNode) value[f] += best_lambda[t.corner[x]];
     }
-    // Sweeps four ways (each leaves other disagreements to the end); then, with
-    // a start, once more with ties going to the start's fans (a repair of it).
-    const double axes[4][2] = {{1, 0.001}, {-1, -0.001}, {0.001, 1}, {-0.001, -1}};
-    for (const auto& axis : axes)
-      if (auto d = decode_fans(dt, t, value, axis, limits.decode_steps_per_vertex * n)) out.decoded.push_back(std::move(*d));
-    if (limits.start) {
-      std::unordered_set<Tri, WordsHash> kept;
-      for (uint32_t i = 0; i < limits.start->num_triangles(); ++i) kept.insert(canonical_triangle(base_triangle(*limits.start, i)));
-      std::vector<uint8_t> in_start(tris.size());
-      for (size_t i = 0; i < tris.size(); ++i) in_start[i] = kept.count(tris[i]) > 0;
-      for (uint64_t f = 0; f < t.leaf.size(); ++f) {
-        bool all = true;
-        for (uint64_t x = t.leaf[f]; x != kNoFanNode && all; x = t.parent[x])
-          all = t.corner[x] == kNoFanNode || in_start[t.corner[x] / 3];
-        value[f] = 2 * value[f] + all;
-      }
-      if (auto d = decode_fans(dt, t, value, axes[0], limits.decode_steps_per_vertex * n)) out.decoded.push_back(std::move(*d));
-    }
+    out.decoder = std::make_shared<const StarDecoder>(dt, std::move(t), tris, std::move(value),
+                                                      limits.decode_steps_per_vertex * n);
   }
   return out;
 }

@@ -11,6 +11,7 @@
 #include "hodt/region_engine.hpp"
 #include "hodt/objective_terms.hpp"
 #include "hodt/star_bound.hpp"
+#include "hodt/star_decode.hpp"
 
 using namespace hodt;
 using namespace hodt::test;
@@ -93,14 +94,20 @@ TEST_CASE("star decode: k-OD triangulations, never past the optimum, mostly at i
         const auto b = star_bound(dt, oi.objective, structure.candidates, delaunay_value, limits);
         if (!b) continue;
         ++runs;
-        if (b->decoded.empty()) continue;
+        if (!b->decoder) continue;
+        std::vector<std::vector<Tri>> found;
+        const double ax[2][2] = {{1, 0.001}, {-0.001, -1}};
+        for (const auto& axis : ax)
+          if (auto d = b->decoder->sweep(axis)) found.push_back(std::move(*d));
+        if (auto d = b->decoder->repair(dt)) found.push_back(std::move(*d));
+        if (found.empty()) continue;
         SolveOptions bf;
         bf.method = Method::BruteForce;
         const double want = solve_k_order(fo, oi.objective, k, bf, 20'000'000).value;
         CAPTURE(k);
         CAPTURE(seed);
         CAPTURE(std::string(oi.id));
-        for (const std::vector<Tri>& tris : b->decoded) {
+        for (const std::vector<Tri>& tris : found) {
           ++decoded;
           REQUIRE(tris.size() == dt.num_triangles());
           const Mesh m = mesh_of(dt.coords, tris);
@@ -125,8 +132,13 @@ TEST_CASE("star decode: a DEM at k = 8, every sweep a k-OD triangulation") {
     limits.decode = true;
     const auto b = star_bound(fo.base, o, structure.candidates, evaluate(o, fo.base), limits);
     REQUIRE(b);
-    CHECK(!b->decoded.empty());
-    for (const std::vector<Tri>& tris : b->decoded) {
+    REQUIRE(b->decoder);
+    const double ax[4][2] = {{1, 0.001}, {-1, -0.001}, {0.001, 1}, {-0.001, -1}};
+    std::vector<std::vector<Tri>> found;
+    for (const auto& axis : ax)
+      if (auto d = b->decoder->sweep(axis)) found.push_back(std::move(*d));
+    CHECK(!found.empty());
+    for (const std::vector<Tri>& tris : found) {
       const Mesh m = mesh_of(fo.base.coords, tris);
       CHECK(is_k_order(m, fo.base, 8));
       CHECK(evaluate(o, m) <= b->bound);

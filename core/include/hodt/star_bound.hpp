@@ -20,6 +20,7 @@
 // the bound is the floor of the best (max) or the ceiling (min).
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -29,6 +30,8 @@
 #include "hodt/progress.hpp"
 
 namespace hodt {
+
+class StarDecoder;  // (star_decode.hpp)
 
 struct StarBoundLimits {
   // Fans as prefix trees (a node per triangle, 20 bytes): per vertex, and in
@@ -41,11 +44,10 @@ struct StarBoundLimits {
   // sweeps in a row lowered the bound by less than half a unit.
   uint32_t iterations = 50;
   uint32_t patience = 3;
-  // A gap left: read a triangulation off the fans best under the multipliers
-  // (star_decode.hpp), within this many fans tried per vertex.
+  // A gap left: keep the fans and their values under the multipliers, to read
+  // triangulations off them (StarDecoder), within this many fans tried per vertex.
   bool decode = false;
   uint64_t decode_steps_per_vertex = 64;
-  const Mesh* start = nullptr;  // (decode) a triangulation whose fans win ties
   Progress progress;
 };
 
@@ -53,7 +55,7 @@ struct StarBound {
   double bound;           // no k-OD triangulation is better
   uint64_t nodes = 0;     // of the fans' prefix trees
   uint32_t left_out = 0;  // vertices whose fans were over the budgets
-  std::vector<std::vector<Tri>> decoded;  // (decode) k-OD triangulations (their triangles)
+  std::shared_ptr<const StarDecoder> decoder;  // (decode, a gap left, no vertex left out)
 };
 
 // Counts only: terms summed, integers, at vertices (not vertex pairs) or
