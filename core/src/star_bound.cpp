@@ -111,22 +111,29 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   // the sums stay exact (rounded to units, the last corner takes the rest).
   const std::vector<Tri>& tris = lister.triangles();
   const size_t corners = 3 * tris.size();
-  std::vector<int64_t> lambda(corners, 0), acc(t.corner.size(), 0);
-  std::vector<uint8_t> live(corners, 0), has(t.corner.size(), 0);
+  std::vector<int64_t> lambda(corners, 0);
+  std::vector<uint8_t> live(corners, 0);
   for (const uint32_t c : t.corner)
     if (c != kNoFanNode) live[c] = 1;
+  // Per node of one vertex's trees (indexed from its first node: the scratch is
+  // as large as the largest vertex's trees, not all of them).
+  uint64_t widest = 0;
+  for (uint32_t v = 0; v < n; ++v) widest = std::max(widest, t.first_node[v + 1] - t.first_node[v]);
+  std::vector<int64_t> acc(widest);
+  std::vector<uint8_t> has(widest);
   // The best fan of v with corner c and the best without (c's own multiplier
   // left out; INT64_MIN: none).
   auto split = [&](uint32_t v, uint32_t c) {
     int64_t with = INT64_MIN, without = INT64_MIN;
-    for (uint64_t x = t.first_node[v]; x < t.first_node[v + 1]; ++x) {
+    const uint64_t base = t.first_node[v];
+    for (uint64_t x = base; x < t.first_node[v + 1]; ++x) {
       const bool root = t.parent[x] == kNoFanNode, own = c != kNoFanNode && t.corner[x] == c;
-      has[x] = own || (!root && has[t.parent[x]]);
-      acc[x] = (root ? 0 : acc[t.parent[x]]) + (t.corner[x] == kNoFanNode || own ? 0 : lambda[t.corner[x]]);
+      has[x - base] = own || (!root && has[t.parent[x] - base]);
+      acc[x - base] = (root ? 0 : acc[t.parent[x] - base]) + (t.corner[x] == kNoFanNode || own ? 0 : lambda[t.corner[x]]);
     }
     for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f) {
-      int64_t& side = has[t.leaf[f]] ? with : without;
-      side = std::max(side, weight[f] + acc[t.leaf[f]]);
+      int64_t& side = has[t.leaf[f] - base] ? with : without;
+      side = std::max(side, weight[f] + acc[t.leaf[f] - base]);
     }
     return std::pair{with, without};
   };

@@ -34,7 +34,8 @@ namespace hodt {
 class StarDecoder;  // (star_decode.hpp)
 
 struct StarBoundLimits {
-  // Fans as prefix trees (a node per triangle, 20 bytes): per vertex, and in
+  // Fans as prefix trees (a node per triangle, 12 bytes; 16 more per fan, and
+  // with decode 37 more per fan): per vertex, and in
   // all; vertices beyond are left out (their terms at their best), and when
   // more than max_left_out of them are, the bound is not worth its steps.
   uint64_t max_nodes_per_vertex = 20'000;
