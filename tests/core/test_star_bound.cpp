@@ -16,6 +16,14 @@
 using namespace hodt;
 using namespace hodt::test;
 
+namespace {
+double brute_force_value(const FirstOrder& fo, Objective o, uint32_t k) {
+  SolveOptions bf;
+  bf.method = Method::BruteForce;
+  return solve_k_order(fo, o, k, bf, 20'000'000).value;
+}
+}  // namespace
+
 TEST_CASE("star bound: never past the brute-force optimum (k = 1 to 4), with fans left out too") {
   int runs = 0, tight = 0, partial = 0;
   for (uint32_t k : {1u, 2u, 3u, 4u})
@@ -30,9 +38,7 @@ TEST_CASE("star bound: never past the brute-force optimum (k = 1 to 4), with fan
         if (seed % 4 == 0) limits.max_nodes_per_vertex = 1 + seed % 7, limits.max_left_out = 1;  // (some vertices left out)
         const auto b = star_bound(dt, oi.objective, structure.candidates, delaunay_value, limits);
         if (!b) continue;
-        SolveOptions bf;
-        bf.method = Method::BruteForce;
-        const double want = solve_k_order(fo, oi.objective, k, bf, 20'000'000).value;
+        const double want = brute_force_value(fo, oi.objective, k);
         CAPTURE(k);
         CAPTURE(seed);
         CAPTURE(std::string(oi.id));
@@ -101,9 +107,7 @@ TEST_CASE("star decode: k-OD triangulations, never past the optimum, mostly at i
           if (auto d = b->decoder->sweep(axis)) found.push_back(std::move(*d));
         if (auto d = b->decoder->repair(dt)) found.push_back(std::move(*d));
         if (found.empty()) continue;
-        SolveOptions bf;
-        bf.method = Method::BruteForce;
-        const double want = solve_k_order(fo, oi.objective, k, bf, 20'000'000).value;
+        const double want = brute_force_value(fo, oi.objective, k);
         CAPTURE(k);
         CAPTURE(seed);
         CAPTURE(std::string(oi.id));
