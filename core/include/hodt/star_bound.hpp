@@ -38,8 +38,8 @@ struct StarBoundLimits {
   // with decode 37 more per fan): per vertex, and in
   // all; vertices beyond are left out (their terms at their best), and when
   // more than max_left_out of them are, the bound is not worth its steps.
-  uint64_t max_nodes_per_vertex = 20'000;
-  uint64_t max_nodes = 12'000'000;
+  uint64_t max_nodes_per_vertex = 50'000;
+  uint64_t max_nodes = 16'000'000;
   double max_left_out = 0.05;
   // Sweeps over every triangle: at most this many, and none once `patience`
   // sweeps in a row lowered the bound by less than half a unit.
