@@ -525,9 +525,9 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
       bound = tighter(sense, bound, *d);
     }
   }
-  // Counts: the bound from the vertices' stars, which lists no region (one
-  // region of thousands of triangles, as from k = 6 on the volcano, too).
-  if (provable && better(sense, bound, r.value)) {
+  // Counts and lengths: the bound from the vertices' stars, which lists no
+  // region (one region of thousands of triangles, as from k = 6 on the volcano, too).
+  if (bounded && description.combine == TermCombine::Sum && better(sense, bound, r.value)) {
     StarBoundLimits stars;
     stars.progress = options.progress;
     stars.decode = true;

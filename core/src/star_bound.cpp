@@ -28,10 +28,14 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
                                     const StarBoundLimits& limits) {
   const ObjectiveTerms& d = objective_terms(o, dt);
   const bool at_vertices = d.site == TermSite::InteriorVertex || d.site == TermSite::Vertex;
-  if (d.combine != TermCombine::Sum || has_domain(dt) || !(at_vertices || d.site == TermSite::InteriorEdge) ||
-      !(d.term_max < 1e6) || d.term_max != std::floor(d.term_max) || !std::isfinite(incumbent))
-    return std::nullopt;
   const int64_t sign = info(o).sense == Sense::Max ? 1 : -1;  // the relaxation maximises sign * value
+  // Counts (integer terms), or minimised lengths over every edge (the hull's a
+  // constant): nonnegative reals, each rounded down in fixed point.
+  const bool integral = d.term_max < 1e6 && d.term_max == std::floor(d.term_max);
+  const bool lengths = d.site == TermSite::Edge && !d.edge_reads_apexes && sign < 0;
+  if (d.combine != TermCombine::Sum || has_domain(dt) || !std::isfinite(incumbent) ||
+      !(integral ? at_vertices || d.site == TermSite::InteriorEdge : lengths))
+    return std::nullopt;
   const uint32_t n = dt.num_vertices();
   std::vector<std::vector<uint32_t>> around(n);  // useful neighbours (the candidates' edges)
   for (const auto& [key, apexes] : cand)
@@ -68,6 +72,48 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   const int64_t best_term = sign > 0 ? static_cast<int64_t>(d.term_max) : 0;
   int64_t constant = 0;  // (in units)
   auto owner = [&](uint32_t a, uint32_t b) { return in[a] && (!in[b] || a < b) ? a : in[b] ? b : kNoFanNode; };
+  // The terms of fan f of v, in order (an edge's, of the edges v owns).
+  std::vector<uint32_t> seq, nb;
+  const std::vector<Tri> no_triangles;
+  auto terms_of = [&](uint32_t v, uint64_t f, const auto& take) {
+    const bool cyclic = hull_at[v] < 0;
+    seq.clear();
+    for (uint64_t x = t.leaf[f]; x != kNoFanNode; x = t.parent[x]) seq.push_back(t.neighbor[x]);
+    std::reverse(seq.begin(), seq.end());
+    if (cyclic) seq.pop_back();  // (the first neighbour, closing the cycle)
+    const size_t m = seq.size();
+    if (at_vertices) {
+      if (d.site == TermSite::Vertex || cyclic) {
+        nb = seq;
+        std::sort(nb.begin(), nb.end());
+        take(vertex_term(d, dt, Star(v, nb, no_triangles)));
+      }
+      return;
+    }
+    for (size_t j = 0; j < m; ++j)
+      if ((cyclic || (j > 0 && j + 1 < m)) && owner(v, seq[j]) == v)
+        take(edge_term(d, dt, v, seq[j], seq[(j + 1) % m], seq[(j + m - 1) % m]));
+  };
+  // Lengths in units of 2^-e, the longest term near 2^20 units: each rounded
+  // down, less one unit (the length is accurate, not exact), so every sum is
+  // exact and never above the true one. Counts: units of 1.
+  double scale = 1;
+  if (!integral) {
+    double longest = 0;
+    for (uint32_t v = 0; v < n; ++v)
+      for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f)
+        terms_of(v, f, [&](double w) { longest = std::max(longest, std::fabs(w)); });
+    for (size_t i = 0; i < dt.hull.size(); ++i)
+      longest = std::max(longest, edge_term(d, dt, dt.hull[i], dt.hull[(i + 1) % dt.hull.size()], kNoApex, kNoApex));
+    if (longest > 0) scale = std::ldexp(1.0, 20 - std::ilogb(longest));
+  }
+  auto units = [&](double w) {  // (sign form, at least sign * w * scale)
+    if (integral) return sign * static_cast<int64_t>(w);
+    return -(static_cast<int64_t>(std::floor(w * scale)) - 1);
+  };
+  if (lengths)  // (hull edges: in every triangulation)
+    for (size_t i = 0; i < dt.hull.size(); ++i)
+      constant += units(edge_term(d, dt, dt.hull[i], dt.hull[(i + 1) % dt.hull.size()], kNoApex, kNoApex)) * kUnit;
   if (at_vertices) {
     for (uint32_t v = 0; v < n; ++v)
       if (!in[v] && (d.site == TermSite::Vertex || hull_at[v] < 0)) constant += best_term * kUnit;
@@ -77,32 +123,14 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
         if (v < u && owner(v, u) == kNoFanNode) constant += best_term * kUnit;
   }
   std::vector<int64_t> weight(t.leaf.size());
-  std::vector<uint32_t> seq, nb;
-  const std::vector<Tri> no_triangles;
-  for (uint32_t v = 0; v < n; ++v) {
-    const bool cyclic = hull_at[v] < 0;
-    for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f) {
-      seq.clear();
-      for (uint64_t x = t.leaf[f]; x != kNoFanNode; x = t.parent[x]) seq.push_back(t.neighbor[x]);
-      std::reverse(seq.begin(), seq.end());
-      if (cyclic) seq.pop_back();  // (the first neighbour, closing the cycle)
-      const size_t m = seq.size();
-      double w = 0;
-      if (at_vertices) {
-        if (d.site == TermSite::Vertex || cyclic) {
-          nb = seq;
-          std::sort(nb.begin(), nb.end());
-          w = vertex_term(d, dt, Star(v, nb, no_triangles));
-        }
-      } else {
-        for (size_t j = 0; j < m; ++j)
-          if ((cyclic || (j > 0 && j + 1 < m)) && owner(v, seq[j]) == v)
-            w += edge_term(d, dt, v, seq[j], seq[(j + 1) % m], seq[(j + m - 1) % m]);
-      }
-      if (!(w == std::floor(w) && std::fabs(w) < 1e6)) return std::nullopt;  // (counts only)
-      weight[f] = sign * static_cast<int64_t>(w) * kUnit;
-    }
-  }
+  bool counts = true;
+  for (uint32_t v = 0; v < n; ++v)
+    for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f)
+      terms_of(v, f, [&](double w) {
+        if (integral && !(w == std::floor(w) && std::fabs(w) < 1e6)) counts = false;
+        else weight[f] += units(w) * kUnit;
+      });
+  if (!counts) return std::nullopt;
 
   // Block coordinate descent on the multipliers (MPLP, Globerson and Jaakkola
   // 2007, with a triangle's corners as the block): each live corner's best fan
@@ -145,12 +173,17 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     return total;
   };
   const double target = static_cast<double>(sign) * incumbent;
+  // What the relaxation proves of sign * value: counts are integers (the
+  // floor), lengths the ceiling in their units.
+  auto relaxed = [&](int64_t total) {
+    return integral ? static_cast<double>(floor_div(total, kUnit)) : static_cast<double>(-floor_div(-total, kUnit)) / scale;
+  };
   int64_t best = bound_now();
   std::vector<int64_t> best_lambda = limits.decode ? lambda : std::vector<int64_t>();  // (the multipliers of `best`)
   constexpr double kCap = double(int64_t{1} << 32);  // (a corner every fan takes: its margin is capped)
   std::vector<std::pair<uint32_t, double>> block;  // (corner, margin)
   uint32_t stale = 0;
-  for (uint32_t sweep = 0; sweep < limits.iterations && static_cast<double>(floor_div(best, kUnit)) > target; ++sweep) {
+  for (uint32_t sweep = 0; sweep < limits.iterations && relaxed(best) > target; ++sweep) {
     for (size_t tri = 0; tri < tris.size(); ++tri) {
       block.clear();
       for (uint32_t c = static_cast<uint32_t>(3 * tri); c < 3 * tri + 3; ++c)
@@ -177,9 +210,9 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     best = std::min(best, now);
     if (stale >= limits.patience) break;  // (sweeps that gain less than half a unit: the fixed point is near)
   }
-  out.bound = static_cast<double>(sign * floor_div(best, kUnit));
+  out.bound = static_cast<double>(sign) * relaxed(best);
   // A gap left: a triangulation from the fans best under the multipliers.
-  if (limits.decode && out.left_out == 0 && static_cast<double>(floor_div(best, kUnit)) > target) {
+  if (limits.decode && out.left_out == 0 && relaxed(best) > target) {
     std::vector<int64_t> value(t.leaf.size());
     for (uint64_t f = 0; f < t.leaf.size(); ++f) {
       value[f] = weight[f];
