@@ -59,9 +59,10 @@ struct StarBound {
   std::shared_ptr<const StarDecoder> decoder;  // (decode, a gap left, no vertex left out)
 };
 
-// Counts only: terms summed, integers, at vertices (not vertex pairs) or
-// interior edges, and no domain; nothing otherwise, or when too many vertices
-// were left out. incumbent: the value of a
+// Counts (terms summed, integers, at vertices, not vertex pairs, or at
+// interior edges) and minimised lengths over every edge (in fixed point, each
+// rounded down: the bound is then not an integer), no domain; nothing
+// otherwise, or when too many vertices were left out. incumbent: the value of a
 // triangulation at hand (the steps aim at it; they stop once it is proven).
 std::optional<StarBound> star_bound(const Mesh& delaunay, Objective o, const Candidates& candidates, double incumbent,
                                     const StarBoundLimits& limits = {});
