@@ -519,6 +519,17 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
       how += ", bound by thresholds over the regions' fill graphs";
     }
   }
+  // Min-max: every vertex takes one of its fans, each fan's worst term bounds
+  // (the volcano at k = 8, where one region holds everything: vertex normal angle
+  // bound 0 before).
+  if (description.combine == TermCombine::Max && better(sense, bound, r.value)) {
+    StarBoundLimits stars;
+    stars.progress = options.progress;
+    if (const auto f = star_floor(dt, o, cand, stars); f && better(sense, bound, *f)) {
+      bound = *f;
+      how += ", bound from the vertices' fans";
+    }
+  }
   if (provable && better(sense, bound, r.value)) {
     if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, options.progress)) {
       if (r.optimal) return r;

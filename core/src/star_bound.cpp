@@ -226,3 +226,76 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
 }
 
 }  // namespace hodt
+
+namespace hodt {
+
+std::optional<double> star_floor(const Mesh& dt, Objective o, const Candidates& cand, const StarBoundLimits& limits) {
+  const ObjectiveTerms& d = objective_terms(o, dt);
+  if (d.combine != TermCombine::Max || info(o).sense != Sense::Min || has_domain(dt)) return std::nullopt;
+  const uint32_t n = dt.num_vertices();
+  std::vector<std::vector<uint32_t>> around(n);
+  for (const auto& [key, apexes] : cand)
+    if (!apexes.empty()) around[static_cast<uint32_t>(key >> 32)].push_back(static_cast<uint32_t>(key));
+  for (auto& a : around) std::sort(a.begin(), a.end()), a.erase(std::unique(a.begin(), a.end()), a.end());
+  std::vector<int64_t> hull_at(n, -1);
+  for (size_t i = 0; i < dt.hull.size(); ++i) hull_at[dt.hull[i]] = static_cast<int64_t>(i);
+  double floor = 0;
+  std::vector<uint32_t> ring, nb;
+  std::vector<Tri> tris;
+  for (uint32_t v = 0; v < n; ++v) {
+    // One vertex's fans at a time: the trees need not outlive it.
+    FanTrees t;
+    FanLister lister(dt, cand, t);
+    const bool cyclic = hull_at[v] < 0;
+    bool listed;
+    if (cyclic) {
+      listed = lister.list(v, around[v], true, 0, limits.max_nodes_per_vertex);
+    } else {
+      const size_t h = dt.hull.size(), i = static_cast<size_t>(hull_at[v]);
+      listed = lister.list(v, {dt.hull[(i + 1) % h]}, false, dt.hull[(i + h - 1) % h], limits.max_nodes_per_vertex);
+    }
+    if (!listed || t.leaf.empty()) continue;  // (a vertex not listed says nothing)
+    // Its least fan: the worst term each fan holds, the least over fans, with
+    // terms at most the floor cut short (they cannot raise it).
+    double least = INFINITY;
+    for (uint64_t f = 0; f < t.leaf.size() && least > floor; ++f) {
+      ring.clear();
+      for (uint64_t x = t.leaf[f]; x != kNoFanNode; x = t.parent[x]) ring.push_back(t.neighbor[x]);
+      std::reverse(ring.begin(), ring.end());
+      if (cyclic) ring.pop_back();
+      const size_t m = ring.size(), last = cyclic ? m : m - 1;
+      double worst = 0;
+      tris.clear();
+      for (size_t j = 0; j < last; ++j) tris.push_back(Tri{v, ring[j], ring[(j + 1) % m]});
+      switch (d.site) {
+        case TermSite::InteriorVertex:
+          if (!cyclic) break;
+          [[fallthrough]];
+        case TermSite::Vertex:
+        case TermSite::VertexPair:
+          nb = ring;
+          std::sort(nb.begin(), nb.end());
+          worst = vertex_term(d, dt, Star(v, nb, tris), floor);
+          break;
+        case TermSite::Triangle:
+          for (const Tri& tri : tris) worst = std::max(worst, triangle_term(d, dt, tri));
+          break;
+        default:  // (edge sites: the edges at v, with both apexes inside the fan)
+          for (size_t j = 0; j < m; ++j) {
+            const bool inner = cyclic || (j > 0 && j + 1 < m);
+            if (!inner && d.site != TermSite::Edge) continue;
+            const uint32_t left = cyclic || j + 1 < m ? ring[(j + 1) % m] : kNoApex;
+            const uint32_t right = cyclic || j > 0 ? ring[(j + m - 1) % m] : kNoApex;
+            worst = std::max(worst, left == kNoApex ? edge_term(d, dt, ring[j], v, right, kNoApex, floor)
+                                                    : edge_term(d, dt, v, ring[j], left, right, floor));
+          }
+      }
+      least = std::min(least, worst);
+    }
+    if (least > floor && std::isfinite(least)) floor = least;
+    if (limits.progress && v % 4096 == 0 && !limits.progress(v, n)) throw Cancelled();
+  }
+  return floor;
+}
+
+}  // namespace hodt

@@ -146,3 +146,34 @@ TEST_CASE("star decode: a DEM at k = 8, every sweep a k-OD triangulation") {
     }
   }
 }
+
+// The min-max floor from the fans: every vertex takes one of its fans, so no
+// triangulation's max is below the worst vertex's best fan.
+TEST_CASE("star floor: min-max objectives, never past the brute-force optimum (k = 1 to 4)") {
+  int runs = 0, tight = 0;
+  for (uint32_t k : {1u, 2u, 3u, 4u})
+    for (uint64_t seed = 1; seed <= 40; ++seed) {
+      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 29 + k, 1)).xyz));
+      const KOrderStructure structure(fo.base, k, {});
+      for (const auto& oi : objectives()) {
+        StarBoundLimits limits;
+        if (seed % 4 == 0) limits.max_nodes_per_vertex = 1 + seed % 5;  // (some vertices say nothing)
+        const auto f = star_floor(fo.base, oi.objective, structure.candidates, limits);
+        if (objective_terms(oi.objective, fo.base).combine != TermCombine::Max) {
+          CHECK(!f);
+          continue;
+        }
+        REQUIRE(f);
+        const double want = brute_force_value(fo, oi.objective, k);
+        CAPTURE(k);
+        CAPTURE(seed);
+        CAPTURE(std::string(oi.id));
+        CHECK(*f <= want);
+        ++runs;
+        tight += *f == want;
+      }
+    }
+  MESSAGE(runs << " floors, " << tight << " equal to the optimum");
+  CHECK(runs > 800);
+  CHECK(tight > runs / 10);
+}

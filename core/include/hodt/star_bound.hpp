@@ -67,4 +67,12 @@ struct StarBound {
 std::optional<StarBound> star_bound(const Mesh& delaunay, Objective o, const Candidates& candidates, double incumbent,
                                     const StarBoundLimits& limits = {});
 
+// Min-max objectives: every vertex has one of its fans, so the optimum is at
+// least, over the vertices, the least over each one's fans of the worst term
+// the fan holds (terms within one star: the vertex's own, its triangles, its
+// edges with both their triangles, pairs of its triangles). Vertices whose
+// fans are over max_nodes_per_vertex say nothing. Nothing for other objectives.
+std::optional<double> star_floor(const Mesh& delaunay, Objective o, const Candidates& candidates,
+                                 const StarBoundLimits& limits = {});
+
 }  // namespace hodt
