@@ -23,8 +23,8 @@
 #include "hodt/solve.hpp"
 #include "hodt/solve_options.hpp"
 #include "hodt/star_bound.hpp"
-#include "hodt/view_bound.hpp"
 #include "hodt/star_decode.hpp"
+#include "hodt/view_bound.hpp"
 
 namespace hodt {
 
@@ -553,9 +553,8 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     // 8020 so, for a bound of 8047). Sweeps four ways, then repairs of the best
     // at hand while they improve it.
     bool decoded = false;
-    auto adopt = [&](const std::optional<std::vector<Tri>>& tris) {
-      if (!tris) return false;
-      Mesh m = mesh_of(dt.coords, *tris);
+    auto adopt = [&](const std::vector<Tri>& tris) {
+      Mesh m = mesh_of(dt.coords, tris);
       improve_by_flips(m, dt, k, o, options.progress);
       const double v = evaluate(o, m);
       if (!better(sense, v, r.value)) return false;
@@ -563,9 +562,10 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
       return true;
     };
     if (b && b->decoder) {
-      const double axes[4][2] = {{1, 0.001}, {-1, -0.001}, {0.001, 1}, {-0.001, -1}};
-      for (const auto& axis : axes) adopt(b->decoder->sweep(axis));
-      for (int round = 0; round < 8 && better(sense, bound, r.value) && adopt(b->decoder->repair(r.triangulation)); ++round) {
+      for (const std::vector<Tri>& tris : b->decoder->sweeps()) adopt(tris);
+      for (int round = 0; round < 8 && better(sense, bound, r.value); ++round) {
+        const auto repaired = b->decoder->repair(r.triangulation);
+        if (!repaired || !adopt(*repaired)) break;
       }
     }
     if (decoded) how += ", then a triangulation read off the stars";

@@ -3,15 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <unordered_map>
-#include <unordered_set>
 
 #include "hodt/domain.hpp"
 #include "hodt/error.hpp"
-#include "hodt/objective_terms.hpp"
-#include "hodt/predicates.hpp"
-#include "hodt/words_hash.hpp"
 #include "hodt/fan_trees.hpp"
+#include "hodt/objective_terms.hpp"
 #include "hodt/star_decode.hpp"
 
 namespace hodt {
@@ -37,12 +33,6 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
       !(integral ? at_vertices || d.site == TermSite::InteriorEdge : lengths))
     return std::nullopt;
   const uint32_t n = dt.num_vertices();
-  std::vector<std::vector<uint32_t>> around(n);  // useful neighbours (the candidates' edges)
-  for (const auto& [key, apexes] : cand)
-    if (!apexes.empty()) around[static_cast<uint32_t>(key >> 32)].push_back(static_cast<uint32_t>(key));
-  for (auto& a : around) std::sort(a.begin(), a.end()), a.erase(std::unique(a.begin(), a.end()), a.end());
-  std::vector<int64_t> hull_at(n, -1);
-  for (size_t i = 0; i < dt.hull.size(); ++i) hull_at[dt.hull[i]] = static_cast<int64_t>(i);
 
   // The fans.
   FanTrees t;
@@ -52,13 +42,7 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   for (uint32_t v = 0; v < n; ++v) {
     t.first_node.push_back(t.corner.size()), t.first_leaf.push_back(t.leaf.size());
     const uint64_t room = std::min(limits.max_nodes_per_vertex, limits.max_nodes - std::min<uint64_t>(limits.max_nodes, t.corner.size()));
-    if (hull_at[v] < 0) {
-      in[v] = lister.list(v, around[v], true, 0, room);
-    } else {  // (from the next hull vertex round to the previous: the other way is outside)
-      const size_t h = dt.hull.size(), i = static_cast<size_t>(hull_at[v]);
-      in[v] = lister.list(v, {dt.hull[(i + 1) % h]}, false, dt.hull[(i + h - 1) % h], room);
-    }
-    in[v] = in[v] && t.leaf.size() > t.first_leaf.back();
+    in[v] = lister.list(v, room);
     if (!in[v]) t.truncate(t.first_node.back(), t.first_leaf.back());
     out.left_out += !in[v];
     if (limits.progress && v % 4096 == 0 && !limits.progress(v, 2.0 * n)) throw Cancelled();
@@ -76,11 +60,8 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   std::vector<uint32_t> seq, nb;
   const std::vector<Tri> no_triangles;
   auto terms_of = [&](uint32_t v, uint64_t f, const auto& take) {
-    const bool cyclic = hull_at[v] < 0;
-    seq.clear();
-    for (uint64_t x = t.leaf[f]; x != kNoFanNode; x = t.parent[x]) seq.push_back(t.neighbor[x]);
-    std::reverse(seq.begin(), seq.end());
-    if (cyclic) seq.pop_back();  // (the first neighbour, closing the cycle)
+    const bool cyclic = lister.interior(v);
+    t.ring(f, cyclic, seq);
     const size_t m = seq.size();
     if (at_vertices) {
       if (d.site == TermSite::Vertex || cyclic) {
@@ -116,10 +97,10 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
       constant += units(edge_term(d, dt, dt.hull[i], dt.hull[(i + 1) % dt.hull.size()], kNoApex, kNoApex)) * kUnit;
   if (at_vertices) {
     for (uint32_t v = 0; v < n; ++v)
-      if (!in[v] && (d.site == TermSite::Vertex || hull_at[v] < 0)) constant += best_term * kUnit;
+      if (!in[v] && (d.site == TermSite::Vertex || lister.interior(v))) constant += best_term * kUnit;
   } else {
     for (uint32_t v = 0; v < n; ++v)
-      for (const uint32_t u : around[v])
+      for (const uint32_t u : lister.around(v))
         if (v < u && owner(v, u) == kNoFanNode) constant += best_term * kUnit;
   }
   std::vector<int64_t> weight(t.leaf.size());
@@ -225,44 +206,26 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   return out;
 }
 
-}  // namespace hodt
-
-namespace hodt {
 
 std::optional<double> star_floor(const Mesh& dt, Objective o, const Candidates& cand, const StarBoundLimits& limits) {
   const ObjectiveTerms& d = objective_terms(o, dt);
   if (d.combine != TermCombine::Max || info(o).sense != Sense::Min || has_domain(dt)) return std::nullopt;
   const uint32_t n = dt.num_vertices();
-  std::vector<std::vector<uint32_t>> around(n);
-  for (const auto& [key, apexes] : cand)
-    if (!apexes.empty()) around[static_cast<uint32_t>(key >> 32)].push_back(static_cast<uint32_t>(key));
-  for (auto& a : around) std::sort(a.begin(), a.end()), a.erase(std::unique(a.begin(), a.end()), a.end());
-  std::vector<int64_t> hull_at(n, -1);
-  for (size_t i = 0; i < dt.hull.size(); ++i) hull_at[dt.hull[i]] = static_cast<int64_t>(i);
   double floor = 0;
   std::vector<uint32_t> ring, nb;
   std::vector<Tri> tris;
+  FanTrees t;
+  FanLister lister(dt, cand, t);
   for (uint32_t v = 0; v < n; ++v) {
     // One vertex's fans at a time: the trees need not outlive it.
-    FanTrees t;
-    FanLister lister(dt, cand, t);
-    const bool cyclic = hull_at[v] < 0;
-    bool listed;
-    if (cyclic) {
-      listed = lister.list(v, around[v], true, 0, limits.max_nodes_per_vertex);
-    } else {
-      const size_t h = dt.hull.size(), i = static_cast<size_t>(hull_at[v]);
-      listed = lister.list(v, {dt.hull[(i + 1) % h]}, false, dt.hull[(i + h - 1) % h], limits.max_nodes_per_vertex);
-    }
-    if (!listed || t.leaf.empty()) continue;  // (a vertex not listed says nothing)
+    t.truncate(0, 0);
+    if (!lister.list(v, limits.max_nodes_per_vertex)) continue;  // (a vertex not listed says nothing)
+    const bool cyclic = lister.interior(v);
     // Its least fan: the worst term each fan holds, the least over fans, with
     // terms at most the floor cut short (they cannot raise it).
     double least = INFINITY;
     for (uint64_t f = 0; f < t.leaf.size() && least > floor; ++f) {
-      ring.clear();
-      for (uint64_t x = t.leaf[f]; x != kNoFanNode; x = t.parent[x]) ring.push_back(t.neighbor[x]);
-      std::reverse(ring.begin(), ring.end());
-      if (cyclic) ring.pop_back();
+      t.ring(f, cyclic, ring);
       const size_t m = ring.size(), last = cyclic ? m : m - 1;
       double worst = 0;
       tris.clear();

@@ -24,10 +24,7 @@ class Fans {
   // The neighbours of fan f of v in counterclockwise order (a cycle at an
   // interior vertex: the first is not repeated).
   const std::vector<uint32_t>& ring(uint32_t v, uint64_t f) {
-    ring_.clear();
-    for (uint64_t x = t_.leaf[f]; x != kNoFanNode; x = t_.parent[x]) ring_.push_back(t_.neighbor[x]);
-    std::reverse(ring_.begin(), ring_.end());
-    if (!hull_[v]) ring_.pop_back();
+    t_.ring(f, !hull_[v], ring_);
     return ring_;
   }
   Edge edge(uint32_t v, uint64_t f, uint32_t u) {
@@ -47,13 +44,22 @@ class Fans {
   std::vector<uint32_t> ring_;
 };
 
+// The sweeps' directions (off the axes a little: rows and columns of a grid
+// are then visited in one order).
+constexpr double kAxes[4][2] = {{1, 0.001}, {-1, -0.001}, {0.001, 1}, {-0.001, -1}};
+
 }  // namespace
 
 StarDecoder::StarDecoder(const Mesh& dt, FanTrees trees, std::vector<Tri> triangles, std::vector<int64_t> value,
                          uint64_t max_steps)
     : dt_(dt), t_(std::move(trees)), tris_(std::move(triangles)), value_(std::move(value)), max_steps_(max_steps) {}
 
-std::optional<std::vector<Tri>> StarDecoder::sweep(const double axis[2]) const { return search(value_, axis); }
+std::vector<std::vector<Tri>> StarDecoder::sweeps() const {
+  std::vector<std::vector<Tri>> out;
+  for (const auto& axis : kAxes)
+    if (auto tris = search(value_, axis)) out.push_back(std::move(*tris));
+  return out;
+}
 
 std::optional<std::vector<Tri>> StarDecoder::repair(const Mesh& start) const {
   std::unordered_set<Tri, WordsHash> kept;
@@ -67,8 +73,7 @@ std::optional<std::vector<Tri>> StarDecoder::repair(const Mesh& start) const {
       all = t_.corner[x] == kNoFanNode || in_start[t_.corner[x] / 3];
     value[f] = 2 * value_[f] + all;  // (exact: values are far below 2^62)
   }
-  const double along_x[2] = {1, 0.001};
-  return search(value, along_x);
+  return search(value, kAxes[0]);
 }
 
 std::optional<std::vector<Tri>> StarDecoder::search(const std::vector<int64_t>& value, const double axis[2]) const {

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "generators.hpp"
+#include "k_order_reference.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/dual_bound.hpp"
 #include "hodt/error.hpp"
@@ -196,9 +197,7 @@ TEST_CASE("dual proof over the order-k model: what it proves is the brute-force 
       for (const auto& oi : objectives()) {
         const RegionEngine engine(dt, oi.objective, structure, k, RegionLimits{}, {});
         if (engine.R.incomplete || !integral_sum(engine.model.graph)) continue;
-        SolveOptions bf;
-        bf.method = Method::BruteForce;
-        const double want = solve_k_order(fo, oi.objective, k, bf).value;
+        const double want = k_order_brute_force(fo, oi.objective, k).value;
         // The incumbent: Delaunay's regions; short ascents and a DP allowed
         // almost nothing, so the pruning and the rounds do the work.
         const RegionModel& model = engine.model;

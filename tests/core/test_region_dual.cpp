@@ -8,6 +8,7 @@
 #include <map>
 
 #include "generators.hpp"
+#include "k_order_reference.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/fill_graph.hpp"
 #include "hodt/glue_regions.hpp"
@@ -108,9 +109,7 @@ TEST_CASE("region dual: regions read through their graphs never take the bound p
         RegionEngine engine(dt, oi.objective, structure, k, RegionLimits{}, {});
         if (!integral_sum(engine.model.graph) || engine.R.incomplete || engine.model.graph.relaxed_terms) continue;
         if (!forget_lists(engine.R)) continue;
-        SolveOptions bf;
-        bf.method = Method::BruteForce;
-        const double want = solve_k_order(fo, oi.objective, k, bf).value;
+        const double want = k_order_brute_force(fo, oi.objective, k).value;
         RegionDualLimits limits;
         limits.dual.max_sweeps = seed % 3 ? 1 + seed % 50 : 1;  // (short ascents: the pruning and the DP do the work)
         limits.dual.cluster_entries = seed % 2 ? 1.0 : 4096.0;
@@ -181,9 +180,7 @@ TEST_CASE("region threshold bound: min-max objectives over regions read through 
         RegionEngine engine(dt, oi.objective, structure, k, RegionLimits{}, {});
         if (engine.terms.terms().combine != TermCombine::Max || engine.R.incomplete) continue;
         if (!forget_lists(engine.R)) continue;
-        SolveOptions bf;
-        bf.method = Method::BruteForce;
-        const double want = solve_k_order(fo, oi.objective, k, bf).value;
+        const double want = k_order_brute_force(fo, oi.objective, k).value;
         const double delaunay_value = evaluate(oi.objective, dt);
         RegionDualLimits limits;
         limits.dual.max_sweeps = 1 + seed % 100;
@@ -253,9 +250,7 @@ TEST_CASE("glued regions: the same k-OD triangulations, and a dual over them nev
         Regions forgotten = R;
         if (!forget_lists(forgotten)) continue;
         const RegionTerms forgotten_terms(dt, forgotten, oi.objective, &structure.candidates);
-        SolveOptions bf;
-        bf.method = Method::BruteForce;
-        const double want = solve_k_order(fo, oi.objective, k, bf, 20'000'000).value;
+        const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
         RegionDualLimits limits;
         limits.dual.max_sweeps = 1 + seed % 60;
         const RegionDual d = region_dual(dt, forgotten, oi.objective, structure.candidates, forgotten_terms, &dt, limits);

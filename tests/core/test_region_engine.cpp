@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "generators.hpp"
+#include "k_order_reference.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/higher_order.hpp"
@@ -81,11 +82,9 @@ TEST_CASE("exact at order k equals brute force for every objective (k = 2, 3, 4)
     for (uint64_t seed = 1; seed <= 300; ++seed) {
       const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 7 + k, 1)).xyz));
       for (const auto& oi : objectives()) {
-        SolveOptions bf;
-        bf.method = Method::BruteForce;
         SolveOptions ex;
         ex.method = Method::Exact;
-        const KOrderResult want = solve_k_order(fo, oi.objective, k, bf);
+        const KOrderResult want = k_order_brute_force(fo, oi.objective, k);
         const KOrderResult got = solve_k_order(fo, oi.objective, k, ex);
         CAPTURE(seed);
         CAPTURE(oi.id);
@@ -109,9 +108,7 @@ TEST_CASE("grids of non-square cells: every region at order k a quad, solved as 
     const FirstOrder fo = first_order(delaunay(validate_points(p).xyz));
     for (uint32_t k : {2u, 3u}) {
       for (const auto& oi : objectives()) {
-        SolveOptions bf;
-        bf.method = Method::BruteForce;
-        const KOrderResult want = solve_k_order(fo, oi.objective, k, bf);
+        const KOrderResult want = k_order_brute_force(fo, oi.objective, k);
         for (const Method m : {Method::Exact, Method::Auto}) {
           SolveOptions ex;
           ex.method = m;

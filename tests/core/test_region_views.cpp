@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "generators.hpp"
+#include "k_order_reference.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/k_order.hpp"
 #include "hodt/points.hpp"
@@ -52,9 +53,7 @@ TEST_CASE("region views: one view per region is exact, smaller groups bound the 
       const Regions R = k_order_skeleton(dt, k);
       const Candidates cand = k_order_candidates(dt, k, R.useful);
       for (const auto& oi : objectives()) {
-        SolveOptions bf;
-        bf.method = Method::BruteForce;
-        const double opt = solve_k_order(fo, oi.objective, k, bf).value;
+        const double opt = k_order_brute_force(fo, oi.objective, k).value;
         const RegionTerms T(dt, R, oi.objective, &cand);
         CAPTURE(seed);
         CAPTURE(k);
@@ -97,9 +96,7 @@ TEST_CASE("view bound: regions left incomplete are bounded through views, and a 
         vl.views.max_listed = 50;
         const auto vb = view_bound(dt, R, oi.objective, cand, T, 64, {}, vl);
         if (!vb) continue;
-        SolveOptions bf;
-        bf.method = Method::BruteForce;
-        const double opt = solve_k_order(fo, oi.objective, k, bf).value;
+        const double opt = k_order_brute_force(fo, oi.objective, k).value;
         CAPTURE(seed);
         CAPTURE(k);
         CAPTURE(std::string(oi.id));

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include "generators.hpp"
+#include "k_order_reference.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/higher_order.hpp"
 #include "hodt/k_order.hpp"
@@ -16,13 +17,6 @@
 using namespace hodt;
 using namespace hodt::test;
 
-namespace {
-double brute_force_value(const FirstOrder& fo, Objective o, uint32_t k) {
-  SolveOptions bf;
-  bf.method = Method::BruteForce;
-  return solve_k_order(fo, o, k, bf, 20'000'000).value;
-}
-}  // namespace
 
 TEST_CASE("star bound: never past the brute-force optimum (k = 1 to 4), with fans left out too") {
   int runs = 0, tight = 0, partial = 0;
@@ -38,7 +32,7 @@ TEST_CASE("star bound: never past the brute-force optimum (k = 1 to 4), with fan
         if (seed % 4 == 0) limits.max_nodes_per_vertex = 1 + seed % 7, limits.max_left_out = 1;  // (some vertices left out)
         const auto b = star_bound(dt, oi.objective, structure.candidates, delaunay_value, limits);
         if (!b) continue;
-        const double want = brute_force_value(fo, oi.objective, k);
+        const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
         CAPTURE(k);
         CAPTURE(seed);
         CAPTURE(std::string(oi.id));
@@ -56,7 +50,7 @@ TEST_CASE("star bound: never past the brute-force optimum (k = 1 to 4), with fan
   CHECK(partial > 50);
 }
 
-TEST_CASE("star bound: counts only; a triangulation's value is never past it on a large instance") {
+TEST_CASE("star bound: sums only (counts, lengths); a triangulation's value is never past it on a large instance") {
   const FirstOrder fo = first_order(delaunay(validate_points(dem_points(300, 5)).xyz));
   const KOrderStructure structure(fo.base, 6, {});
   int applied = 0;
@@ -98,13 +92,10 @@ TEST_CASE("star decode: k-OD triangulations, never past the optimum, mostly at i
         if (!b) continue;
         ++runs;
         if (!b->decoder) continue;
-        std::vector<std::vector<Tri>> found;
-        const double ax[2][2] = {{1, 0.001}, {-0.001, -1}};
-        for (const auto& axis : ax)
-          if (auto d = b->decoder->sweep(axis)) found.push_back(std::move(*d));
+        std::vector<std::vector<Tri>> found = b->decoder->sweeps();
         if (auto d = b->decoder->repair(dt)) found.push_back(std::move(*d));
         if (found.empty()) continue;
-        const double want = brute_force_value(fo, oi.objective, k);
+        const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
         CAPTURE(k);
         CAPTURE(seed);
         CAPTURE(std::string(oi.id));
@@ -134,10 +125,7 @@ TEST_CASE("star decode: a DEM at k = 8, every sweep a k-OD triangulation") {
     const auto b = star_bound(fo.base, o, structure.candidates, evaluate(o, fo.base), limits);
     REQUIRE(b);
     REQUIRE(b->decoder);
-    const double ax[4][2] = {{1, 0.001}, {-1, -0.001}, {0.001, 1}, {-0.001, -1}};
-    std::vector<std::vector<Tri>> found;
-    for (const auto& axis : ax)
-      if (auto d = b->decoder->sweep(axis)) found.push_back(std::move(*d));
+    const std::vector<std::vector<Tri>> found = b->decoder->sweeps();
     CHECK(!found.empty());
     for (const std::vector<Tri>& tris : found) {
       const Mesh m = mesh_of(fo.base.coords, tris);
@@ -164,7 +152,7 @@ TEST_CASE("star floor: min-max objectives, never past the brute-force optimum (k
           continue;
         }
         REQUIRE(f);
-        const double want = brute_force_value(fo, oi.objective, k);
+        const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
         CAPTURE(k);
         CAPTURE(seed);
         CAPTURE(std::string(oi.id));

@@ -1,6 +1,7 @@
 // Every fan a vertex can have at order k, as prefix trees (star_bound.hpp):
 // shared by the bound and by the decoding of a triangulation from it.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -24,17 +25,57 @@ struct FanTrees {
   void truncate(uint64_t nodes, uint64_t leaves) {
     corner.resize(nodes), neighbor.resize(nodes), parent.resize(nodes), leaf.resize(leaves);
   }
+  // Fan f's neighbours in counterclockwise order (cyclic: round an interior
+  // vertex, the first not repeated).
+  void ring(uint64_t f, bool cyclic, std::vector<uint32_t>& out) const {
+    out.clear();
+    for (uint64_t x = leaf[f]; x != kNoFanNode; x = parent[x]) out.push_back(neighbor[x]);
+    std::reverse(out.begin(), out.end());
+    if (cyclic) out.pop_back();
+  }
 };
 
 // Lists fans by depth-first search over the candidate triangles at v, in
 // counterclockwise order.
 class FanLister {
  public:
-  FanLister(const Mesh& dt, const Candidates& cand, FanTrees& t) : dt_(dt), cand_(cand), t_(t) {}
+  FanLister(const Mesh& dt, const Candidates& cand, FanTrees& t)
+      : dt_(dt), cand_(cand), t_(t), around_(dt.num_vertices()), hull_at_(dt.num_vertices(), -1) {
+    for (const auto& [key, apexes] : cand)
+      if (!apexes.empty()) around_[static_cast<uint32_t>(key >> 32)].push_back(static_cast<uint32_t>(key));
+    for (auto& a : around_) std::sort(a.begin(), a.end()), a.erase(std::unique(a.begin(), a.end()), a.end());
+    for (size_t i = 0; i < dt.hull.size(); ++i) hull_at_[dt.hull[i]] = static_cast<int64_t>(i);
+  }
 
-  // Around an interior vertex each fan from its smallest neighbour (of
-  // `starts`), once round; at a hull vertex from hull neighbour `from` round
-  // to `to`. False when over the budget of nodes (nothing is kept of v then).
+  // Every fan of v, appended to the trees: around an interior vertex each from
+  // its smallest neighbour, once round; at a hull vertex from the next hull
+  // vertex round to the previous (the other way is outside). False when over
+  // the budget of nodes, or when v has no fan (nothing is kept of v then).
+  bool list(uint32_t v, uint64_t budget) {
+    const uint64_t leaves = t_.leaf.size();
+    if (interior(v)) return list(v, around_[v], true, 0, budget) && t_.leaf.size() > leaves;
+    const size_t h = dt_.hull.size(), i = static_cast<size_t>(hull_at_[v]);
+    return list(v, {dt_.hull[(i + 1) % h]}, false, dt_.hull[(i + h - 1) % h], budget) && t_.leaf.size() > leaves;
+  }
+  bool interior(uint32_t v) const { return hull_at_[v] < 0; }
+  // The useful neighbours of v (the candidates' edges), sorted.
+  const std::vector<uint32_t>& around(uint32_t v) const { return around_[v]; }
+  const std::vector<Tri>& triangles() const { return tris_; }
+
+ private:
+  const Mesh& dt_;
+  const Candidates& cand_;
+  FanTrees& t_;
+  std::vector<std::vector<uint32_t>> around_;
+  std::vector<int64_t> hull_at_;
+  std::unordered_map<Tri, uint32_t, WordsHash> ids_;
+  std::vector<Tri> tris_;  // by id
+  uint64_t limit_ = 0;
+  uint32_t v_ = 0, start_ = 0, end_ = 0;
+  bool cyclic_ = true;
+
+  // Each fan from one of `starts`, once round (cyclic), else from the one start
+  // round to `to`.
   bool list(uint32_t v, const std::vector<uint32_t>& starts, bool cyclic, uint32_t to, uint64_t budget) {
     const uint64_t nodes = t_.corner.size(), leaves = t_.leaf.size();
     limit_ = nodes + budget, v_ = v, cyclic_ = cyclic;
@@ -49,18 +90,6 @@ class FanLister {
     }
     return true;
   }
-  const std::vector<Tri>& triangles() const { return tris_; }
-
- private:
-  const Mesh& dt_;
-  const Candidates& cand_;
-  FanTrees& t_;
-  std::unordered_map<Tri, uint32_t, WordsHash> ids_;
-  std::vector<Tri> tris_;  // by id
-  uint64_t limit_ = 0;
-  uint32_t v_ = 0, start_ = 0, end_ = 0;
-  bool cyclic_ = true;
-
   uint64_t push(uint32_t corner, uint64_t parent, uint32_t w) {
     t_.corner.push_back(corner), t_.parent.push_back(static_cast<uint32_t>(parent)), t_.neighbor.push_back(w);
     return t_.corner.size() - 1;

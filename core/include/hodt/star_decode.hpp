@@ -26,8 +26,10 @@ class StarDecoder {
  public:
   StarDecoder(const Mesh& delaunay, FanTrees trees, std::vector<Tri> triangles, std::vector<int64_t> value,
               uint64_t max_steps);
-  std::optional<std::vector<Tri>> sweep(const double axis[2]) const;
-  // The same along x with ties going to the fans of `start` (a repair of it:
+  // One search per sweep direction (four: each leaves other disagreements
+  // to the end), the triangulations found.
+  std::vector<std::vector<Tri>> sweeps() const;
+  // The first sweep with ties going to the fans of `start` (a repair of it:
   // its fans stay wherever the multipliers do not prefer another).
   std::optional<std::vector<Tri>> repair(const Mesh& start) const;
 
