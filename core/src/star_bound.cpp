@@ -163,7 +163,6 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   std::vector<int64_t> best_lambda = limits.decode ? lambda : std::vector<int64_t>();  // (the multipliers of `best`)
   constexpr double kCap = double(int64_t{1} << 32);  // (a corner every fan takes: its margin is capped)
   std::vector<std::pair<uint32_t, double>> block;  // (corner, margin)
-  uint32_t stale = 0;
   for (uint32_t sweep = 0; sweep < limits.iterations && relaxed(best) > target; ++sweep) {
     for (size_t tri = 0; tri < tris.size(); ++tri) {
       block.clear();
@@ -186,10 +185,16 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     }
     const int64_t now = bound_now();
     if (limits.progress && !limits.progress(n + static_cast<double>(sweep + 1) * n / limits.iterations, 2.0 * n)) throw Cancelled();
-    stale = now < best - kUnit / 2 ? 0 : stale + 1;
+    const int64_t gained = best - now;
     if (now < best && limits.decode) best_lambda = lambda;
     best = std::min(best, now);
-    if (stale >= limits.patience) break;  // (sweeps that gain less than half a unit: the fixed point is near)
+    // Stop once the last sweep's gain, kept up for every sweep left, would not
+    // reach the next value the bound can prove (the next integer for counts,
+    // half a unit for lengths). The gains shrink slowly: on the volcano at
+    // k = 4, min-mixed-vertices, 74.27 after 8 sweeps (each gaining less than
+    // half a unit), 75.0 after 24, proving the 76 found.
+    const int64_t next = integral ? best - floor_div(best, kUnit) * kUnit + 1 : kUnit / 2;
+    if (gained * static_cast<int64_t>(limits.iterations - sweep - 1) < next) break;
   }
   out.bound = static_cast<double>(sign) * relaxed(best);
   // A gap left: a triangulation from the fans best under the multipliers.

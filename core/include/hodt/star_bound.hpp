@@ -41,10 +41,9 @@ struct StarBoundLimits {
   uint64_t max_nodes_per_vertex = 50'000;
   uint64_t max_nodes = 16'000'000;
   double max_left_out = 0.05;
-  // Sweeps over every triangle: at most this many, and none once `patience`
-  // sweeps in a row lowered the bound by less than half a unit.
+  // Sweeps over every triangle: at most this many, and none once the last
+  // sweep's gain, kept up for every sweep left, would not prove a better value.
   uint32_t iterations = 50;
-  uint32_t patience = 3;
   // A gap left: keep the fans and their values under the multipliers, to read
   // triangulations off them (StarDecoder), within this many fans tried per vertex.
   bool decode = false;
