@@ -43,12 +43,15 @@ async function ownDem(hodt) {
   return [`${path} (${xyz.length / 3} points${maxEdge ? `, maxEdge ${maxEdge}` : ''})`, xyz, maxEdge];
 }
 
-export async function runOrderK({ root, tmp, hodt, log, quick }) {
-  const sets = [['volcano DEM 87x61 (10 m grid, UTM-like)', volcano()], ['DEM sample, 10,000 points', demSample(10000)]];
-  const own = await ownDem(hodt);
+// only: which sets (volcano, sample, own; all by default), orders and objectives.
+export async function runOrderK({ root, tmp, hodt, log, quick, only = {} }) {
+  const sets = [];
+  if (!only.sets || only.sets.includes('volcano')) sets.push(['volcano DEM 87x61 (10 m grid, UTM-like)', volcano()]);
+  if (!only.sets || only.sets.includes('sample')) sets.push(['DEM sample, 10,000 points', demSample(10000)]);
+  const own = !only.sets || only.sets.includes('own') ? await ownDem(hodt) : null;
   if (own) sets.push(own);
   else log('\n(order k on a DEM of your own: HODT_BENCH_DEM=dem.tif npm run bench)');
-  const orders = quick ? [1, 2, 4] : [1, 2, 3, 4, 5, 6, 7, 8];
+  const orders = only.orders ?? (quick ? [1, 2, 4] : [1, 2, 3, 4, 5, 6, 7, 8]);
   const rows = [];
   for (const [name, xyz, maxEdge] of sets) {
     const file = join(tmp, `orderk-${rows.length}.txt`);
@@ -58,7 +61,7 @@ export async function runOrderK({ root, tmp, hodt, log, quick }) {
     const terrain = hodt.terrain(xyz, { dedupe: 'first', maxEdge: maxEdge ?? null });
     const extra = ['--dedupe', 'first', ...(maxEdge ? ['--max-edge', String(maxEdge)] : [])];
     log(`\norder k on ${name}: time native / wasm (ms), value, bound (null: proven optimal), Delaunay value`);
-    for (const objective of quick ? ['min-local-minima', 'minmax-edge-area-ratio', 'min-mixed-vertices'] : OBJECTIVES) {
+    for (const objective of only.objectives ?? (quick ? ['min-local-minima', 'minmax-edge-area-ratio', 'min-mixed-vertices'] : OBJECTIVES)) {
       for (const order of orders) {
         const t0 = performance.now();
         const r = spawnSync(`${root}/build/native/hodt`, ['solve', file, '--objective', objective, '--order', String(order), ...extra], { encoding: 'utf8', maxBuffer: 1 << 26 });
@@ -76,10 +79,26 @@ export async function runOrderK({ root, tmp, hodt, log, quick }) {
         }
         rows.push(row);
         const wasmMs = row.wasmMs === undefined ? '-' : row.wasmMs.toFixed(0);
-        log(`  k=${order} ${objective.padEnd(29)} ${nativeMs.toFixed(0).padStart(6)} / ${wasmMs.padStart(6)}  ${(row.method ?? 'error').padEnd(10)} value ${fmt(row.value).padEnd(12)} bound ${fmt(row.bound).padEnd(12)} Delaunay ${fmt(row.delaunayValue)}${row.error ? ` (${row.error})` : ''}`);
+        log(`  k=${order} ${objective.padEnd(29)} ${nativeMs.toFixed(0).padStart(6)} / ${wasmMs.padStart(6)}  ${(row.method ?? 'error').padEnd(10)} value ${fmt(row.value).padEnd(12)} bound ${fmt(row.bound).padEnd(12)} Delaunay ${fmt(row.delaunayValue)}${row.error ? ` (${row.error})` : ''}${row.wasmError ? ` (wasm: ${row.wasmError})` : row.wasmValue !== undefined && row.wasmValue !== row.value ? ` (wasm value ${fmt(row.wasmValue)})` : ''}`);
       }
     }
     terrain.dispose();
   }
   return rows;
+}
+
+// Alone, after a build: `node bench/order_k.mjs --sets=volcano,own --orders=1,2,3,4
+// --objectives=min-mixed-vertices` (each a comma list; all by default).
+if (process.argv[1] && import.meta.url === new URL(`file://${process.argv[1]}`).href) {
+  const { mkdtempSync, rmSync } = await import('node:fs');
+  const { tmpdir } = await import('node:os');
+  const { fileURLToPath } = await import('node:url');
+  const { loadHodt } = await import('../dist/index.js');
+  const arg = (name) => process.argv.find((a) => a.startsWith(`--${name}=`))?.slice(name.length + 3).split(',');
+  const tmp = mkdtempSync(join(tmpdir(), 'hodt-orderk-'));
+  await runOrderK({
+    root: fileURLToPath(new URL('..', import.meta.url)), tmp, hodt: await loadHodt(), log: console.log, quick: false,
+    only: { sets: arg('sets'), orders: arg('orders')?.map(Number), objectives: arg('objectives') },
+  });
+  rmSync(tmp, { recursive: true, force: true });
 }

@@ -8,6 +8,7 @@
 #include "hodt/domain.hpp"
 #include "hodt/dual_bound.hpp"
 #include "hodt/error.hpp"
+#include "hodt/fan_windows.hpp"
 #include "hodt/fill_enumerator.hpp"
 #include "hodt/fill_graph.hpp"
 #include "hodt/flip_search.hpp"
@@ -542,6 +543,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     StarBoundLimits stars;
     stars.progress = options.progress;
     stars.decode = true;
+    stars.known_bound = bound;
     const auto b = star_bound(dt, o, cand, r.value, stars);
     if (b && better(sense, bound, b->bound)) {
       bound = b->bound;
@@ -552,29 +554,35 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     // and descents reach (the volcano at k = 8, max-convex-edges: 6984 before,
     // 8020 so, for a bound of 8047). Sweeps four ways, then repairs of the best
     // at hand while they improve it.
-    bool decoded = false;
+    bool decoded = false, windowed = false;
     auto adopt = [&](const std::vector<Tri>& tris) {
       Mesh m = mesh_of(dt.coords, tris);
       improve_by_flips(m, dt, k, o, options.progress);
       const double v = evaluate(o, m);
       if (!better(sense, v, r.value)) return false;
-      r.triangulation = std::move(m), r.value = v, decoded = true;
+      r.triangulation = std::move(m), r.value = v;
       return true;
     };
     if (b && b->decoder) {
-      for (const std::vector<Tri>& tris : b->decoder->sweeps()) adopt(tris);
+      for (const std::vector<Tri>& tris : b->decoder->sweeps()) decoded = adopt(tris) || decoded;
       for (int round = 0; round < 8 && better(sense, bound, r.value); ++round) {
         const auto repaired = b->decoder->repair(r.triangulation);
         if (!repaired || !adopt(*repaired)) break;
-      }
-      // Windows of 25 vertices, each at its best with the rest kept (the
-      // volcano at k = 4, min-mixed-vertices: 77 -> 76, the bound).
-      for (int round = 0; round < 4 && better(sense, bound, r.value); ++round) {
-        const auto improved = b->decoder->improve(r.triangulation, 25, 100'000);
-        if (!improved || !adopt(*improved)) break;
+        decoded = true;
       }
     }
+    // Windows of 25 vertices, each at its best with the rest kept
+    // (fan_windows.hpp; the volcano at k = 4, min-mixed-vertices: 77 -> 76, the
+    // bound, in 0.5 s), while they improve it.
+    WindowLimits windows;
+    windows.progress = options.progress;
+    for (int round = 0; round < 4 && better(sense, bound, r.value); ++round) {
+      const auto improved = improve_by_windows(dt, o, cand, r.triangulation, windows);
+      if (!improved || !adopt(*improved)) break;
+      windowed = true;
+    }
     if (decoded) how += ", then a triangulation read off the stars";
+    if (windowed) how += ", then descent by windows of fans";
   }
   r.bound = sense == Sense::Min ? std::min(bound, r.value) : std::max(bound, r.value);
   r.optimal = *r.bound == r.value;

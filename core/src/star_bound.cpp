@@ -6,6 +6,7 @@
 
 #include "hodt/domain.hpp"
 #include "hodt/error.hpp"
+#include "hodt/fan_terms.hpp"
 #include "hodt/fan_trees.hpp"
 #include "hodt/objective_terms.hpp"
 #include "hodt/star_decode.hpp"
@@ -56,24 +57,12 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   const int64_t best_term = sign > 0 ? static_cast<int64_t>(d.term_max) : 0;
   int64_t constant = 0;  // (in units)
   auto owner = [&](uint32_t a, uint32_t b) { return in[a] && (!in[b] || a < b) ? a : in[b] ? b : kNoFanNode; };
-  // The terms of fan f of v, in order (an edge's, of the edges v owns).
-  std::vector<uint32_t> seq, nb;
-  const std::vector<Tri> no_triangles;
+  // The terms of fan f of v (an edge's, of the edges v owns).
+  std::vector<uint32_t> seq, scratch;
   auto terms_of = [&](uint32_t v, uint64_t f, const auto& take) {
     const bool cyclic = lister.interior(v);
     t.ring(f, cyclic, seq);
-    const size_t m = seq.size();
-    if (at_vertices) {
-      if (d.site == TermSite::Vertex || cyclic) {
-        nb = seq;
-        std::sort(nb.begin(), nb.end());
-        take(vertex_term(d, dt, Star(v, nb, no_triangles)));
-      }
-      return;
-    }
-    for (size_t j = 0; j < m; ++j)
-      if ((cyclic || (j > 0 && j + 1 < m)) && owner(v, seq[j]) == v)
-        take(edge_term(d, dt, v, seq[j], seq[(j + 1) % m], seq[(j + m - 1) % m]));
+    fan_terms(dt, d, v, seq, cyclic, [&](uint32_t u) { return owner(v, u) == v; }, scratch, take);
   };
   // Lengths in units of 2^-e, the longest term near 2^20 units: each rounded
   // down, less one unit (the length is accurate, not exact), so every sum is
@@ -189,11 +178,13 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     if (now < best && limits.decode) best_lambda = lambda;
     best = std::min(best, now);
     // Stop once the last sweep's gain, kept up for every sweep left, would not
-    // reach the next value the bound can prove (the next integer for counts,
-    // half a unit for lengths). The gains shrink slowly: on the volcano at
-    // k = 4, min-mixed-vertices, 74.27 after 8 sweeps (each gaining less than
-    // half a unit), 75.0 after 24, proving the 76 found.
-    const int64_t next = integral ? best - floor_div(best, kUnit) * kUnit + 1 : kUnit / 2;
+    // reach the next value the bound can prove (the next integer for counts, or
+    // past the known bound; half a unit for lengths). The gains shrink slowly:
+    // on the volcano at k = 4, min-mixed-vertices, 74.27 after 8 sweeps (each
+    // gaining less than half a unit), 75.0 after 24, proving the 76 found.
+    int64_t next = integral ? best - floor_div(best, kUnit) * kUnit + 1 : kUnit / 2;
+    if (integral && std::isfinite(limits.known_bound) && std::fabs(limits.known_bound) < 1e12)
+      next = std::max(next, best - static_cast<int64_t>(std::floor(sign * limits.known_bound)) * kUnit + 1);
     if (gained * static_cast<int64_t>(limits.iterations - sweep - 1) < next) break;
   }
   out.bound = static_cast<double>(sign) * relaxed(best);

@@ -1,7 +1,6 @@
 #include "hodt/star_decode.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <numeric>
 #include <unordered_set>
 
@@ -74,67 +73,6 @@ std::vector<Tri> triangles_of(Fans& fans, const std::vector<uint64_t>& chosen) {
 
 constexpr uint64_t kNoFan = UINT64_MAX;
 
-// Branch and bound over one window's fans (domain: per member, its fans that
-// agree with the outside, best first): the members' best agreeing fans, into
-// `chosen` when above `best`. Forward checking as in the sweeps; a branch ends
-// when its value plus each member's best live fan cannot pass the best found.
-// Within max_steps fans tried (the best found by then is kept: it agrees).
-template <class Agree>
-bool best_in_window(const std::vector<uint32_t>& window, const std::vector<std::vector<uint64_t>>& domain,
-                    const std::vector<std::vector<uint32_t>>& near, const Agree& agree, const std::vector<int64_t>& value,
-                    int64_t best, uint64_t max_steps, std::vector<uint64_t>& chosen) {
-  const size_t m = window.size();
-  std::vector<std::vector<uint8_t>> alive(m);
-  for (size_t a = 0; a < m; ++a) alive[a].assign(domain[a].size(), 1);
-  std::vector<std::pair<size_t, size_t>> trail;  // (member, fan index) removed
-  std::vector<uint64_t> pick(m), found;
-  uint64_t steps = 0;
-  auto top = [&](size_t a) {  // (the best live fan's value; none: INT64_MIN)
-    for (size_t x = 0; x < domain[a].size(); ++x)
-      if (alive[a][x]) return value[domain[a][x]];
-    return INT64_MIN;
-  };
-  auto dfs = [&](auto& self, size_t a, int64_t sum) -> void {
-    if (a == m) {
-      if (sum > best) best = sum, found = pick;
-      return;
-    }
-    int64_t rest = 0;  // (members a.. at their best)
-    for (size_t b = a; b < m; ++b) {
-      const int64_t x = top(b);
-      if (x == INT64_MIN) return;
-      rest += x;
-    }
-    const int64_t others = rest - top(a);
-    const uint32_t v = window[a];
-    for (size_t x = 0; x < domain[a].size() && steps < max_steps; ++x) {
-      if (!alive[a][x]) continue;
-      const uint64_t f = domain[a][x];
-      if (sum + value[f] + others <= best) break;  // (the rest of a's fans are no better)
-      ++steps;
-      const size_t mark = trail.size();
-      bool ok = true;
-      for (size_t b = a + 1; b < m && ok; ++b) {
-        const uint32_t u = window[b];
-        if (!std::binary_search(near[v].begin(), near[v].end(), u)) continue;
-        ok = false;
-        for (size_t y = 0; y < domain[b].size(); ++y)
-          if (alive[b][y]) {
-            if (agree(v, f, u, domain[b][y])) ok = true;
-            else alive[b][y] = 0, trail.emplace_back(b, y);
-          }
-      }
-      pick[a] = f;
-      if (ok) self(self, a + 1, sum + value[f]);
-      for (; trail.size() > mark; trail.pop_back()) alive[trail.back().first][trail.back().second] = 1;
-    }
-  };
-  dfs(dfs, 0, 0);
-  if (found.empty()) return false;
-  for (size_t a = 0; a < m; ++a) chosen[window[a]] = found[a];
-  return true;
-}
-
 // The sweeps' directions (off the axes a little: rows and columns of a grid
 // are then visited in one order).
 constexpr double kAxes[4][2] = {{1, 0.001}, {-1, -0.001}, {0.001, 1}, {-0.001, -1}};
@@ -172,65 +110,6 @@ std::vector<uint8_t> StarDecoder::fans_within(const Mesh& start) const {
     within[f] = all;
   }
   return within;
-}
-
-std::optional<std::vector<Tri>> StarDecoder::improve(const Mesh& start, uint32_t per_window, uint64_t max_steps) const {
-  const FanTrees& t = t_;
-  const uint32_t n = dt_.num_vertices();
-  Fans fans(dt_, t);
-  // start's fan at each vertex (a triangulation has one: its triangles round it).
-  std::vector<uint64_t> chosen(n, kNoFan);
-  const std::vector<uint8_t> within = fans_within(start);
-  for (uint32_t v = 0; v < n; ++v) {
-    for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1] && chosen[v] == kNoFan; ++f)
-      if (within[f]) chosen[v] = f;
-    if (chosen[v] == kNoFan) return std::nullopt;
-  }
-  const std::vector<std::vector<uint32_t>> near = neighbours(t, fans, n);
-  auto agree = [&](uint32_t v, uint64_t f, uint32_t u, uint64_t g) { return fans.edge(u, g, v) == mirrored(fans.edge(v, f, u)); };
-
-  // Tiles of about per_window vertices, over the bounding box.
-  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-  for (uint32_t v = 0; v < n; ++v)
-    for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], dt_.point(v)[a]), hi[a] = std::max(hi[a], dt_.point(v)[a]);
-  const double side = std::sqrt(per_window * (hi[0] - lo[0]) * (hi[1] - lo[1]) / n);
-  if (!(side > 0) || !std::isfinite(side)) return std::nullopt;
-
-  bool improved = false;
-  std::vector<uint8_t> inside(n, 0);
-  std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
-  for (const double offset : {0.0, 0.5, 0.25, 0.75}) {
-    for (uint32_t v = 0; v < n; ++v) {
-      const auto cell = [&](int a) { return static_cast<uint64_t>(std::floor((dt_.point(v)[a] - lo[a]) / side + offset)); };
-      keyed[v] = {cell(1) << 32 | cell(0), v};
-    }
-    std::sort(keyed.begin(), keyed.end());
-    for (size_t i = 0; i < n;) {
-      size_t j = i;
-      std::vector<uint32_t> window;
-      for (; j < n && keyed[j].first == keyed[i].first; ++j) window.push_back(keyed[j].second);
-      i = j;
-      // Each member's fans that agree with every outside neighbour, best first.
-      for (uint32_t v : window) inside[v] = 1;
-      const size_t m = window.size();
-      std::vector<std::vector<uint64_t>> domain(m);
-      int64_t best = 0;
-      bool choice = false;
-      for (size_t a = 0; a < m; ++a) {
-        const uint32_t v = window[a];
-        best += value_[chosen[v]];
-        for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f)
-          if (std::all_of(near[v].begin(), near[v].end(), [&](uint32_t u) { return inside[u] || agree(v, f, u, chosen[u]); }))
-            domain[a].push_back(f);
-        std::stable_sort(domain[a].begin(), domain[a].end(), [&](uint64_t x, uint64_t y) { return value_[x] > value_[y]; });
-        choice = choice || domain[a].size() > 1;
-      }
-      if (choice && best_in_window(window, domain, near, agree, value_, best, max_steps, chosen)) improved = true;
-      for (uint32_t v : window) inside[v] = 0;
-    }
-  }
-  if (!improved) return std::nullopt;
-  return triangles_of(fans, chosen);
 }
 
 std::optional<std::vector<Tri>> StarDecoder::search(const std::vector<int64_t>& value, const double axis[2]) const {

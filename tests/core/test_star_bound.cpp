@@ -116,49 +116,6 @@ TEST_CASE("star decode: k-OD triangulations, never past the optimum, mostly at i
   CHECK(optimal > decoded / 2);
 }
 
-// Descent by windows (StarDecoder::improve): one window over every vertex is a
-// branch and bound over all agreeing fans, so it reaches the brute-force
-// optimum (or leaves Delaunay, already optimal); small windows and tiny step
-// budgets give k-OD triangulations no worse than the start.
-TEST_CASE("star windows: one window over everything is exact, small ones never worse") {
-  int whole = 0, small = 0;
-  for (uint32_t k : {2u, 3u, 4u})
-    for (uint64_t seed = 1; seed <= 200; ++seed) {
-      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 29 + k, 1)).xyz));
-      const Mesh& dt = fo.base;
-      const KOrderStructure structure(dt, k, {});
-      for (const auto& oi : objectives()) {
-        if (objective_terms(oi.objective, dt).combine != TermCombine::Sum) continue;
-        StarBoundLimits limits;
-        limits.decode = true;
-        const double delaunay_value = evaluate(oi.objective, dt);
-        const auto b = star_bound(dt, oi.objective, structure.candidates, delaunay_value, limits);
-        if (!b || !b->decoder) continue;
-        const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
-        CAPTURE(k);
-        CAPTURE(seed);
-        CAPTURE(std::string(oi.id));
-        const auto all = b->decoder->improve(dt, 1u << 30, 100'000'000);
-        const double got = all ? evaluate(oi.objective, mesh_of(dt.coords, *all)) : delaunay_value;
-        if (all) CHECK(is_k_order(mesh_of(dt.coords, *all), dt, k));
-        CHECK(got == want);
-        ++whole;
-        for (const auto [per_window, steps] : {std::pair{4u, 1'000u}, std::pair{9u, 3u}}) {
-          const auto part = b->decoder->improve(dt, per_window, steps);
-          if (!part) continue;
-          ++small;
-          const Mesh m = mesh_of(dt.coords, *part);
-          CHECK(is_k_order(m, dt, k));
-          CHECK(better(oi.sense, evaluate(oi.objective, m), delaunay_value));
-          CHECK(!better(oi.sense, evaluate(oi.objective, m), want));
-        }
-      }
-    }
-  MESSAGE(whole << " windows over everything, " << small << " small descents that improved");
-  CHECK(whole > 1000);
-  CHECK(small > 200);
-}
-
 TEST_CASE("star decode: a DEM at k = 8, every sweep a k-OD triangulation") {
   const FirstOrder fo = first_order(delaunay(validate_points(grid_points(12, 11, 3)).xyz));
   const KOrderStructure structure(fo.base, 8, {});

@@ -19,6 +19,7 @@
 // Exact: multipliers are integers in units of 2^-12, every sum an integer, and
 // the bound is the floor of the best (max) or the ceiling (min).
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -44,6 +45,9 @@ struct StarBoundLimits {
   // Sweeps over every triangle: at most this many, and none once the last
   // sweep's gain, kept up for every sweep left, would not prove a better value.
   uint32_t iterations = 50;
+  // A bound proven already (as the objective's, not the relaxation's sign; NAN
+  // for none): for counts, sweeps also stop once they cannot pass it.
+  double known_bound = NAN;
   // A gap left: keep the fans and their values under the multipliers, to read
   // triangulations off them (StarDecoder), within this many fans tried per vertex.
   bool decode = false;

@@ -32,14 +32,6 @@ class StarDecoder {
   // The first sweep with ties going to the fans of `start` (a repair of it:
   // its fans stay wherever the multipliers do not prefer another).
   std::optional<std::vector<Tri>> repair(const Mesh& start) const;
-  // Descent by windows: each window of about per_window vertices (tiles of the
-  // plane, at four offsets) takes its best fans, every other vertex keeping
-  // its fan of `start` (branch and bound, at most max_steps fans tried per
-  // window). With the outside kept, the multipliers of triangles reaching out
-  // are constants and the others cancel, so the values rank a window's choices
-  // as the objective does. Nothing when no window improved, or when `start`
-  // has a vertex with no listed fan.
-  std::optional<std::vector<Tri>> improve(const Mesh& start, uint32_t per_window, uint64_t max_steps) const;
 
  private:
   std::optional<std::vector<Tri>> search(const std::vector<int64_t>& value, const double axis[2]) const;

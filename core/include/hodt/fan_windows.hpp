@@ -1,0 +1,35 @@
+// Descent by windows at order k: each window of about per_window vertices
+// (tiles of the plane, at four offsets) takes its best fans (fan_trees.hpp),
+// every other vertex keeping its star in the triangulation at hand. Fans that
+// agree with their neighbours' are a triangulation (star_decode.hpp), so the
+// window's best is a branch and bound over its members' fans that agree with
+// the outside: a large neighbourhood searched exactly, which flips and region
+// descents do not reach (the volcano at k = 4, min-mixed-vertices: 77 -> 76,
+// the optimum). Lists fans one window at a time: no budget over the whole
+// instance.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "hodt/fill_enumerator.hpp"
+#include "hodt/mesh.hpp"
+#include "hodt/objectives.hpp"
+#include "hodt/progress.hpp"
+
+namespace hodt {
+
+struct WindowLimits {
+  uint32_t per_window = 25;
+  uint64_t max_steps = 2'000;               // fans tried per window (the best found by then is kept)
+  uint64_t max_nodes_per_vertex = 50'000;  // a vertex with more fans keeps its star
+  Progress progress;
+};
+
+// Sums over vertices or edges (fan_terms.hpp); nothing for other objectives,
+// or when no window improved `start` (a k-OD triangulation of delaunay's
+// points). The triangles of the result, counterclockwise.
+std::optional<std::vector<Tri>> improve_by_windows(const Mesh& delaunay, Objective o, const Candidates& candidates,
+                                                   const Mesh& start, const WindowLimits& limits = {});
+
+}  // namespace hodt

@@ -1,0 +1,236 @@
+#include "hodt/fan_windows.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+
+#include "hodt/error.hpp"
+#include "hodt/fan_terms.hpp"
+#include "hodt/fan_trees.hpp"
+#include "hodt/objective_terms.hpp"
+
+namespace hodt {
+
+namespace {
+
+// What a vertex's fan says of a neighbour u: whether the edge is in it, and the
+// apexes before and after u (counterclockwise; none at a hull end).
+struct FanSide {
+  bool present = false;
+  uint32_t before = kNoFanNode, after = kNoFanNode;
+  bool operator==(const FanSide&) const = default;
+};
+
+FanSide side_in_ring(const std::vector<uint32_t>& r, bool cyclic, uint32_t u) {
+  const auto it = std::find(r.begin(), r.end(), u);
+  if (it == r.end()) return {};
+  const size_t j = static_cast<size_t>(it - r.begin()), m = r.size();
+  return {true, cyclic || j > 0 ? r[(j + m - 1) % m] : kNoFanNode, cyclic || j + 1 < m ? r[(j + 1) % m] : kNoFanNode};
+}
+
+// The stars of the triangulation at hand: the apex left of each directed edge.
+class Stars {
+ public:
+  explicit Stars(const Mesh& m) {
+    for (uint32_t e = 0; e < m.triangles.size(); ++e) apex_[key(m.origin(e), m.target(e))] = m.apex(e);
+    neighbours_.resize(m.num_vertices());
+    for (uint32_t e = 0; e < m.triangles.size(); ++e) {
+      neighbours_[m.origin(e)].push_back(m.target(e));
+      neighbours_[m.target(e)].push_back(m.origin(e));
+    }
+    for (auto& a : neighbours_) std::sort(a.begin(), a.end()), a.erase(std::unique(a.begin(), a.end()), a.end());
+  }
+  // v's neighbours counterclockwise (from any one; at a hull vertex, from the next hull vertex).
+  void ring(uint32_t v, bool cyclic, std::vector<uint32_t>& out) const {
+    out.clear();
+    const std::vector<uint32_t>& nb = neighbours_[v];
+    if (nb.empty()) return;
+    uint32_t first = nb[0];
+    if (!cyclic)  // (the neighbour with no triangle on its right: v -> first is a hull edge)
+      for (uint32_t u : nb)
+        if (apex(u, v) == kNoFanNode) first = u;
+    for (uint32_t u = first; out.size() <= nb.size();) {
+      out.push_back(u);
+      u = apex(v, u);
+      if (u == kNoFanNode || u == first) break;
+    }
+  }
+
+ private:
+  static uint64_t key(uint32_t a, uint32_t b) { return uint64_t{a} << 32 | b; }
+  uint32_t apex(uint32_t a, uint32_t b) const {
+    const auto it = apex_.find(key(a, b));
+    return it == apex_.end() ? kNoFanNode : it->second;
+  }
+  std::unordered_map<uint64_t, uint32_t> apex_;
+  std::vector<std::vector<uint32_t>> neighbours_;
+};
+
+// One window's members, their candidate fans (rings) and values, and a branch
+// and bound over them: forward checking (a choice removes the later members'
+// fans that disagree), a branch ending when its value plus each later member's
+// best live fan cannot beat the best found.
+struct Window {
+  std::vector<uint32_t> member;
+  std::vector<uint8_t> cyclic;
+  std::vector<std::vector<std::vector<uint32_t>>> rings;  // per member, its fans, best first
+  std::vector<std::vector<double>> value;                 // the same order
+  std::vector<uint32_t> found;                            // per member, the fan index of the best found
+
+  // Better than `current` by more than min_gain.
+  bool best(double current, double min_gain, uint64_t max_steps) {
+    const size_t m = member.size();
+    std::vector<std::vector<uint8_t>> alive(m);
+    for (size_t a = 0; a < m; ++a) alive[a].assign(rings[a].size(), 1);
+    std::vector<std::pair<size_t, size_t>> trail;
+    std::vector<uint32_t> pick(m);
+    double best = current + min_gain;
+    bool improved = false;
+    uint64_t steps = 0;
+    auto top = [&](size_t a) {
+      for (size_t x = 0; x < rings[a].size(); ++x)
+        if (alive[a][x]) return value[a][x];
+      return -std::numeric_limits<double>::infinity();
+    };
+    auto dfs = [&](auto& self, size_t a, double sum) -> void {
+      if (a == m) {
+        if (sum > best) best = sum, found = pick, improved = true;
+        return;
+      }
+      double rest = 0;
+      for (size_t b = a; b < m; ++b) rest += top(b);
+      if (!(sum + rest > best)) return;  // (also when a member has no fan left: -infinity)
+      const double others = rest - top(a);
+      for (size_t x = 0; x < rings[a].size() && steps < max_steps; ++x) {
+        if (!alive[a][x]) continue;
+        if (!(sum + value[a][x] + others > best)) break;
+        ++steps;
+        const size_t mark = trail.size();
+        bool ok = true;
+        for (size_t b = a + 1; b < m && ok; ++b) {
+          const FanSide said = side_in_ring(rings[a][x], cyclic[a], member[b]);
+          const FanSide want = said.present ? FanSide{true, said.after, said.before} : FanSide{};
+          ok = false;
+          for (size_t y = 0; y < rings[b].size(); ++y)
+            if (alive[b][y]) {
+              if (side_in_ring(rings[b][y], cyclic[b], member[a]) == want) ok = true;
+              else alive[b][y] = 0, trail.emplace_back(b, y);
+            }
+        }
+        pick[a] = static_cast<uint32_t>(x);
+        if (ok) self(self, a + 1, sum + value[a][x]);
+        for (; trail.size() > mark; trail.pop_back()) alive[trail.back().first][trail.back().second] = 1;
+      }
+    };
+    dfs(dfs, 0, 0.0);
+    return improved;
+  }
+};
+
+}  // namespace
+
+std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, const Candidates& cand,
+                                                   const Mesh& start, const WindowLimits& limits) {
+  const ObjectiveTerms& d = objective_terms(o, dt);
+  if (d.combine != TermCombine::Sum || !fan_holds_terms(d)) return std::nullopt;
+  const double sign = info(o).sense == Sense::Max ? 1 : -1;  // (windows maximise sign * value)
+  const bool integral = d.term_max < 1e6 && d.term_max == std::floor(d.term_max);  // (counts)
+  const uint32_t n = dt.num_vertices();
+  if (n == 0 || start.num_vertices() != n) return std::nullopt;
+
+  // The rings at hand (updated as windows improve), and the tiles.
+  const Stars at_start(start);
+  std::vector<uint8_t> interior(n, 1);
+  for (uint32_t h : dt.hull) interior[h] = 0;
+  std::vector<std::vector<uint32_t>> ring(n);
+  for (uint32_t v = 0; v < n; ++v) at_start.ring(v, interior[v], ring[v]);
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (uint32_t v = 0; v < n; ++v)
+    for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], dt.point(v)[a]), hi[a] = std::max(hi[a], dt.point(v)[a]);
+  const double side = std::sqrt(limits.per_window * (hi[0] - lo[0]) * (hi[1] - lo[1]) / n);
+  if (!(side > 0) || !std::isfinite(side)) return std::nullopt;
+
+  FanTrees t;
+  FanLister lister(dt, cand, t);
+  std::vector<int32_t> slot(n, -1);  // a vertex's place in the window
+  std::vector<uint32_t> scratch, fan;
+  // What the current rings say: v's fan must say this of u (u outside the window).
+  auto wanted = [&](uint32_t v, uint32_t u) {
+    const FanSide s = side_in_ring(ring[u], interior[u], v);
+    return s.present ? FanSide{true, s.after, s.before} : FanSide{};
+  };
+  bool improved = false;
+  std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
+  const double offsets[4] = {0.0, 0.5, 0.25, 0.75};
+  for (int pass = 0; pass < 4; ++pass) {
+    for (uint32_t v = 0; v < n; ++v) {
+      const auto cell = [&](int a) {  // (clamped: a sliver of a hull has more cells than that)
+        return static_cast<uint64_t>(std::min(std::floor((dt.point(v)[a] - lo[a]) / side + offsets[pass]), 2147483647.0));
+      };
+      keyed[v] = {cell(1) << 32 | cell(0), v};
+    }
+    std::sort(keyed.begin(), keyed.end());
+    for (size_t i = 0; i < n;) {
+      Window w;
+      size_t j = i;
+      for (; j < n && keyed[j].first == keyed[i].first; ++j) w.member.push_back(keyed[j].second);
+      i = j;
+      if (limits.progress && !limits.progress(pass * double(n) + double(i), 4.0 * n)) throw Cancelled();
+      for (size_t a = 0; a < w.member.size(); ++a) slot[w.member[a]] = static_cast<int32_t>(a);
+      // Each member's fans that agree with its outside neighbours, valued; a
+      // member whose fans are over the budget keeps its ring (one fan).
+      const size_t m = w.member.size();
+      w.cyclic.resize(m), w.rings.resize(m), w.value.resize(m);
+      auto owns = [&](uint32_t v) { return [&, v](uint32_t u) { return slot[u] < 0 || v < u; }; };
+      double current = 0;
+      bool choice = false;
+      for (size_t a = 0; a < m; ++a) {
+        const uint32_t v = w.member[a];
+        w.cyclic[a] = interior[v];
+        double own = 0;
+        fan_terms(dt, d, v, ring[v], interior[v], owns(v), scratch, [&](double x) { own += sign * x; });
+        current += own;
+        std::vector<std::pair<double, std::vector<uint32_t>>> listed;
+        t.truncate(0, 0);
+        if (lister.list(v, limits.max_nodes_per_vertex))
+          for (uint64_t f = 0; f < t.leaf.size(); ++f) {
+            t.ring(f, interior[v], fan);
+            bool agrees = true;
+            for (uint32_t u : fan)  // (outside neighbours in the fan, then those at hand)
+              if (slot[u] < 0 && !(side_in_ring(fan, interior[v], u) == wanted(v, u))) agrees = false;
+            for (uint32_t u : ring[v])
+              if (agrees && slot[u] < 0 && !(side_in_ring(fan, interior[v], u) == wanted(v, u))) agrees = false;
+            if (!agrees) continue;
+            double x = 0;
+            fan_terms(dt, d, v, fan, interior[v], owns(v), scratch, [&](double y) { x += sign * y; });
+            listed.emplace_back(x, fan);
+          }
+        if (listed.empty()) listed.emplace_back(own, ring[v]);  // (over the budget: v keeps its ring)
+        std::stable_sort(listed.begin(), listed.end(), [](const auto& p, const auto& q) { return p.first > q.first; });
+        w.rings[a].clear(), w.value[a].clear();
+        for (auto& [x, r] : listed) w.value[a].push_back(x), w.rings[a].push_back(std::move(r));
+        choice = choice || listed.size() > 1;
+      }
+      // (counts: a gain of 1 at least; lengths: beyond the rounding of their sums)
+      const double min_gain = integral ? 0.5 : 1e-9 * std::fabs(current);
+      if (choice && w.best(current, min_gain, limits.max_steps)) {
+        for (size_t a = 0; a < m; ++a) ring[w.member[a]] = w.rings[a][w.found[a]];
+        improved = true;
+      }
+      for (uint32_t v : w.member) slot[v] = -1;
+    }
+  }
+  if (!improved) return std::nullopt;
+  std::vector<Tri> out;
+  for (uint32_t v = 0; v < n; ++v) {
+    const std::vector<uint32_t>& r = ring[v];
+    const size_t m = r.size(), last = interior[v] ? m : m - 1;
+    for (size_t j = 0; j < last; ++j) out.push_back(canonical_triangle(Tri{v, r[j], r[(j + 1) % m]}));
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+}  // namespace hodt
