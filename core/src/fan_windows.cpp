@@ -5,6 +5,7 @@
 #include <limits>
 #include <unordered_map>
 
+#include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/fan_terms.hpp"
 #include "hodt/fan_trees.hpp"
@@ -13,21 +14,6 @@
 namespace hodt {
 
 namespace {
-
-// What a vertex's fan says of a neighbour u: whether the edge is in it, and the
-// apexes before and after u (counterclockwise; none at a hull end).
-struct FanSide {
-  bool present = false;
-  uint32_t before = kNoFanNode, after = kNoFanNode;
-  bool operator==(const FanSide&) const = default;
-};
-
-FanSide side_in_ring(const std::vector<uint32_t>& r, bool cyclic, uint32_t u) {
-  const auto it = std::find(r.begin(), r.end(), u);
-  if (it == r.end()) return {};
-  const size_t j = static_cast<size_t>(it - r.begin()), m = r.size();
-  return {true, cyclic || j > 0 ? r[(j + m - 1) % m] : kNoFanNode, cyclic || j + 1 < m ? r[(j + 1) % m] : kNoFanNode};
-}
 
 // The stars of the triangulation at hand: the apex left of each directed edge.
 class Stars {
@@ -109,8 +95,7 @@ struct Window {
         const size_t mark = trail.size();
         bool ok = true;
         for (size_t b = a + 1; b < m && ok; ++b) {
-          const FanSide said = side_in_ring(rings[a][x], cyclic[a], member[b]);
-          const FanSide want = said.present ? FanSide{true, said.after, said.before} : FanSide{};
+          const FanSide want = mirrored(side_in_ring(rings[a][x], cyclic[a], member[b]));
           ok = false;
           for (size_t y = 0; y < rings[b].size(); ++y)
             if (alive[b][y]) {
@@ -133,7 +118,7 @@ struct Window {
 std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, const Candidates& cand,
                                                    const Mesh& start, const WindowLimits& limits) {
   const ObjectiveTerms& d = objective_terms(o, dt);
-  if (d.combine != TermCombine::Sum || !fan_holds_terms(d)) return std::nullopt;
+  if (d.combine != TermCombine::Sum || !fan_holds_terms(d) || has_domain(dt)) return std::nullopt;  // (a domain's terms read triangles)
   const double sign = info(o).sense == Sense::Max ? 1 : -1;  // (windows maximise sign * value)
   const bool integral = d.term_max < 1e6 && d.term_max == std::floor(d.term_max);  // (counts)
   const uint32_t n = dt.num_vertices();
@@ -156,10 +141,7 @@ std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, 
   std::vector<int32_t> slot(n, -1);  // a vertex's place in the window
   std::vector<uint32_t> scratch, fan;
   // What the current rings say: v's fan must say this of u (u outside the window).
-  auto wanted = [&](uint32_t v, uint32_t u) {
-    const FanSide s = side_in_ring(ring[u], interior[u], v);
-    return s.present ? FanSide{true, s.after, s.before} : FanSide{};
-  };
+  auto wanted = [&](uint32_t v, uint32_t u) { return mirrored(side_in_ring(ring[u], interior[u], v)); };
   bool improved = false;
   std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
   const double offsets[4] = {0.0, 0.5, 0.25, 0.75};
@@ -223,11 +205,7 @@ std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, 
   }
   if (!improved) return std::nullopt;
   std::vector<Tri> out;
-  for (uint32_t v = 0; v < n; ++v) {
-    const std::vector<uint32_t>& r = ring[v];
-    const size_t m = r.size(), last = interior[v] ? m : m - 1;
-    for (size_t j = 0; j < last; ++j) out.push_back(canonical_triangle(Tri{v, r[j], r[(j + 1) % m]}));
-  }
+  for (uint32_t v = 0; v < n; ++v) append_fan_triangles(v, ring[v], interior[v], out);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;

@@ -8,14 +8,6 @@ namespace hodt {
 
 namespace {
 
-// What a fan says of one neighbour u: whether its edge is in the fan, and if
-// so the apexes before and after it (counterclockwise; none at a hull end).
-struct Edge {
-  bool present = false;
-  uint32_t before = kNoFanNode, after = kNoFanNode;
-  bool operator==(const Edge&) const = default;
-};
-
 class Fans {
  public:
   Fans(const Mesh& dt, const FanTrees& t) : t_(t), hull_(dt.num_vertices(), 0) {
@@ -27,15 +19,7 @@ class Fans {
     t_.ring(f, !hull_[v], ring_);
     return ring_;
   }
-  Edge edge(uint32_t v, uint64_t f, uint32_t u) {
-    const std::vector<uint32_t>& r = ring(v, f);
-    const size_t m = r.size();
-    const auto it = std::find(r.begin(), r.end(), u);
-    if (it == r.end()) return {};
-    const size_t j = static_cast<size_t>(it - r.begin());
-    const bool cyclic = !hull_[v];
-    return {true, cyclic || j > 0 ? r[(j + m - 1) % m] : kNoFanNode, cyclic || j + 1 < m ? r[(j + 1) % m] : kNoFanNode};
-  }
+  FanSide edge(uint32_t v, uint64_t f, uint32_t u) { return side_in_ring(ring(v, f), !hull_[v], u); }
   bool cyclic(uint32_t v) const { return !hull_[v]; }
 
  private:
@@ -43,10 +27,6 @@ class Fans {
   std::vector<uint8_t> hull_;
   std::vector<uint32_t> ring_;
 };
-
-// What u's fan must say of v for v's fan, which says `said` of u (the same
-// triangles, seen from the other end).
-Edge mirrored(const Edge& said) { return said.present ? Edge{true, said.after, said.before} : Edge{}; }
 
 // Neighbours: any two vertices one's fans pass through the other.
 std::vector<std::vector<uint32_t>> neighbours(const FanTrees& t, Fans& fans, uint32_t n) {
@@ -61,11 +41,7 @@ std::vector<std::vector<uint32_t>> neighbours(const FanTrees& t, Fans& fans, uin
 // The triangles of one fan per vertex.
 std::vector<Tri> triangles_of(Fans& fans, const std::vector<uint64_t>& chosen) {
   std::vector<Tri> out;
-  for (uint32_t v = 0; v < chosen.size(); ++v) {
-    const std::vector<uint32_t>& r = fans.ring(v, chosen[v]);
-    const size_t m = r.size(), last = fans.cyclic(v) ? m : m - 1;
-    for (size_t j = 0; j < last; ++j) out.push_back(canonical_triangle(Tri{v, r[j], r[(j + 1) % m]}));
-  }
+  for (uint32_t v = 0; v < chosen.size(); ++v) append_fan_triangles(v, fans.ring(v, chosen[v]), fans.cyclic(v), out);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
@@ -146,7 +122,7 @@ std::optional<std::vector<Tri>> StarDecoder::search(const std::vector<int64_t>& 
     chosen[v] = f;
     for (uint32_t u : near[v]) {
       if (chosen[u] != kNoFan) continue;
-      const Edge wanted = mirrored(fans.edge(v, f, u));
+      const FanSide wanted = mirrored(fans.edge(v, f, u));
       for (uint64_t g : domain[u])
         if (alive[g] && !(fans.edge(u, g, v) == wanted)) alive[g] = 0, --left[u], trail.push_back(g);
       if (left[u] == 0) return false;
@@ -168,7 +144,7 @@ std::optional<std::vector<Tri>> StarDecoder::search(const std::vector<int64_t>& 
       int64_t score = value[f];
       for (uint32_t u : near[v]) {
         if (chosen[u] != kNoFan) continue;
-        const Edge wanted = mirrored(fans.edge(v, f, u));
+        const FanSide wanted = mirrored(fans.edge(v, f, u));
         int64_t best = -(int64_t{1} << 50);  // (none: far below any value; sums of them stay in range)
         for (uint64_t g : domain[u])  // (best first: the first that agrees)
           if (alive[g] && fans.edge(u, g, v) == wanted) {

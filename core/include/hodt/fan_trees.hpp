@@ -35,6 +35,30 @@ struct FanTrees {
   }
 };
 
+// What a fan (its ring of neighbours, counterclockwise; cyclic round an interior
+// vertex) says of one neighbour u: whether the edge is in it, and if so the
+// apexes before and after u (none at a hull end).
+struct FanSide {
+  bool present = false;
+  uint32_t before = kNoFanNode, after = kNoFanNode;
+  bool operator==(const FanSide&) const = default;
+};
+inline FanSide side_in_ring(const std::vector<uint32_t>& ring, bool cyclic, uint32_t u) {
+  const auto it = std::find(ring.begin(), ring.end(), u);
+  if (it == ring.end()) return {};
+  const size_t j = static_cast<size_t>(it - ring.begin()), m = ring.size();
+  return {true, cyclic || j > 0 ? ring[(j + m - 1) % m] : kNoFanNode, cyclic || j + 1 < m ? ring[(j + 1) % m] : kNoFanNode};
+}
+// What u's fan must say of v when v's says `said` of u: the same triangles,
+// seen from the other end. Fans that all agree so are a triangulation.
+inline FanSide mirrored(const FanSide& said) { return said.present ? FanSide{true, said.after, said.before} : FanSide{}; }
+
+// The triangles of v's fan (canonical), appended.
+inline void append_fan_triangles(uint32_t v, const std::vector<uint32_t>& ring, bool cyclic, std::vector<Tri>& out) {
+  const size_t m = ring.size(), last = cyclic ? m : m - 1;
+  for (size_t j = 0; j < last; ++j) out.push_back(canonical_triangle(Tri{v, ring[j], ring[(j + 1) % m]}));
+}
+
 // Lists fans by depth-first search over the candidate triangles at v, in
 // counterclockwise order.
 class FanLister {

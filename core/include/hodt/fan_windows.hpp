@@ -26,7 +26,7 @@ struct WindowLimits {
   Progress progress;
 };
 
-// Sums over vertices or edges (fan_terms.hpp); nothing for other objectives,
+// Sums over vertices or edges (fan_terms.hpp), no domain; nothing otherwise,
 // or when no window improved `start` (a k-OD triangulation of delaunay's
 // points). The triangles of the result, counterclockwise.
 std::optional<std::vector<Tri>> improve_by_windows(const Mesh& delaunay, Objective o, const Candidates& candidates,
