@@ -137,7 +137,8 @@ std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, 
   if (!(side > 0) || !std::isfinite(side)) return std::nullopt;
 
   FanTrees t;
-  FanLister lister(dt, cand, t);
+  FanLister lister(dt, cand, t, false);
+  uint64_t listed_nodes = 0;
   std::vector<int32_t> slot(n, -1);  // a vertex's place in the window
   std::vector<uint32_t> scratch, fan;
   // What the current rings say: v's fan must say this of u (u outside the window).
@@ -153,7 +154,7 @@ std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, 
       keyed[v] = {cell(1) << 32 | cell(0), v};
     }
     std::sort(keyed.begin(), keyed.end());
-    for (size_t i = 0; i < n;) {
+    for (size_t i = 0; i < n && listed_nodes < limits.max_nodes;) {
       Window w;
       size_t j = i;
       for (; j < n && keyed[j].first == keyed[i].first; ++j) w.member.push_back(keyed[j].second);
@@ -175,7 +176,9 @@ std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, 
         current += own;
         std::vector<std::pair<double, std::vector<uint32_t>>> listed;
         t.truncate(0, 0);
-        if (lister.list(v, limits.max_nodes_per_vertex))
+        const bool all_listed = lister.list(v, limits.max_nodes_per_vertex);
+        listed_nodes += all_listed ? t.corner.size() : limits.max_nodes_per_vertex;  // (the work either way)
+        if (all_listed)
           for (uint64_t f = 0; f < t.leaf.size(); ++f) {
             t.ring(f, interior[v], fan);
             bool agrees = true;

@@ -63,8 +63,10 @@ inline void append_fan_triangles(uint32_t v, const std::vector<uint32_t>& ring, 
 // counterclockwise order.
 class FanLister {
  public:
-  FanLister(const Mesh& dt, const Candidates& cand, FanTrees& t)
-      : dt_(dt), cand_(cand), t_(t), around_(dt.num_vertices()), hull_at_(dt.num_vertices(), -1) {
+  // numbered: give each node its triangle's corner (a number per triangle, kept
+  // for the lister's life); else every corner is kNoFanNode (rings only).
+  FanLister(const Mesh& dt, const Candidates& cand, FanTrees& t, bool numbered = true)
+      : dt_(dt), cand_(cand), t_(t), numbered_(numbered), around_(dt.num_vertices()), hull_at_(dt.num_vertices(), -1) {
     for (const auto& [key, apexes] : cand)
       if (!apexes.empty()) around_[static_cast<uint32_t>(key >> 32)].push_back(static_cast<uint32_t>(key));
     for (auto& a : around_) std::sort(a.begin(), a.end()), a.erase(std::unique(a.begin(), a.end()), a.end());
@@ -90,6 +92,7 @@ class FanLister {
   const Mesh& dt_;
   const Candidates& cand_;
   FanTrees& t_;
+  bool numbered_;
   std::vector<std::vector<uint32_t>> around_;
   std::vector<int64_t> hull_at_;
   std::unordered_map<Tri, uint32_t, WordsHash> ids_;
@@ -119,6 +122,7 @@ class FanLister {
     return t_.corner.size() - 1;
   }
   uint32_t corner(uint32_t u, uint32_t w) {
+    if (!numbered_) return kNoFanNode;
     const Tri c = canonical_triangle(Tri{v_, u, w});
     const auto [it, fresh] = ids_.try_emplace(c, static_cast<uint32_t>(ids_.size()));
     if (fresh) tris_.push_back(c);
