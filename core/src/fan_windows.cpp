@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
 
 #include "hodt/domain.hpp"
 #include "hodt/error.hpp"
@@ -15,43 +14,23 @@ namespace hodt {
 
 namespace {
 
-// The stars of the triangulation at hand: the apex left of each directed edge.
-class Stars {
- public:
-  explicit Stars(const Mesh& m) {
-    for (uint32_t e = 0; e < m.triangles.size(); ++e) apex_[key(m.origin(e), m.target(e))] = m.apex(e);
-    neighbours_.resize(m.num_vertices());
-    for (uint32_t e = 0; e < m.triangles.size(); ++e) {
-      neighbours_[m.origin(e)].push_back(m.target(e));
-      neighbours_[m.target(e)].push_back(m.origin(e));
-    }
-    for (auto& a : neighbours_) std::sort(a.begin(), a.end()), a.erase(std::unique(a.begin(), a.end()), a.end());
-  }
-  // v's neighbours counterclockwise (from any one; at a hull vertex, from the next hull vertex).
-  void ring(uint32_t v, bool cyclic, std::vector<uint32_t>& out) const {
-    out.clear();
-    const std::vector<uint32_t>& nb = neighbours_[v];
-    if (nb.empty()) return;
-    uint32_t first = nb[0];
-    if (!cyclic)  // (the neighbour with no triangle on its right: v -> first is a hull edge)
-      for (uint32_t u : nb)
-        if (apex(u, v) == kNoFanNode) first = u;
-    for (uint32_t u = first; out.size() <= nb.size();) {
-      out.push_back(u);
-      u = apex(v, u);
-      if (u == kNoFanNode || u == first) break;
+// Each vertex's neighbours in m, counterclockwise (at a hull vertex, from the
+// next hull vertex round to the previous: as the fans are listed).
+std::vector<std::vector<uint32_t>> rings_of(const Mesh& m) {
+  const std::vector<int32_t> out = vertex_halfedges(m);
+  std::vector<std::vector<uint32_t>> ring(m.num_vertices());
+  for (uint32_t v = 0; v < m.num_vertices(); ++v) {
+    if (out[v] < 0) continue;
+    for (int32_t e = out[v];;) {
+      ring[v].push_back(m.target(static_cast<uint32_t>(e)));
+      const uint32_t p = prev_halfedge(static_cast<uint32_t>(e));
+      e = m.halfedges[p];
+      if (e < 0) ring[v].push_back(m.origin(p));  // (round to the hull edge before v)
+      if (e < 0 || e == out[v]) break;
     }
   }
-
- private:
-  static uint64_t key(uint32_t a, uint32_t b) { return uint64_t{a} << 32 | b; }
-  uint32_t apex(uint32_t a, uint32_t b) const {
-    const auto it = apex_.find(key(a, b));
-    return it == apex_.end() ? kNoFanNode : it->second;
-  }
-  std::unordered_map<uint64_t, uint32_t> apex_;
-  std::vector<std::vector<uint32_t>> neighbours_;
-};
+  return ring;
+}
 
 // One window's members, their candidate fans (rings) and values, and a branch
 // and bound over them: forward checking (a choice removes the later members'
@@ -125,11 +104,9 @@ std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, 
   if (n == 0 || start.num_vertices() != n) return std::nullopt;
 
   // The rings at hand (updated as windows improve), and the tiles.
-  const Stars at_start(start);
   std::vector<uint8_t> interior(n, 1);
   for (uint32_t h : dt.hull) interior[h] = 0;
-  std::vector<std::vector<uint32_t>> ring(n);
-  for (uint32_t v = 0; v < n; ++v) at_start.ring(v, interior[v], ring[v]);
+  std::vector<std::vector<uint32_t>> ring = rings_of(start);
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (uint32_t v = 0; v < n; ++v)
     for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], dt.point(v)[a]), hi[a] = std::max(hi[a], dt.point(v)[a]);
@@ -181,12 +158,9 @@ std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, 
         if (all_listed)
           for (uint64_t f = 0; f < t.leaf.size(); ++f) {
             t.ring(f, interior[v], fan);
-            bool agrees = true;
-            for (uint32_t u : fan)  // (outside neighbours in the fan, then those at hand)
-              if (slot[u] < 0 && !(side_in_ring(fan, interior[v], u) == wanted(v, u))) agrees = false;
-            for (uint32_t u : ring[v])
-              if (agrees && slot[u] < 0 && !(side_in_ring(fan, interior[v], u) == wanted(v, u))) agrees = false;
-            if (!agrees) continue;
+            auto agrees = [&](uint32_t u) { return slot[u] >= 0 || side_in_ring(fan, interior[v], u) == wanted(v, u); };
+            // (outside neighbours in the fan, then those at hand)
+            if (!std::all_of(fan.begin(), fan.end(), agrees) || !std::all_of(ring[v].begin(), ring[v].end(), agrees)) continue;
             double x = 0;
             fan_terms(dt, d, v, fan, interior[v], owns(v), scratch, [&](double y) { x += sign * y; });
             listed.emplace_back(x, fan);

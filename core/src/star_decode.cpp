@@ -67,25 +67,18 @@ std::vector<std::vector<Tri>> StarDecoder::sweeps() const {
 }
 
 std::optional<std::vector<Tri>> StarDecoder::repair(const Mesh& start) const {
-  const std::vector<uint8_t> within = fans_within(start);
-  std::vector<int64_t> value(value_.size());
-  for (uint64_t f = 0; f < t_.leaf.size(); ++f) value[f] = 2 * value_[f] + within[f];  // (exact: values are far below 2^62)
-  return search(value, kAxes[0]);
-}
-
-std::vector<uint8_t> StarDecoder::fans_within(const Mesh& start) const {
   std::unordered_set<Tri, WordsHash> kept;
   for (uint32_t i = 0; i < start.num_triangles(); ++i) kept.insert(canonical_triangle(base_triangle(start, i)));
   std::vector<uint8_t> in_start(tris_.size());
   for (size_t i = 0; i < tris_.size(); ++i) in_start[i] = kept.count(tris_[i]) > 0;
-  std::vector<uint8_t> within(t_.leaf.size());
+  std::vector<int64_t> value(value_.size());
   for (uint64_t f = 0; f < t_.leaf.size(); ++f) {
-    bool all = true;
+    bool all = true;  // (every triangle of f in start)
     for (uint64_t x = t_.leaf[f]; x != kNoFanNode && all; x = t_.parent[x])
       all = t_.corner[x] == kNoFanNode || in_start[t_.corner[x] / 3];
-    within[f] = all;
+    value[f] = 2 * value_[f] + all;  // (exact: values are far below 2^62)
   }
-  return within;
+  return search(value, kAxes[0]);
 }
 
 std::optional<std::vector<Tri>> StarDecoder::search(const std::vector<int64_t>& value, const double axis[2]) const {

@@ -35,8 +35,6 @@ class StarDecoder {
 
  private:
   std::optional<std::vector<Tri>> search(const std::vector<int64_t>& value, const double axis[2]) const;
-  // Per fan, whether all its triangles are in `start`.
-  std::vector<uint8_t> fans_within(const Mesh& start) const;
   const Mesh& dt_;
   FanTrees t_;
   std::vector<Tri> tris_;  // by id (a corner is 3 id + position)
