@@ -18,8 +18,8 @@ using namespace hodt;
 using namespace hodt::test;
 
 
-TEST_CASE("star bound: never past the brute-force optimum (k = 1 to 4), with fans left out too") {
-  int runs = 0, tight = 0, partial = 0;
+TEST_CASE("star bound: never past the brute-force optimum (k = 1 to 4), with fans left out too, and in tiles") {
+  int runs = 0, tight = 0, partial = 0, tiled = 0;
   for (uint32_t k : {1u, 2u, 3u, 4u})
     for (uint64_t seed = 1; seed <= 100; ++seed) {
       const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 19 + k, 1)).xyz));
@@ -30,6 +30,8 @@ TEST_CASE("star bound: never past the brute-force optimum (k = 1 to 4), with fan
         StarBoundLimits limits;
         limits.iterations = 1 + static_cast<uint32_t>(seed % 3) * 100;
         if (seed % 4 == 0) limits.max_nodes_per_vertex = 1 + seed % 7, limits.max_left_out = 1;  // (some vertices left out)
+        if (seed % 4 == 1) limits.max_nodes = 20 + seed % 90, limits.max_left_out = 1;  // (tiles)
+        if (seed % 8 == 2) limits.max_visits = seed * 50;  // (sweeps stopped part way)
         const auto b = star_bound(dt, oi.objective, structure.candidates, delaunay_value, limits);
         if (!b) continue;
         const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
@@ -38,16 +40,19 @@ TEST_CASE("star bound: never past the brute-force optimum (k = 1 to 4), with fan
         CAPTURE(std::string(oi.id));
         ++runs;
         partial += b->left_out > 0;
+        tiled += b->tiles > 1;
         if (oi.objective != Objective::MinTotalEdgeLength) CHECK(b->bound == std::floor(b->bound));
         if (oi.sense == Sense::Max) CHECK(b->bound >= want);
         else CHECK(b->bound <= want);
         tight += b->bound == want;
       }
     }
-  MESSAGE(runs << " star bounds, " << tight << " equal to the optimum, " << partial << " with vertices left out");
+  MESSAGE(runs << " star bounds, " << tight << " equal to the optimum, " << partial << " with vertices left out, "
+               << tiled << " in tiles");
   CHECK(runs > 1000);
   CHECK(tight > runs / 2);
   CHECK(partial > 50);
+  CHECK(tiled > 100);
 }
 
 TEST_CASE("star bound: sums only (counts, lengths); a triangulation's value is never past it on a large instance") {

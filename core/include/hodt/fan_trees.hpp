@@ -87,6 +87,8 @@ class FanLister {
   // The useful neighbours of v (the candidates' edges), sorted.
   const std::vector<uint32_t>& around(uint32_t v) const { return around_[v]; }
   const std::vector<Tri>& triangles() const { return tris_; }
+  // Numbers triangles afresh (for trees listed anew: a tile of star_bound).
+  void renumber() { ids_.clear(), tris_.clear(); }
 
  private:
   const Mesh& dt_;

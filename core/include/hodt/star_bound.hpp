@@ -36,9 +36,11 @@ class StarDecoder;  // (star_decode.hpp)
 
 struct StarBoundLimits {
   // Fans as prefix trees (a node per triangle, 12 bytes; 16 more per fan, and
-  // with decode 37 more per fan): per vertex, and in
-  // all; vertices beyond are left out (their terms at their best), and when
-  // more than max_left_out of them are, the bound is not worth its steps.
+  // with decode 37 more per fan): per vertex (vertices beyond are left out,
+  // their terms at their best; when more than max_left_out of them are, the
+  // bound is not worth its steps), and per tile (more in all: tiles of
+  // vertices whose fans agree only within each, a weaker bound in the memory
+  // of one).
   uint64_t max_nodes_per_vertex = 50'000;
   uint64_t max_nodes = 16'000'000;
   double max_left_out = 0.05;
@@ -48,6 +50,10 @@ struct StarBoundLimits {
   // A bound proven already (as the objective's, not the relaxation's sign; NAN
   // for none): for counts, sweeps also stop once they cannot pass it.
   double known_bound = NAN;
+  // Fan tree nodes the sweeps visit, in all (each corner's update passes over
+  // its vertex's trees: about 3e8 a second natively), shared among the tiles by
+  // their vertices: the bound's time.
+  uint64_t max_visits = 60'000'000'000;
   // A gap left: keep the fans and their values under the multipliers, to read
   // triangulations off them (StarDecoder), within this many fans tried per vertex.
   bool decode = false;
@@ -57,7 +63,8 @@ struct StarBoundLimits {
 
 struct StarBound {
   double bound;           // no k-OD triangulation is better
-  uint64_t nodes = 0;     // of the fans' prefix trees
+  uint64_t nodes = 0;     // of the fans' prefix trees (the largest tile's)
+  uint32_t tiles = 1;     // (more than one: no decoder)
   uint32_t left_out = 0;  // vertices whose fans were over the budgets
   std::shared_ptr<const StarDecoder> decoder;  // (decode, a gap left, no vertex left out)
 };
