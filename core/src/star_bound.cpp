@@ -75,13 +75,14 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   auto relaxed = [&](int64_t sum) {
     return integral ? static_cast<double>(floor_div(sum, kUnit)) : static_cast<double>(-floor_div(-sum, kUnit)) / scale;
   };
-  uint32_t tiles = 0, done = 0;
+  uint32_t tiles = 0, done = 0;  // (done: the vertices of the tiles swept; progress: listed + swept)
   uint64_t visits = 0;  // (fan tree nodes, by the sweeps: their work)
   std::vector<uint32_t> seq, scratch;
   std::vector<int64_t> acc, lambda, best_lambda;
   std::vector<uint8_t> has;
   std::vector<std::pair<uint32_t, double>> block;  // (corner, margin)
-  for (uint32_t v = 0; v <= n;) {
+  uint32_t v = 0;  // (the next vertex to list)
+  do {
     // List the next tile.
     members.clear();
     t.truncate(0, 0), t.first_node.clear(), t.first_leaf.clear();
@@ -98,7 +99,7 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
       in[v] = listed;
       out.left_out += !listed;
       members.push_back(v);
-      if (limits.progress && v % 4096 == 0 && !limits.progress(v, 2.0 * n)) throw Cancelled();
+      if (limits.progress && v % 4096 == 0 && !limits.progress(v + done, 2.0 * n)) throw Cancelled();
     }
     if (out.left_out > limits.max_left_out * n) return std::nullopt;
     const bool whole = tiles == 0 && v == n;  // (one tile: every vertex, numbered as the vertices)
@@ -222,7 +223,7 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
         for (const auto& [c, mg] : block) seen[c] = clock;
       }
       const int64_t now = bound_now();
-      if (limits.progress && !limits.progress(n + (done + static_cast<double>(sweep + 1) * m / limits.iterations), 2.0 * n))
+      if (limits.progress && !limits.progress(v + done + static_cast<double>(sweep + 1) * m / limits.iterations, 2.0 * n))
         throw Cancelled();
       const int64_t gained = best - now;
       if (now < best && whole && limits.decode) best_lambda = lambda;
@@ -255,8 +256,7 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
       out.decoder = std::make_shared<const StarDecoder>(dt, std::move(t), tris, std::move(value),
                                                         limits.decode_steps_per_vertex * n);
     }
-    if (v == n) break;
-  }
+  } while (v < n);
   out.tiles = tiles;
   out.bound = static_cast<double>(sign) * relaxed(total);
   return out;

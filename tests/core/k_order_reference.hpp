@@ -1,9 +1,15 @@
 // The reference at order k: brute force, every k-OD triangulation of the
-// instance enumerated.
+// instance enumerated; and the small instances the order-k tests run over.
 #pragma once
 #include <cstdint>
+#include <initializer_list>
 
+#include "generators.hpp"
+#include "hodt/delaunay.hpp"
+#include "hodt/first_order.hpp"
 #include "hodt/k_order.hpp"
+#include "hodt/points.hpp"
+#include "hodt/region_engine.hpp"
 #include "hodt/solve_options.hpp"
 
 namespace hodt::test {
@@ -12,6 +18,19 @@ inline KOrderResult k_order_brute_force(const FirstOrder& fo, Objective o, uint3
   SolveOptions bf;
   bf.method = Method::BruteForce;
   return solve_k_order(fo, o, k, bf, max_nodes);
+}
+
+// f(k, seed, fo, structure) for each order k and seed 1..seeds: the mixed
+// instance (random, integer grid with equal heights, cocircular) of seed *
+// salt + k, its first order structure and its order-k candidates.
+template <class F>
+void for_small_k_instances(std::initializer_list<uint32_t> orders, uint64_t seeds, uint64_t salt, const F& f) {
+  for (const uint32_t k : orders)
+    for (uint64_t seed = 1; seed <= seeds; ++seed) {
+      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * salt + k, 1)).xyz));
+      const KOrderStructure structure(fo.base, k, {});
+      f(k, seed, fo, structure);
+    }
 }
 
 }  // namespace hodt::test

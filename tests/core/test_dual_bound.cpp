@@ -189,46 +189,42 @@ TEST_CASE("dual bound: only sums of moderate integers over whole graphs") {
 
 TEST_CASE("dual proof over the order-k model: what it proves is the brute-force optimum (k = 2, 3, 4)") {
   int proven = 0, found = 0, runs = 0;
-  for (uint32_t k : {2u, 3u, 4u}) {
-    for (uint64_t seed = 1; seed <= 100; ++seed) {
-      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 13 + k, 1)).xyz));
-      const Mesh& dt = fo.base;
-      const KOrderStructure structure(dt, k, {});
-      for (const auto& oi : objectives()) {
-        const RegionEngine engine(dt, oi.objective, structure, k, RegionLimits{}, {});
-        if (engine.R.incomplete || !integral_sum(engine.model.graph)) continue;
-        const double want = k_order_brute_force(fo, oi.objective, k).value;
-        // The incumbent: Delaunay's regions; short ascents and a DP allowed
-        // almost nothing, so the pruning and the rounds do the work.
-        const RegionModel& model = engine.model;
-        const double incumbent = evaluate(oi.objective, engine.R.triangulation(dt, std::vector<uint32_t>(engine.R.regions.size(), 0)));
-        DualLimits limits;
-        limits.max_sweeps = 1 + seed % 20;
-        limits.cluster_entries = seed % 2 ? 1.0 : 4096.0;
-        const DualProof d(model.graph, limits, incumbent);
-        CAPTURE(k);
-        CAPTURE(seed);
-        CAPTURE(oi.id);
-        REQUIRE(d.applies());
-        CHECK(not_past(oi.sense, *d.bound(), want));
-        StateDpLimits dp;
-        dp.max_table = 1 + seed % 8;
-        const DualProof::Proof p = d.prove(incumbent, dp);
-        ++runs;
-        if (!p.proven) continue;
-        ++proven;
-        if (p.better) {
-          ++found;
-          const Mesh m = engine.R.triangulation(dt, model.region_states(*p.better));
-          CHECK(evaluate(oi.objective, m) == want);
-          CHECK(p.better_value == want);
-          CHECK(is_k_order(m, dt, k));
-        } else {
-          CHECK(incumbent == want);
-        }
+  for_small_k_instances({2u, 3u, 4u}, 100, 13, [&](uint32_t k, uint64_t seed, const FirstOrder& fo, const KOrderStructure& structure) {
+    const Mesh& dt = fo.base;
+    for (const auto& oi : objectives()) {
+      const RegionEngine engine(dt, oi.objective, structure, k, RegionLimits{}, {});
+      if (engine.R.incomplete || !integral_sum(engine.model.graph)) continue;
+      const double want = k_order_brute_force(fo, oi.objective, k).value;
+      // The incumbent: Delaunay's regions; short ascents and a DP allowed
+      // almost nothing, so the pruning and the rounds do the work.
+      const RegionModel& model = engine.model;
+      const double incumbent = evaluate(oi.objective, engine.R.triangulation(dt, std::vector<uint32_t>(engine.R.regions.size(), 0)));
+      DualLimits limits;
+      limits.max_sweeps = 1 + seed % 20;
+      limits.cluster_entries = seed % 2 ? 1.0 : 4096.0;
+      const DualProof d(model.graph, limits, incumbent);
+      CAPTURE(k);
+      CAPTURE(seed);
+      CAPTURE(oi.id);
+      REQUIRE(d.applies());
+      CHECK(not_past(oi.sense, *d.bound(), want));
+      StateDpLimits dp;
+      dp.max_table = 1 + seed % 8;
+      const DualProof::Proof p = d.prove(incumbent, dp);
+      ++runs;
+      if (!p.proven) continue;
+      ++proven;
+      if (p.better) {
+        ++found;
+        const Mesh m = engine.R.triangulation(dt, model.region_states(*p.better));
+        CHECK(evaluate(oi.objective, m) == want);
+        CHECK(p.better_value == want);
+        CHECK(is_k_order(m, dt, k));
+      } else {
+        CHECK(incumbent == want);
       }
     }
-  }
+  });
   MESSAGE(proven << " of " << runs << " proofs over order-k models, " << found << " finding a better optimum");
   CHECK(proven > runs / 2);
   CHECK(found > 50);

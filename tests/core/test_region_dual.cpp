@@ -100,63 +100,60 @@ TEST_CASE("fill graph: the region's triangulations, their best by entry, and a f
 
 TEST_CASE("region dual: regions read through their graphs never take the bound past the brute-force optimum, and prove only the optimum") {
   int runs = 0, tight = 0, relaxed = 0, found_optimum = 0, proven = 0, better_found = 0, by_pruning = 0;
-  for (uint32_t k : {2u, 3u, 4u})
-    for (uint64_t seed = 1; seed <= 60; ++seed) {
-      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 11 + k, 1)).xyz));
-      const Mesh& dt = fo.base;
-      const KOrderStructure structure(dt, k, {});
-      for (const auto& oi : objectives()) {
-        RegionEngine engine(dt, oi.objective, structure, k, RegionLimits{}, {});
-        if (!integral_sum(engine.model.graph) || engine.R.incomplete || engine.model.graph.relaxed_terms) continue;
-        if (!forget_lists(engine.R)) continue;
-        const double want = k_order_brute_force(fo, oi.objective, k).value;
-        RegionDualLimits limits;
-        limits.dual.max_sweeps = seed % 3 ? 1 + seed % 50 : 1;  // (short ascents: the pruning and the DP do the work)
-        limits.dual.cluster_entries = seed % 2 ? 1.0 : 4096.0;
-        if (seed % 5 == 0) limits.first_states = limits.max_states = 20;  // (some graphs too large: left to the relaxation)
-        const RegionDual d = region_dual(dt, engine.R, oi.objective, engine.cand, engine.terms, &dt, limits);
-        CAPTURE(k);
-        CAPTURE(seed);
-        CAPTURE(oi.id);
-        if (!d.graphs) continue;
-        REQUIRE(d.bound);
-        ++runs;
-        relaxed += d.relaxed > 0;
-        CHECK(not_past(oi.sense, *d.bound, want));
-        tight += *d.bound == want;
-        // What the descent found (from the dual, and from Delaunay): k-OD triangulations no better than the bound.
-        CHECK(d.found.size() >= 2);
-        bool optimum = false;
-        REQUIRE(d.values.size() == d.found.size());
-        for (size_t i = 0; i < d.found.size(); ++i) {
-          const Mesh m = mesh_of(dt.coords, d.found[i]);
-          CHECK(is_k_order(m, dt, k));
-          const double v = evaluate(oi.objective, m);
-          CHECK(d.values[i] == v);
-          CHECK(not_past(oi.sense, *d.bound, v));
-          CHECK(not_past(oi.sense, want, v));
-          optimum = optimum || v == want;
+  for_small_k_instances({2u, 3u, 4u}, 60, 11, [&](uint32_t k, uint64_t seed, const FirstOrder& fo, const KOrderStructure& structure) {
+    const Mesh& dt = fo.base;
+    for (const auto& oi : objectives()) {
+      RegionEngine engine(dt, oi.objective, structure, k, RegionLimits{}, {});
+      if (!integral_sum(engine.model.graph) || engine.R.incomplete || engine.model.graph.relaxed_terms) continue;
+      if (!forget_lists(engine.R)) continue;
+      const double want = k_order_brute_force(fo, oi.objective, k).value;
+      RegionDualLimits limits;
+      limits.dual.max_sweeps = seed % 3 ? 1 + seed % 50 : 1;  // (short ascents: the pruning and the DP do the work)
+      limits.dual.cluster_entries = seed % 2 ? 1.0 : 4096.0;
+      if (seed % 5 == 0) limits.first_states = limits.max_states = 20;  // (some graphs too large: left to the relaxation)
+      const RegionDual d = region_dual(dt, engine.R, oi.objective, engine.cand, engine.terms, &dt, limits);
+      CAPTURE(k);
+      CAPTURE(seed);
+      CAPTURE(oi.id);
+      if (!d.graphs) continue;
+      REQUIRE(d.bound);
+      ++runs;
+      relaxed += d.relaxed > 0;
+      CHECK(not_past(oi.sense, *d.bound, want));
+      tight += *d.bound == want;
+      // What the descent found (from the dual, and from Delaunay): k-OD triangulations no better than the bound.
+      CHECK(d.found.size() >= 2);
+      bool optimum = false;
+      REQUIRE(d.values.size() == d.found.size());
+      for (size_t i = 0; i < d.found.size(); ++i) {
+        const Mesh m = mesh_of(dt.coords, d.found[i]);
+        CHECK(is_k_order(m, dt, k));
+        const double v = evaluate(oi.objective, m);
+        CHECK(d.values[i] == v);
+        CHECK(not_past(oi.sense, *d.bound, v));
+        CHECK(not_past(oi.sense, want, v));
+        optimum = optimum || v == want;
+      }
+      found_optimum += optimum;
+      // The proof: what it proves optimal is the optimum.
+      if (d.proven) {
+        ++proven;
+        by_pruning += *d.bound != want;
+        double best = evaluate(oi.objective, dt);
+        for (const auto& tris : d.found) {
+          const double v = evaluate(oi.objective, mesh_of(dt.coords, tris));
+          if (better(oi.sense, v, best)) best = v;
         }
-        found_optimum += optimum;
-        // The proof: what it proves optimal is the optimum.
-        if (d.proven) {
-          ++proven;
-          by_pruning += *d.bound != want;
-          double best = evaluate(oi.objective, dt);
-          for (const auto& tris : d.found) {
-            const double v = evaluate(oi.objective, mesh_of(dt.coords, tris));
-            if (better(oi.sense, v, best)) best = v;
-          }
-          if (d.optimum) {
-            CHECK(is_k_order(*d.optimum, dt, k));
-            CHECK(better(oi.sense, evaluate(oi.objective, *d.optimum), best));
-            best = evaluate(oi.objective, *d.optimum);
-            ++better_found;
-          }
-          CHECK(best == want);
+        if (d.optimum) {
+          CHECK(is_k_order(*d.optimum, dt, k));
+          CHECK(better(oi.sense, evaluate(oi.objective, *d.optimum), best));
+          best = evaluate(oi.objective, *d.optimum);
+          ++better_found;
         }
+        CHECK(best == want);
       }
     }
+  });
   MESSAGE(runs << " bounds over regions read through their graphs, " << tight << " equal to the optimum, " << relaxed
                 << " with some regions relaxed, " << found_optimum << " with the optimum found by the descent, " << proven
                 << " proven (" << better_found << " by a better optimum, " << by_pruning
@@ -171,32 +168,29 @@ TEST_CASE("region dual: regions read through their graphs never take the bound p
 
 TEST_CASE("region threshold bound: min-max objectives over regions read through their graphs, never past the optimum") {
   int runs = 0, tight = 0;
-  for (uint32_t k : {2u, 3u, 4u})
-    for (uint64_t seed = 1; seed <= 40; ++seed) {
-      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 17 + k, 1)).xyz));
-      const Mesh& dt = fo.base;
-      const KOrderStructure structure(dt, k, {});
-      for (const auto& oi : objectives()) {
-        RegionEngine engine(dt, oi.objective, structure, k, RegionLimits{}, {});
-        if (engine.terms.terms().combine != TermCombine::Max || engine.R.incomplete) continue;
-        if (!forget_lists(engine.R)) continue;
-        const double want = k_order_brute_force(fo, oi.objective, k).value;
-        const double delaunay_value = evaluate(oi.objective, dt);
-        RegionDualLimits limits;
-        limits.dual.max_sweeps = 1 + seed % 100;
-        if (seed % 5 == 0) limits.first_states = limits.max_states = 20;
-        CAPTURE(k);
-        CAPTURE(seed);
-        CAPTURE(oi.id);
-        const auto b = region_threshold_bound(dt, engine.R, oi.objective, engine.cand, engine.terms,
-                                              engine.terms.floor(), delaunay_value, limits);
-        if (!b) continue;
-        ++runs;
-        CHECK(*b <= want);
-        CHECK(*b > engine.terms.floor());
-        tight += *b == want;
-      }
+  for_small_k_instances({2u, 3u, 4u}, 40, 17, [&](uint32_t k, uint64_t seed, const FirstOrder& fo, const KOrderStructure& structure) {
+    const Mesh& dt = fo.base;
+    for (const auto& oi : objectives()) {
+      RegionEngine engine(dt, oi.objective, structure, k, RegionLimits{}, {});
+      if (engine.terms.terms().combine != TermCombine::Max || engine.R.incomplete) continue;
+      if (!forget_lists(engine.R)) continue;
+      const double want = k_order_brute_force(fo, oi.objective, k).value;
+      const double delaunay_value = evaluate(oi.objective, dt);
+      RegionDualLimits limits;
+      limits.dual.max_sweeps = 1 + seed % 100;
+      if (seed % 5 == 0) limits.first_states = limits.max_states = 20;
+      CAPTURE(k);
+      CAPTURE(seed);
+      CAPTURE(oi.id);
+      const auto b = region_threshold_bound(dt, engine.R, oi.objective, engine.cand, engine.terms,
+                                            engine.terms.floor(), delaunay_value, limits);
+      if (!b) continue;
+      ++runs;
+      CHECK(*b <= want);
+      CHECK(*b > engine.terms.floor());
+      tight += *b == want;
     }
+  });
   MESSAGE(runs << " threshold bounds, " << tight << " equal to the optimum");
   CHECK(runs > 100);
   CHECK(tight > runs / 2);
@@ -204,77 +198,74 @@ TEST_CASE("region threshold bound: min-max objectives over regions read through 
 
 TEST_CASE("glued regions: the same k-OD triangulations, and a dual over them never past the optimum") {
   int runs = 0, tight = 0, glued_runs = 0, proven = 0;
-  for (uint32_t k : {2u, 3u, 4u})
-    for (uint64_t seed = 1; seed <= 120; ++seed) {
-      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 13 + k, 1)).xyz));
-      const Mesh& dt = fo.base;
-      const KOrderStructure structure(dt, k, {});
-      CAPTURE(k);
-      CAPTURE(seed);
-      // Glued once and twice, every pair allowed: each region is a union of the
-      // first ones, and the product of the regions' triangulations is the same.
-      Regions R = k_order_skeleton(dt, k, structure.useful, {});
-      RegionLimits all;
-      all.max_states_per_region = 1'000'000;
-      all.first_pass_states = all.max_states_per_region_dp = 0;
-      all.max_region_triangles = 1'000;
-      const auto product = [&](const Regions& g) {
-        double p = 1;
-        for (const Region& region : g.regions) {
-          REQUIRE(region.complete);
-          p *= static_cast<double>(region.states.size());
-        }
-        return p;
-      };
-      enumerate_regions(dt, R, all);
-      const double want_count = product(R);
-      for (int level = 1; level <= 2; ++level) {
-        const Regions next = glue_pairs(dt, R, [](uint32_t, uint32_t) { return true; });
-        CHECK(next.regions.size() <= R.regions.size());
-        glued_runs += next.regions.size() < R.regions.size();
-        for (uint32_t t = 0; t < dt.num_triangles(); ++t)
-          for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
-            const int32_t twin = dt.halfedges[e];
-            if (twin < 0) continue;
-            const bool apart = next.region_of_triangle[t] != next.region_of_triangle[static_cast<uint32_t>(twin) / 3];
-            if (apart) CHECK(next.fixed[e]);  // (regions meet only at fixed edges)
-            if (!next.fixed[e]) CHECK(!apart);
-          }
-        R = next;
-        enumerate_regions(dt, R, all);
-        CHECK(product(R) == want_count);
+  for_small_k_instances({2u, 3u, 4u}, 120, 13, [&](uint32_t k, uint64_t seed, const FirstOrder& fo, const KOrderStructure& structure) {
+    const Mesh& dt = fo.base;
+    CAPTURE(k);
+    CAPTURE(seed);
+    // Glued once and twice, every pair allowed: each region is a union of the
+    // first ones, and the product of the regions' triangulations is the same.
+    Regions R = k_order_skeleton(dt, k, structure.useful, {});
+    RegionLimits all;
+    all.max_states_per_region = 1'000'000;
+    all.first_pass_states = all.max_states_per_region_dp = 0;
+    all.max_region_triangles = 1'000;
+    const auto product = [&](const Regions& g) {
+      double p = 1;
+      for (const Region& region : g.regions) {
+        REQUIRE(region.complete);
+        p *= static_cast<double>(region.states.size());
       }
-      // The dual over the glued regions, each read through its graph.
-      for (const auto& oi : objectives()) {
-        if (objective_terms(oi.objective, dt).combine != TermCombine::Sum) continue;
-        Regions forgotten = R;
-        if (!forget_lists(forgotten)) continue;
-        const RegionTerms forgotten_terms(dt, forgotten, oi.objective, &structure.candidates);
-        const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
-        RegionDualLimits limits;
-        limits.dual.max_sweeps = 1 + seed % 60;
-        const RegionDual d = region_dual(dt, forgotten, oi.objective, structure.candidates, forgotten_terms, &dt, limits);
-        const std::string name(oi.id);
-        CAPTURE(name);
-        if (!d.graphs || !d.bound) continue;
-        ++runs;
-        CHECK(not_past(oi.sense, *d.bound, want));
-        tight += *d.bound == want;
-        for (size_t i = 0; i < d.found.size(); ++i) {
-          const Mesh m = mesh_of(dt.coords, d.found[i]);
-          CHECK(is_k_order(m, dt, k));
-          CHECK(not_past(oi.sense, want, evaluate(oi.objective, m)));
+      return p;
+    };
+    enumerate_regions(dt, R, all);
+    const double want_count = product(R);
+    for (int level = 1; level <= 2; ++level) {
+      const Regions next = glue_pairs(dt, R, [](uint32_t, uint32_t) { return true; });
+      CHECK(next.regions.size() <= R.regions.size());
+      glued_runs += next.regions.size() < R.regions.size();
+      for (uint32_t t = 0; t < dt.num_triangles(); ++t)
+        for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) {
+          const int32_t twin = dt.halfedges[e];
+          if (twin < 0) continue;
+          const bool apart = next.region_of_triangle[t] != next.region_of_triangle[static_cast<uint32_t>(twin) / 3];
+          if (apart) CHECK(next.fixed[e]);  // (regions meet only at fixed edges)
+          if (!next.fixed[e]) CHECK(!apart);
         }
-        if (d.proven) {
-          ++proven;
-          double best = evaluate(oi.objective, dt);
-          for (const double v : d.values)
-            if (better(oi.sense, v, best)) best = v;
-          if (d.optimum) best = evaluate(oi.objective, *d.optimum);
-          CHECK(best == want);
-        }
+      R = next;
+      enumerate_regions(dt, R, all);
+      CHECK(product(R) == want_count);
+    }
+    // The dual over the glued regions, each read through its graph.
+    for (const auto& oi : objectives()) {
+      if (objective_terms(oi.objective, dt).combine != TermCombine::Sum) continue;
+      Regions forgotten = R;
+      if (!forget_lists(forgotten)) continue;
+      const RegionTerms forgotten_terms(dt, forgotten, oi.objective, &structure.candidates);
+      const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
+      RegionDualLimits limits;
+      limits.dual.max_sweeps = 1 + seed % 60;
+      const RegionDual d = region_dual(dt, forgotten, oi.objective, structure.candidates, forgotten_terms, &dt, limits);
+      const std::string name(oi.id);
+      CAPTURE(name);
+      if (!d.graphs || !d.bound) continue;
+      ++runs;
+      CHECK(not_past(oi.sense, *d.bound, want));
+      tight += *d.bound == want;
+      for (size_t i = 0; i < d.found.size(); ++i) {
+        const Mesh m = mesh_of(dt.coords, d.found[i]);
+        CHECK(is_k_order(m, dt, k));
+        CHECK(not_past(oi.sense, want, evaluate(oi.objective, m)));
+      }
+      if (d.proven) {
+        ++proven;
+        double best = evaluate(oi.objective, dt);
+        for (const double v : d.values)
+          if (better(oi.sense, v, best)) best = v;
+        if (d.optimum) best = evaluate(oi.objective, *d.optimum);
+        CHECK(best == want);
       }
     }
+  });
   MESSAGE(runs << " bounds over glued regions, " << tight << " equal to the optimum, " << proven << " proven; "
                 << glued_runs << " gluings");
   CHECK(glued_runs > 300);

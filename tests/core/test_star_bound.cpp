@@ -20,33 +20,30 @@ using namespace hodt::test;
 
 TEST_CASE("star bound: never past the brute-force optimum (k = 1 to 4), with fans left out too, and in tiles") {
   int runs = 0, tight = 0, partial = 0, tiled = 0;
-  for (uint32_t k : {1u, 2u, 3u, 4u})
-    for (uint64_t seed = 1; seed <= 100; ++seed) {
-      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 19 + k, 1)).xyz));
-      const Mesh& dt = fo.base;
-      const KOrderStructure structure(dt, k, {});
-      for (const auto& oi : objectives()) {
-        const double delaunay_value = evaluate(oi.objective, dt);
-        StarBoundLimits limits;
-        limits.iterations = 1 + static_cast<uint32_t>(seed % 3) * 100;
-        if (seed % 4 == 0) limits.max_nodes_per_vertex = 1 + seed % 7, limits.max_left_out = 1;  // (some vertices left out)
-        if (seed % 4 == 1) limits.max_nodes = 20 + seed % 90, limits.max_left_out = 1;  // (tiles)
-        if (seed % 8 == 2) limits.max_visits = seed * 50;  // (sweeps stopped part way)
-        const auto b = star_bound(dt, oi.objective, structure.candidates, delaunay_value, limits);
-        if (!b) continue;
-        const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
-        CAPTURE(k);
-        CAPTURE(seed);
-        CAPTURE(std::string(oi.id));
-        ++runs;
-        partial += b->left_out > 0;
-        tiled += b->tiles > 1;
-        if (oi.objective != Objective::MinTotalEdgeLength) CHECK(b->bound == std::floor(b->bound));
-        if (oi.sense == Sense::Max) CHECK(b->bound >= want);
-        else CHECK(b->bound <= want);
-        tight += b->bound == want;
-      }
+  for_small_k_instances({1u, 2u, 3u, 4u}, 100, 19, [&](uint32_t k, uint64_t seed, const FirstOrder& fo, const KOrderStructure& structure) {
+    const Mesh& dt = fo.base;
+    for (const auto& oi : objectives()) {
+      const double delaunay_value = evaluate(oi.objective, dt);
+      StarBoundLimits limits;
+      limits.iterations = 1 + static_cast<uint32_t>(seed % 3) * 100;
+      if (seed % 4 == 0) limits.max_nodes_per_vertex = 1 + seed % 7, limits.max_left_out = 1;  // (some vertices left out)
+      if (seed % 4 == 1) limits.max_nodes = 20 + seed % 90, limits.max_left_out = 1;  // (tiles)
+      if (seed % 8 == 2) limits.max_visits = seed * 50;  // (sweeps stopped part way)
+      const auto b = star_bound(dt, oi.objective, structure.candidates, delaunay_value, limits);
+      if (!b) continue;
+      const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
+      CAPTURE(k);
+      CAPTURE(seed);
+      CAPTURE(std::string(oi.id));
+      ++runs;
+      partial += b->left_out > 0;
+      tiled += b->tiles > 1;
+      if (oi.objective != Objective::MinTotalEdgeLength) CHECK(b->bound == std::floor(b->bound));
+      if (oi.sense == Sense::Max) CHECK(b->bound >= want);
+      else CHECK(b->bound <= want);
+      tight += b->bound == want;
     }
+  });
   MESSAGE(runs << " star bounds, " << tight << " equal to the optimum, " << partial << " with vertices left out, "
                << tiled << " in tiles");
   CHECK(runs > 1000);
@@ -82,40 +79,37 @@ TEST_CASE("star bound: sums only (counts, lengths); a triangulation's value is n
 // budgets stop the search part way (then nothing, never a partial answer).
 TEST_CASE("star decode: k-OD triangulations, never past the optimum, mostly at it") {
   int decoded = 0, optimal = 0, runs = 0;
-  for (uint32_t k : {2u, 3u, 4u})
-    for (uint64_t seed = 1; seed <= 60; ++seed) {
-      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 23 + k, 1)).xyz));
-      const Mesh& dt = fo.base;
-      const KOrderStructure structure(dt, k, {});
-      for (const auto& oi : objectives()) {
-        if (objective_terms(oi.objective, dt).combine != TermCombine::Sum) continue;
-        StarBoundLimits limits;
-        limits.decode = true;
-        if (seed % 5 == 0) limits.decode_steps_per_vertex = 1;
-        const double delaunay_value = evaluate(oi.objective, dt);
-        const auto b = star_bound(dt, oi.objective, structure.candidates, delaunay_value, limits);
-        if (!b) continue;
-        ++runs;
-        if (!b->decoder) continue;
-        std::vector<std::vector<Tri>> found = b->decoder->sweeps();
-        if (auto d = b->decoder->repair(dt)) found.push_back(std::move(*d));
-        if (found.empty()) continue;
-        const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
-        CAPTURE(k);
-        CAPTURE(seed);
-        CAPTURE(std::string(oi.id));
-        for (const std::vector<Tri>& tris : found) {
-          ++decoded;
-          REQUIRE(tris.size() == dt.num_triangles());
-          const Mesh m = mesh_of(dt.coords, tris);
-          CHECK(is_k_order(m, dt, k));
-          const double v = evaluate(oi.objective, m);
-          CHECK(!better(oi.sense, v, want));
-          CHECK(!better(oi.sense, v, b->bound));
-          optimal += v == want;
-        }
+  for_small_k_instances({2u, 3u, 4u}, 60, 23, [&](uint32_t k, uint64_t seed, const FirstOrder& fo, const KOrderStructure& structure) {
+    const Mesh& dt = fo.base;
+    for (const auto& oi : objectives()) {
+      if (objective_terms(oi.objective, dt).combine != TermCombine::Sum) continue;
+      StarBoundLimits limits;
+      limits.decode = true;
+      if (seed % 5 == 0) limits.decode_steps_per_vertex = 1;
+      const double delaunay_value = evaluate(oi.objective, dt);
+      const auto b = star_bound(dt, oi.objective, structure.candidates, delaunay_value, limits);
+      if (!b) continue;
+      ++runs;
+      if (!b->decoder) continue;
+      std::vector<std::vector<Tri>> found = b->decoder->sweeps();
+      if (auto d = b->decoder->repair(dt)) found.push_back(std::move(*d));
+      if (found.empty()) continue;
+      const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
+      CAPTURE(k);
+      CAPTURE(seed);
+      CAPTURE(std::string(oi.id));
+      for (const std::vector<Tri>& tris : found) {
+        ++decoded;
+        REQUIRE(tris.size() == dt.num_triangles());
+        const Mesh m = mesh_of(dt.coords, tris);
+        CHECK(is_k_order(m, dt, k));
+        const double v = evaluate(oi.objective, m);
+        CHECK(!better(oi.sense, v, want));
+        CHECK(!better(oi.sense, v, b->bound));
+        optimal += v == want;
       }
     }
+  });
   MESSAGE(runs << " star bounds with a gap to Delaunay, " << decoded << " triangulations decoded, " << optimal << " optimal");
   CHECK(decoded > 200);
   CHECK(optimal > decoded / 2);
@@ -144,28 +138,25 @@ TEST_CASE("star decode: a DEM at k = 8, every sweep a k-OD triangulation") {
 // triangulation's max is below the worst vertex's best fan.
 TEST_CASE("star floor: min-max objectives, never past the brute-force optimum (k = 1 to 4)") {
   int runs = 0, tight = 0;
-  for (uint32_t k : {1u, 2u, 3u, 4u})
-    for (uint64_t seed = 1; seed <= 40; ++seed) {
-      const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 29 + k, 1)).xyz));
-      const KOrderStructure structure(fo.base, k, {});
-      for (const auto& oi : objectives()) {
-        StarBoundLimits limits;
-        if (seed % 4 == 0) limits.max_nodes_per_vertex = 1 + seed % 5;  // (some vertices say nothing)
-        const auto f = star_floor(fo.base, oi.objective, structure.candidates, limits);
-        if (objective_terms(oi.objective, fo.base).combine != TermCombine::Max) {
-          CHECK(!f);
-          continue;
-        }
-        REQUIRE(f);
-        const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
-        CAPTURE(k);
-        CAPTURE(seed);
-        CAPTURE(std::string(oi.id));
-        CHECK(*f <= want);
-        ++runs;
-        tight += *f == want;
+  for_small_k_instances({1u, 2u, 3u, 4u}, 40, 29, [&](uint32_t k, uint64_t seed, const FirstOrder& fo, const KOrderStructure& structure) {
+    for (const auto& oi : objectives()) {
+      StarBoundLimits limits;
+      if (seed % 4 == 0) limits.max_nodes_per_vertex = 1 + seed % 5;  // (some vertices say nothing)
+      const auto f = star_floor(fo.base, oi.objective, structure.candidates, limits);
+      if (objective_terms(oi.objective, fo.base).combine != TermCombine::Max) {
+        CHECK(!f);
+        continue;
       }
+      REQUIRE(f);
+      const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
+      CAPTURE(k);
+      CAPTURE(seed);
+      CAPTURE(std::string(oi.id));
+      CHECK(*f <= want);
+      ++runs;
+      tight += *f == want;
     }
+  });
   MESSAGE(runs << " floors, " << tight << " equal to the optimum");
   CHECK(runs > 800);
   CHECK(tight > runs / 10);
