@@ -39,8 +39,27 @@ async function ownDem(hodt) {
   const { readPointFile } = await import('../dist/loaders/index.js');
   const cloud = await readPointFile(bytes);
   const text = cloud ? null : hodt.readPoints(bytes, path);
-  const [xyz, maxEdge] = cloud ? [cloud.xyz, cloud.maxEdge] : [text.points, text.maxEdge];
-  return [`${path} (${xyz.length / 3} points${maxEdge ? `, maxEdge ${maxEdge}` : ''})`, xyz, maxEdge];
+  let [xyz, maxEdge] = cloud ? [cloud.xyz, cloud.maxEdge] : [text.points, text.maxEdge];
+  const geographic = cloud?.crs === 'EPSG:4326';
+  if (geographic) [xyz, maxEdge] = toLocalMetres(xyz, maxEdge);
+  return [`${path} (${xyz.length / 3} points${geographic ? ', longitude and latitude to local metres' : ''}${maxEdge ? `, maxEdge ${maxEdge}` : ''})`, xyz, maxEdge];
+}
+
+// Longitude and latitude (WGS 84 degrees) to metres east and north of the
+// points' centre, by the ellipsoid's radii of curvature there (an equirectangular
+// projection: within a DEM tile, a few centimetres from a conformal one). Heights
+// stay as they are. The geometry keeps the reader's rounding of the raster's
+// cell centres, as a reprojected DEM does: near-degenerate, not an exact grid.
+function toLocalMetres(xyz, maxEdge) {
+  let lon = 0, lat = 0;
+  const n = xyz.length / 3;
+  for (let i = 0; i < xyz.length; i += 3) lon += xyz[i] / n, lat += xyz[i + 1] / n;
+  const a = 6378137, e2 = 0.00669437999014, rad = Math.PI / 180, s = Math.sin(lat * rad);
+  const east = (a / Math.sqrt(1 - e2 * s * s)) * Math.cos(lat * rad) * rad; // metres per degree
+  const north = ((a * (1 - e2)) / (1 - e2 * s * s) ** 1.5) * rad;
+  const out = new Float64Array(xyz.length);
+  for (let i = 0; i < xyz.length; i += 3) out.set([(xyz[i] - lon) * east, (xyz[i + 1] - lat) * north, xyz[i + 2]], i);
+  return [out, maxEdge ? maxEdge * Math.max(east, north) : maxEdge];
 }
 
 // only: which sets (volcano, sample, own; all by default), orders and objectives.

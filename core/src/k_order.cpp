@@ -400,6 +400,20 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   Regions skeleton = k_order_skeleton(dt, k, useful, options.progress);
   if (k >= 2)  // (order 1 stays on the general engine: solve() takes the first order paths itself)
     if (auto quads = solve_as_quads(dt, o, skeleton, options, first_order)) return *quads;
+  // The ladder's rung below: every j-OD triangulation (j < k) is k-OD, so the
+  // result at order j gives each region one more listed triangulation and a
+  // start no worse. Up to order 8 the rung is k - 1, so that the answers only
+  // improve with k; above, half of k. From order 5 on (where the exact engine
+  // rarely answers on large inputs) it is solved before this order's structures
+  // are built: one order's regions in memory at a time.
+  std::optional<KOrderResult> lower;
+  auto solve_lower = [&] {
+    if (lower || k < 3) return;
+    SolveOptions lower_options = options;
+    lower_options.method = Method::Auto;
+    lower = solve_regions(fo, o, k <= 8 ? k - 1 : k / 2, lower_options, max_nodes, first_order, false);
+  };
+  if (k >= 5) solve_lower();
   RegionLimits budgets;
   budgets.max_nodes_per_region = max_nodes;
   const KOrderStructure structure(dt, k, std::move(useful), options.progress);
@@ -436,17 +450,10 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   Mesh start = k == 1 ? dt : first_order.get();
   double start_value = k == 1 ? evaluate(o, dt) : first_order.value;
   bool added = add_states_of(R, dt, start);
-  // A ladder: every j-OD triangulation (j < k) is k-OD, so the result at a lower
-  // order gives each region one more listed triangulation (and a start no
-  // worse). Order 4 is where the exact engine usually still answers; above 8,
-  // half of k.
-  if (k >= 3) {
-    SolveOptions lower_options = options;
-    lower_options.method = Method::Auto;
-    const uint32_t j = k <= 4 ? k - 1 : k <= 8 ? 4 : k / 2;
-    KOrderResult lower = solve_regions(fo, o, j, lower_options, max_nodes, first_order, false);
-    added = add_states_of(R, dt, lower.triangulation) || added;
-    if (better(sense, lower.value, start_value)) start = std::move(lower.triangulation), start_value = lower.value;
+  solve_lower();
+  if (lower) {
+    added = add_states_of(R, dt, lower->triangulation) || added;
+    if (better(sense, lower->value, start_value)) start = std::move(lower->triangulation), start_value = lower->value;
   }
   if (added) model = region_model(dt, R, o, {}, options.progress);
   const ListedBest listed = engine.best_listed(listed_states(R, start), options.progress);
