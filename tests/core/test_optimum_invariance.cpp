@@ -104,10 +104,15 @@ TEST_CASE("optimum invariant under exact changes of the input: swapped, mirrored
         }
         auto same = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)}); };
         auto beats = [&](double x, double optimum) { return !same(x, optimum) && (max ? x > optimum : x < optimum); };
-        for (const auto& [c, a] : answers) {
+        // (no structured bindings here: clang 14 lets no lambda, INFO's included, capture one)
+        for (const auto& ca : answers) {
+          const Change c = ca.first;
+          const Answer& a = ca.second;
           if (!a.optimal) continue;
           ++proven;
-          for (const auto& [d, b] : answers) {
+          for (const auto& db : answers) {
+            const Change d = db.first;
+            const Answer& b = db.second;
             ++compared;
             INFO("seed ", seed, " k ", k, " ", oi.id, ": optimum ", a.value, " as given ", static_cast<int>(c), "; as given ",
                  static_cast<int>(d), " value ", b.value, " bound ", b.bound, " optimal ", b.optimal);
