@@ -189,6 +189,17 @@ bool list_whole(const Mesh& dt, Objective o, RegionEngine& engine, const Progres
   return !R.incomplete;
 }
 
+// The region dual's sweeps. Strips side by side, as DEM grids give from k = 5,
+// couple along whole boundaries and the ascent climbs slowly: a 20k-cell DEM's
+// max-convex-edges bound is 34804 after 400 sweeps, 34391 after 1500, for 33872
+// found.
+constexpr uint32_t kDualSweeps = 1500;
+// A ladder's rung from order 5 on wants the dual's descents (its start's
+// quality), not its bound: a 40k-cell DEM crop at k = 6 found 19731 convex
+// vertices either way, in 141 s instead of 173, and 68854 convex edges for 68861,
+// in 147 s instead of 166 (without the dual: 19679 and 68854).
+constexpr uint32_t kRungDualSweeps = 150;
+
 // Counts over regions not listed whole: the dual reads them through their fill
 // graphs (region_dual.hpp); the best triangulation its descents found replaces
 // r when better, and its proof makes r optimal. Returns the bound.
@@ -203,14 +214,11 @@ bool list_whole(const Mesh& dt, Objective o, RegionEngine& engine, const Progres
 // bound 34227.)
 std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEngine& engine, KOrderResult& r,
                                            std::string& how, const Progress& progress, uint32_t max_glue = 0,
-                                           uint32_t max_sweeps = 1500) {
+                                           uint32_t max_sweeps = kDualSweeps) {
   const Sense sense = info(o).sense;
   RegionDualLimits limits;
   limits.dual.progress = limits.dp.progress = progress;
   limits.dp.max_table = 1 << 24;
-  // (Strips side by side, as DEM grids give from k = 5, couple along whole
-  // boundaries and the ascent climbs slowly: a 20k-cell DEM's max-convex-edges
-  // bound is 34804 after 400 sweeps, 34391 after 1500, for 33872 found.)
   limits.dual.max_sweeps = max_sweeps;
   std::optional<double> bound;
   // One reading of R: its descents' best replaces r when better, its bound
@@ -403,10 +411,13 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     if (auto quads = solve_as_quads(dt, o, skeleton, options, first_order)) return *quads;
   // The ladder's rung below: every j-OD triangulation (j < k) is k-OD, so the
   // result at order j gives each region one more listed triangulation and a
-  // start no worse. Up to order 8 the rung is k - 1, so that the answers only
-  // improve with k; above, half of k. From order 5 on (where the exact engine
+  // start no worse. Up to order 8 the rung is k - 1 (order 4 for k = 5 to 8 gave
+  // the 131k DEM fewer convex vertices at k = 6 than at k = 5); above, half of k.
+  // (A rung stops before the stars' bound and what follows it, so an answer can
+  // still trail the lower order's own.) From order 5 on (where the exact engine
   // rarely answers on large inputs) it is solved before this order's structures
-  // are built: one order's regions in memory at a time.
+  // are built: one order's regions in memory at a time; below, only if the
+  // exact engine does not answer.
   std::optional<KOrderResult> lower;
   auto solve_lower = [&] {
     if (lower || k < 3) return;
@@ -495,12 +506,8 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   }
   r.method = "heuristic";
   if (!bounded) {  // (a start for a higher order: nothing proven, but the regions' fill graphs may improve it)
-    // (From order 5 on, the rungs' duals climb 150 sweeps, not 1500: their
-    // descents are the start's quality, and the ascent is most of a rung's time.
-    // A 40k-cell DEM crop at k = 6: max-convex-vertices 19731 either way, in 141
-    // s instead of 173; max-convex-edges 68854 for 68861, in 147 s instead of 166;
-    // none at all: 19679 and 68854.)
-    if (counts && R.incomplete) bound_by_fill_graphs(dt, o, engine, r, how, options.progress, 0, k >= 5 ? 150 : 1500);
+    if (counts && R.incomplete)
+      bound_by_fill_graphs(dt, o, engine, r, how, options.progress, 0, k >= 5 ? kRungDualSweeps : kDualSweeps);
     r.optimal = false;
     return r;
   }
@@ -511,9 +518,9 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // triangulation that meets it.
   double bound = tighter(sense, relaxation_bound(model.graph, dl), global);
   if (description.combine == TermCombine::Max) bound = tighter(sense, bound, terms.floor());
-  // Counts: the dual first (it proves most instances on its own: a 131k-cell
-  // DEM at k = 4, max-convex-vertices, where the views cost twice the dual and
-  // proved nothing).
+  // Counts: the dual before the views (it proves most instances on its own: a
+  // 131k-cell DEM at k = 4, max-convex-vertices, where the views cost twice the
+  // dual and proved nothing).
   if (provable && better(sense, bound, r.value)) {
     if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, options.progress)) {
       if (r.optimal) return r;

@@ -2,6 +2,7 @@
 #pragma once
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace hodt::test {
@@ -39,6 +40,17 @@ inline std::vector<double> dem_points(int n, uint64_t seed) {
   for (int i = 0; i < n; ++i) {
     const double x = r.uniform(), y = r.uniform();
     p.insert(p.end(), {x, y, dem_height(x, y, seed) + 0.05 * r.uniform()});
+  }
+  return p;
+}
+
+// The same points in a random order (Fisher-Yates, seeded).
+inline std::vector<double> shuffled(std::vector<double> p, uint64_t seed) {
+  Rng r(seed);
+  const int n = static_cast<int>(p.size() / 3);
+  for (int i = n - 1; i > 0; --i) {
+    const int j = r.below(i + 1);
+    for (int k = 0; k < 3; ++k) std::swap(p[3 * i + k], p[3 * j + k]);
   }
   return p;
 }

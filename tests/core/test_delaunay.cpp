@@ -37,16 +37,6 @@ std::vector<double> integer_points(int n, int range, uint64_t seed) {
   return p;
 }
 
-std::vector<double> shuffled(std::vector<double> p, uint64_t seed) {
-  Rng r(seed);
-  const int n = static_cast<int>(p.size() / 3);
-  for (int i = n - 1; i > 0; --i) {
-    const int j = r.below(i + 1);
-    for (int k = 0; k < 3; ++k) std::swap(p[3 * i + k], p[3 * j + k]);
-  }
-  return p;
-}
-
 }  // namespace
 
 TEST_CASE("triangulator equals CGAL on random and DEM-like points") {

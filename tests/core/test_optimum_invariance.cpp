@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "generators.hpp"
 #include "hodt/delaunay.hpp"
@@ -25,6 +26,10 @@ namespace {
 
 enum class Change { None, Swap, Mirror, HalfTurn, Double, Shuffle };
 constexpr Change kChanges[] = {Change::None, Change::Swap, Change::Mirror, Change::HalfTurn, Change::Double, Change::Shuffle};
+const char* name(Change c) {
+  static const char* const names[] = {"as given", "swapped", "mirrored", "turned", "doubled", "shuffled"};
+  return names[static_cast<int>(c)];
+}
 
 std::vector<double> changed(std::vector<double> p, Change c, uint64_t seed) {
   const size_t n = p.size() / 3;
@@ -35,14 +40,7 @@ std::vector<double> changed(std::vector<double> p, Change c, uint64_t seed) {
     if (c == Change::HalfTurn) x = -x, y = -y;
     if (c == Change::Double) x *= 2, y *= 2, p[3 * i + 2] *= 2;
   }
-  if (c == Change::Shuffle) {
-    Rng r(seed);
-    for (size_t i = n; i > 1; --i) {
-      const size_t j = r.next() % i;
-      for (int a = 0; a < 3; ++a) std::swap(p[3 * (i - 1) + a], p[3 * j + a]);
-    }
-  }
-  return p;
+  return c == Change::Shuffle ? shuffled(std::move(p), seed) : p;
 }
 
 // Swap, mirror and turn change the lexicographic order of the points, so on
@@ -114,8 +112,8 @@ TEST_CASE("optimum invariant under exact changes of the input: swapped, mirrored
             const Change d = db.first;
             const Answer& b = db.second;
             ++compared;
-            INFO("seed ", seed, " k ", k, " ", oi.id, ": optimum ", a.value, " as given ", static_cast<int>(c), "; as given ",
-                 static_cast<int>(d), " value ", b.value, " bound ", b.bound, " optimal ", b.optimal);
+            INFO("seed ", seed, " k ", k, " ", oi.id, ": optimum ", a.value, " ", name(c), "; ", name(d), ": value ", b.value,
+                 " bound ", b.bound, " optimal ", b.optimal);
             CHECK_FALSE(beats(b.value, a.value));
             CHECK_FALSE(beats(a.value, b.bound));  // (the bound on the optimum's side: no triangulation is past it)
           }
