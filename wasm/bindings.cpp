@@ -333,7 +333,7 @@ val mesh_data(const TinData& tin) {
 }
 
 // The CLI. read(path) returns the file's text or bytes, or an Error. io (optional):
-// {writeFile(path, text), writeMesh(path, format, mesh)} returning nothing or an
+// {writeFile(path, bytes), writeMesh(path, format, mesh)} returning nothing or an
 // Error, progress(text), stderrIsTerminal.
 val runCli(val args, val read, val io) {
   std::vector<std::string> a;
@@ -349,7 +349,11 @@ val runCli(val args, val read, val io) {
   const bool have_io = io.typeOf().as<std::string>() == "object" && !io.isNull();
   if (have_io && is_function(io["writeFile"]))
     host.write = [&](const std::string& path, std::string_view bytes, std::string& error) {
-      const val failed = io.call<val>("writeFile", path, std::string(bytes));
+      // The file's bytes, copied out of the heap: a 50 MB JSON as a string would
+      // be decoded from UTF-8 here and encoded again by the writer.
+      const val copy = val::global("Uint8Array")
+                           .new_(emscripten::typed_memory_view(bytes.size(), reinterpret_cast<const uint8_t*>(bytes.data())));
+      const val failed = io.call<val>("writeFile", path, copy);
       error = reason_of(failed);
       return failed.isUndefined() || failed.isNull();
     };

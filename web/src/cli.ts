@@ -77,9 +77,10 @@ const notes: string[] = [];
 if (path !== undefined) {
   input = read(path);
   if (!(input instanceof Error)) {
-    const { sniffFormat, readGeoTIFF, readLAS, RASTER_MAX_EDGE_CELLS } = await import('./loaders/index.js');
+    const { sniffFormat } = await import('./loaders/sniff.js');
     const format = sniffFormat(input);
     if (format) {
+      const { readGeoTIFF, readLAS, RASTER_MAX_EDGE_CELLS } = await import('./loaders/index.js');
       const at = args.indexOf('--classes');
       const classes = at >= 0 ? (args[at + 1] as 'ground' | 'all') : 'ground';
       try {
@@ -113,7 +114,7 @@ const result = hodt.runCli(
   args,
   (p) => (p === path && input !== undefined ? input : read(p)),
   {
-    writeFile: (path, text) => attempt(() => writeFileSync(path, text)),
+    writeFile: (path, bytes) => attempt(() => writeFileSync(path, bytes)),
     writeMesh: (path, format, mesh) => attempt(() => writeMesh(path, format, mesh)),
     progress: (text) => {
       writeSync(2, text);

@@ -66,9 +66,10 @@ export interface CliResult {
 
 /** What runCli may use besides reading files (the npm bin gives all of it). */
 export interface CliIo {
-  /** Writes `--output FILE.json`; returns an Error (with a Node `code` such as
-   * 'ENOENT', or a message) if it cannot. Without it, --output is refused. */
-  writeFile?: (path: string, text: string) => Error | undefined;
+  /** Writes `--output FILE.json`, given its UTF-8 bytes (a copy: keep them);
+   * returns an Error (with a Node `code` such as 'ENOENT', or a message) if it
+   * cannot. Without it, --output is refused. */
+  writeFile?: (path: string, bytes: Uint8Array) => Error | undefined;
   /** Writes `--output FILE.obj|.ply|.geojson|.glb`, typically with hodt/export's
    * exportMesh(format, mesh); returns an Error as writeFile. */
   writeMesh?: (

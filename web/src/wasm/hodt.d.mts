@@ -104,7 +104,7 @@ export interface RawMesh {
   crs?: string;
 }
 export interface RawCliIo {
-  writeFile?: (path: string, text: string) => Error | undefined;
+  writeFile?: (path: string, bytes: Uint8Array) => Error | undefined;
   writeMesh?: (path: string, format: 'obj' | 'ply' | 'geojson' | 'glb', mesh: RawMesh) => Error | undefined;
   progress?: (text: string) => void;
   stderrIsTerminal?: boolean;
