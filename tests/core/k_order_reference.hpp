@@ -33,4 +33,17 @@ void for_small_k_instances(std::initializer_list<uint32_t> orders, uint64_t seed
     }
 }
 
+// An instance for orders 5 to 8, where brute force still enumerates: 10 to 13
+// points (uniform, DEM-like, an integer grid with equal heights, cocircular).
+// (Below k + 4 points every triangulation is k-OD: larger ones restrict more.)
+inline std::vector<double> high_order_instance(uint64_t seed) {
+  Rng r(seed);
+  switch (seed % 4) {
+    case 0: return uniform_points(10 + r.below(4), seed);
+    case 1: return dem_points(10 + r.below(4), seed);
+    case 2: return grid_points(3 + r.below(2), 4, seed, true);
+    default: return cocircular_points(8 + r.below(5), seed);
+  }
+}
+
 }  // namespace hodt::test
