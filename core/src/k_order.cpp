@@ -212,9 +212,11 @@ constexpr uint32_t kRungDualSweeps = 150;
 // max-convex-edges 6923 with bound 6940 unglued; glued twice, 6939 proven.
 // A 20k-cell DEM at k = 5: 33881 with bound 34391; glued once, 34051 with
 // bound 34227.)
+// every_graph (when not null): whether every region not listed whole was read
+// through its graph.
 std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEngine& engine, KOrderResult& r,
                                            std::string& how, const Progress& progress, uint32_t max_glue = 0,
-                                           uint32_t max_sweeps = kDualSweeps) {
+                                           uint32_t max_sweeps = kDualSweeps, bool* every_graph = nullptr) {
   const Sense sense = info(o).sense;
   RegionDualLimits limits;
   limits.dual.progress = limits.dp.progress = progress;
@@ -301,7 +303,9 @@ std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEn
   };
   auto gap = [&] { return bound && better(sense, *bound, r.value); };
   RegionDual d;
-  if (read(engine.R, engine.terms, "", d)) return bound;
+  const bool proven = read(engine.R, engine.terms, "", d);
+  if (every_graph) *every_graph = d.graphs > 0 && !d.relaxed;
+  if (proven) return bound;
   const Regions* parent = &engine.R;
   std::unique_ptr<Level> level;
   // (Each level costs a dual as large as the first: on hundreds of strips, a
@@ -330,9 +334,11 @@ std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEn
 // Over a whole model it gives local search one more start, then proves the
 // best triangulation found optimal (r.optimal, r.method "exact") or finds the
 // optimum, by pruning and the DP over what is left. It needs every region
-// listed whole (list_whole). Returns the bound (nothing if it does not apply).
+// listed whole (list_whole); else the regions not listed whole are read through
+// their fill graphs (every_graph: whether all were). Returns the bound (nothing
+// if it does not apply).
 std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& engine, KOrderResult& r, std::string& how,
-                                    const std::string& refused, const Progress& progress) {
+                                    const std::string& refused, const Progress& progress, bool& every_graph) {
   Regions& R = engine.R;
   RegionModel& model = engine.model;
   const Sense sense = info(o).sense;
@@ -340,7 +346,7 @@ std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& e
   DualLimits dual;
   dual.progress = progress;
   dual.max_rounds = 2;
-  if (R.incomplete) return bound_by_fill_graphs(dt, o, engine, r, how, progress, 2);
+  if (R.incomplete) return bound_by_fill_graphs(dt, o, engine, r, how, progress, 2, kDualSweeps, &every_graph);
   StateDpLimits dl;
   dl.progress = progress;
   // Two clusterings in turn: the ascent stops at a fixed point of its own in
@@ -380,6 +386,56 @@ std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& e
                 " optimal (the DP alone refused: " + refused + ")";
     break;
   }
+  return bound;
+}
+
+// The bound from the vertices' stars (star_bound.hpp), tighter than `bound`
+// or `bound` itself; the fans its multipliers favour, made to agree
+// (star_decode.hpp), then flipped: where the relaxation is nearly tight, far
+// past what flips and descents reach (the volcano at k = 8, max-convex-edges:
+// 6984 before, 8020 so, for a bound of 8047). Sweeps four ways, then repairs of
+// the best at hand while they improve it; then windows of 25 vertices, each at
+// its best with the rest kept (fan_windows.hpp; the volcano at k = 4,
+// min-mixed-vertices: 77 -> 76, the bound, in 0.5 s), while they improve it.
+// What improves r replaces it.
+double by_stars(const Mesh& dt, Objective o, uint32_t k, const Candidates& cand, KOrderResult& r, double bound,
+                std::string& how, const Progress& progress) {
+  const Sense sense = info(o).sense;
+  StarBoundLimits stars;
+  stars.progress = progress;
+  stars.decode = true;
+  stars.known_bound = bound;
+  const auto b = star_bound(dt, o, cand, r.value, stars);
+  if (b && better(sense, bound, b->bound)) {
+    bound = b->bound;
+    how += ", bound from the vertices' stars";
+  }
+  bool decoded = false, windowed = false;
+  auto adopt = [&](const std::vector<Tri>& tris) {
+    Mesh m = mesh_of(dt.coords, tris);
+    improve_by_flips(m, dt, k, o, progress);
+    const double v = evaluate(o, m);
+    if (!better(sense, v, r.value)) return false;
+    r.triangulation = std::move(m), r.value = v;
+    return true;
+  };
+  if (b && b->decoder) {
+    for (const std::vector<Tri>& tris : b->decoder->sweeps()) decoded = adopt(tris) || decoded;
+    for (int round = 0; round < 8 && better(sense, bound, r.value); ++round) {
+      const auto repaired = b->decoder->repair(r.triangulation);
+      if (!repaired || !adopt(*repaired)) break;
+      decoded = true;
+    }
+  }
+  WindowLimits windows;
+  windows.progress = progress;
+  for (int round = 0; round < 4 && better(sense, bound, r.value); ++round) {
+    const auto improved = improve_by_windows(dt, o, cand, r.triangulation, windows);
+    if (!improved || !adopt(*improved)) break;
+    windowed = true;
+  }
+  if (decoded) how += ", then a triangulation read off the stars";
+  if (windowed) how += ", then descent by windows of fans";
   return bound;
 }
 
@@ -461,11 +517,36 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // (At order 1 the engine is the first order solver, within a domain: Delaunay starts.)
   Mesh start = k == 1 ? dt : first_order.get();
   double start_value = k == 1 ? evaluate(o, dt) : first_order.value;
+  std::string start_name = k == 1 ? "Delaunay triangulation" : "first order optimum";
+  // Min-max: a start whose worst term is the terms' floor (what every k-OD
+  // triangulation has), or below which arc consistency refutes the relaxation
+  // (none_below), is optimal before any search over the regions (a 131k-cell DEM
+  // at k = 4: minmax-edge-enclosing-circle 11 s instead of 38, the first order
+  // optimum meets the floor; minmax-vertex-normal-angle, the answer at order 3).
+  auto meets_floor = [&] {
+    if (!bounded || description.combine != TermCombine::Max) return false;
+    std::string why;
+    if (!better(sense, tighter(sense, terms.floor(), global), start_value))
+      why = "'s worst term is one that every k-OD triangulation has";
+    else if (none_below(relaxation(model.graph), start_value, options.progress))
+      why = ": no k-OD triangulation has every term below it (arc consistency over the regions' states)";
+    else
+      return false;
+    r.triangulation = std::move(start);
+    r.value = start_value;
+    r.optimal = true;
+    r.method = "exact";
+    r.details = region_summary(R) + "; the " + start_name + why + " (exact refused: " + refused + ")";
+    return true;
+  };
+  if (meets_floor()) return r;
   bool added = add_states_of(R, dt, start);
   solve_lower();
   if (lower) {
     added = add_states_of(R, dt, lower->triangulation) || added;
-    if (better(sense, lower->value, start_value)) start = std::move(lower->triangulation), start_value = lower->value;
+    if (better(sense, lower->value, start_value))
+      start = std::move(lower->triangulation), start_value = lower->value, start_name = "answer at order " + std::to_string(k <= 8 ? k - 1 : k / 2);
+    if (meets_floor()) return r;
   }
   if (added) model = region_model(dt, R, o, {}, options.progress);
   const ListedBest listed = engine.best_listed(listed_states(R, start), options.progress);
@@ -487,10 +568,17 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     r.triangulation = std::move(start);
     r.value = start_value;
   }
+  // Min-max: whether the relaxation has no assignment below the answer (arc
+  // consistency: at once, where the flips below and the DP's threshold search
+  // for the bound take seconds: a 131k-cell DEM at k = 4,
+  // minmax-vertex-normal-angle, 31 s before). Then it is optimal.
+  const bool refuted =
+      bounded && description.combine == TermCombine::Max && none_below(relaxation(model.graph), r.value, options.progress);
+  if (refuted) how += "; no triangulation has every term below it (arc consistency over the regions' states)";
   // Asked for the approximation scheme: Baker's shifting (the paper's Theorem
   // 10), bands of Delaunay triangles kept every lambda layers cut the regions too
   // large for the engine (slower: lambda runs of it).
-  if (bounded && k >= 2 && options.method == Method::Approx) {
+  if (!refuted && bounded && k >= 2 && options.method == Method::Approx) {
     const KOrderBaker b = k_order_baker(dt, o, structure, k, options.epsilon, max_nodes, options.progress);
     if (b.triangulation && better(sense, b.value, r.value))
       r.triangulation = std::move(*b.triangulation), r.value = b.value, how = b.summary();
@@ -500,7 +588,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // Then k-OD flips that improve the terms around them (they reach into the
   // regions too large to list).
   Mesh flipped = r.triangulation;
-  if (improve_by_flips(flipped, dt, k, o, options.progress)) {
+  if (!refuted && improve_by_flips(flipped, dt, k, o, options.progress)) {
     const double v = evaluate(o, flipped);
     if (better(sense, v, r.value)) r.triangulation = std::move(flipped), r.value = v, how += ", then k-OD flips";
   }
@@ -516,20 +604,27 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // The bound: the model's relaxation, or the tighter one that reads the regions
   // too large to list through their views; when those views agree, a
   // triangulation that meets it.
-  double bound = tighter(sense, relaxation_bound(model.graph, dl), global);
+  double bound = refuted ? r.value : tighter(sense, relaxation_bound(model.graph, dl), global);
   if (description.combine == TermCombine::Max) bound = tighter(sense, bound, terms.floor());
   // Counts: the dual before the views (it proves most instances on its own: a
   // 131k-cell DEM at k = 4, max-convex-vertices, where the views cost twice the
   // dual and proved nothing).
+  bool every_graph = false;
   if (provable && better(sense, bound, r.value)) {
-    if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, options.progress)) {
+    if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, options.progress, every_graph)) {
       if (r.optimal) return r;
       bound = tighter(sense, bound, *d);
     }
   }
+  // The views read a region through projections of its fills, the dual through
+  // all of them: once the dual read every region not listed whole through its
+  // graph, the views did not tighten a count nor find a better triangulation
+  // (the volcano at k = 4 to 8, the 10,000-point sample at k = 4 and 5, the
+  // 131k-cell DEM at k = 5), and cost seconds (the sample, min-mixed-vertices: 36
+  // -> 31 s at k = 4, 58 -> 54 s at k = 5). Not asked then.
   ViewBoundLimits vl;
   vl.views.progress = vl.dp.progress = options.progress;
-  const bool met = !better(sense, bound, r.value);
+  const bool met = !better(sense, bound, r.value) || every_graph;
   if (const auto vb = met ? std::nullopt : view_bound(dt, R, o, cand, terms, engine.limits.max_region_triangles, r.value, vl)) {
     bound = tighter(sense, bound, vb->bound);
     if (vb->realised && !better(sense, r.value, vb->bound)) {
@@ -562,51 +657,8 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   }
   // Counts and lengths: the bound from the vertices' stars, which lists no
   // region (one region of thousands of triangles, as from k = 6 on the volcano, too).
-  if (bounded && description.combine == TermCombine::Sum && better(sense, bound, r.value)) {
-    StarBoundLimits stars;
-    stars.progress = options.progress;
-    stars.decode = true;
-    stars.known_bound = bound;
-    const auto b = star_bound(dt, o, cand, r.value, stars);
-    if (b && better(sense, bound, b->bound)) {
-      bound = b->bound;
-      how += ", bound from the vertices' stars";
-    }
-    // The fans the bound's multipliers favour, made to agree (star_decode.hpp),
-    // then flipped: where the relaxation is nearly tight, far past what flips
-    // and descents reach (the volcano at k = 8, max-convex-edges: 6984 before,
-    // 8020 so, for a bound of 8047). Sweeps four ways, then repairs of the best
-    // at hand while they improve it.
-    bool decoded = false, windowed = false;
-    auto adopt = [&](const std::vector<Tri>& tris) {
-      Mesh m = mesh_of(dt.coords, tris);
-      improve_by_flips(m, dt, k, o, options.progress);
-      const double v = evaluate(o, m);
-      if (!better(sense, v, r.value)) return false;
-      r.triangulation = std::move(m), r.value = v;
-      return true;
-    };
-    if (b && b->decoder) {
-      for (const std::vector<Tri>& tris : b->decoder->sweeps()) decoded = adopt(tris) || decoded;
-      for (int round = 0; round < 8 && better(sense, bound, r.value); ++round) {
-        const auto repaired = b->decoder->repair(r.triangulation);
-        if (!repaired || !adopt(*repaired)) break;
-        decoded = true;
-      }
-    }
-    // Windows of 25 vertices, each at its best with the rest kept
-    // (fan_windows.hpp; the volcano at k = 4, min-mixed-vertices: 77 -> 76, the
-    // bound, in 0.5 s), while they improve it.
-    WindowLimits windows;
-    windows.progress = options.progress;
-    for (int round = 0; round < 4 && better(sense, bound, r.value); ++round) {
-      const auto improved = improve_by_windows(dt, o, cand, r.triangulation, windows);
-      if (!improved || !adopt(*improved)) break;
-      windowed = true;
-    }
-    if (decoded) how += ", then a triangulation read off the stars";
-    if (windowed) how += ", then descent by windows of fans";
-  }
+  if (description.combine == TermCombine::Sum && better(sense, bound, r.value))
+    bound = by_stars(dt, o, k, cand, r, bound, how, options.progress);
   r.bound = sense == Sense::Min ? std::min(bound, r.value) : std::max(bound, r.value);
   r.optimal = *r.bound == r.value;
   if (options.method == Method::Exact && !r.optimal)

@@ -661,4 +661,70 @@ double relaxation_bound(const StateGraph& g, StateDpLimits limits) {
   return r.bound_only ? tighter(g.sense, r.value, independent_bound(g)) : r.value;
 }
 
+bool none_below(const StateGraph& g, double t, const Progress& progress) {
+  if (g.combine != TermCombine::Max || g.sense != Sense::Min) return false;
+  if (!(g.constant < t)) return true;
+  const size_t n = g.domain.size();
+  std::vector<std::vector<uint8_t>> alive(n);
+  for (size_t x = 0; x < n; ++x) {
+    alive[x].resize(g.domain[x]);
+    bool any = false;
+    for (uint32_t s = 0; s < g.domain[x]; ++s) any |= alive[x][s] = g.unary[x][s] < t;
+    if (!any) return true;
+  }
+  std::vector<std::vector<uint32_t>> touching(n);
+  for (uint32_t fi = 0; fi < g.factors.size(); ++fi)
+    for (uint32_t x : g.factors[fi].scope) touching[x].push_back(fi);
+  std::deque<uint32_t> work;
+  std::vector<uint8_t> queued(g.factors.size(), 1);
+  for (uint32_t fi = 0; fi < g.factors.size(); ++fi) work.push_back(fi);
+  uint64_t visits = 0;
+  std::vector<std::vector<uint8_t>> live, supported;
+  std::vector<uint32_t> digit;
+  while (!work.empty()) {
+    if (progress && (++visits & 255) == 0 && !progress(static_cast<double>(visits), static_cast<double>(visits + work.size())))
+      throw Cancelled();
+    const uint32_t fi = work.front();
+    work.pop_front();
+    queued[fi] = 0;
+    const StateFactor& f = g.factors[fi];
+    const size_t m = f.scope.size();
+    live.assign(m, {});
+    supported.assign(m, {});
+    for (size_t j = 0; j < m; ++j) {
+      live[j].assign(f.dims[j], 0);
+      supported[j].assign(f.dims[j], 0);
+      for (uint32_t s = 0; s < g.domain[f.scope[j]]; ++s)
+        if (alive[f.scope[j]][s]) live[j][f.project[j][s]] = 1;
+    }
+    // Every entry below t over live classes supports its classes (first variable fastest).
+    bool some = false;
+    digit.assign(m, 0);
+    for (size_t e = 0; e < f.table.size(); ++e) {
+      if (e)
+        for (size_t j = 0; j < m && ++digit[j] == f.dims[j]; ++j) digit[j] = 0;
+      if (!(f.table[e] < t)) continue;
+      bool ok = true;
+      for (size_t j = 0; j < m && ok; ++j) ok = live[j][digit[j]];
+      if (!ok) continue;
+      some = true;
+      for (size_t j = 0; j < m; ++j) supported[j][digit[j]] = 1;
+    }
+    if (!some) return true;
+    for (size_t j = 0; j < m; ++j) {
+      const uint32_t x = f.scope[j];
+      bool changed = false, any = false;
+      for (uint32_t s = 0; s < g.domain[x]; ++s) {
+        if (alive[x][s] && !supported[j][f.project[j][s]]) alive[x][s] = 0, changed = true;
+        any |= alive[x][s];
+      }
+      if (!any) return true;
+      if (changed)
+        for (uint32_t other : touching[x])
+          if (!queued[other]) queued[other] = 1, work.push_back(other);
+    }
+  }
+  return false;
+}
+
 }  // namespace hodt

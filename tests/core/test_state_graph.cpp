@@ -111,3 +111,23 @@ TEST_CASE("state graph: min-max over independent components is the largest of th
   }
   CHECK(split > 1000);
 }
+
+TEST_CASE("state graph: arc consistency refutes a min-max threshold only at or below the optimum") {
+  std::mt19937 rng(23);
+  int refuted = 0, kept_above = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const StateGraph g = random_state_graph(rng, TermCombine::Max, Sense::Min);
+    const double best = enumerate_best(g);
+    CAPTURE(trial);
+    // (Tables hold 0 to 4: every threshold between them.)
+    for (double t = -0.5; t <= 5.5; t += 0.5) {
+      const bool none = none_below(g, t);
+      if (t > best) CHECK(!none);  // the optimum has every term below t
+      if (t <= best) refuted += none;
+      kept_above += t > best && !none;
+    }
+  }
+  CHECK(refuted > 3000);  // (thresholds at or below the optimum, refuted: most of them)
+  CHECK(kept_above > 0);
+  CHECK(!none_below(random_state_graph(rng, TermCombine::Sum, Sense::Min), 1e9));  // (min-max only)
+}

@@ -89,4 +89,12 @@ StateGraph relaxation(const StateGraph& g);
 // and then no weaker than each factor at its best on its own).
 double relaxation_bound(const StateGraph& g, StateDpLimits limits = {});
 
+// Min-max (terms combined by max, minimised): whether no assignment has every
+// term below t, shown by arc consistency (states whose unary is t or more go,
+// then every class no table entry below t supports with live classes, until
+// nothing changes): true when some variable loses every state. Sound, not
+// complete: false says nothing. Over the relaxation, true proves the optimum at
+// least t, often at once where the DP's threshold search takes seconds.
+bool none_below(const StateGraph& g, double t, const Progress& progress = {});
+
 }  // namespace hodt
