@@ -212,11 +212,9 @@ constexpr uint32_t kRungDualSweeps = 150;
 // max-convex-edges 6923 with bound 6940 unglued; glued twice, 6939 proven.
 // A 20k-cell DEM at k = 5: 33881 with bound 34391; glued once, 34051 with
 // bound 34227.)
-// every_graph (when not null): whether every region not listed whole was read
-// through its graph.
 std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEngine& engine, KOrderResult& r,
                                            std::string& how, const Progress& progress, uint32_t max_glue = 0,
-                                           uint32_t max_sweeps = kDualSweeps, bool* every_graph = nullptr) {
+                                           uint32_t max_sweeps = kDualSweeps) {
   const Sense sense = info(o).sense;
   RegionDualLimits limits;
   limits.dual.progress = limits.dp.progress = progress;
@@ -303,9 +301,7 @@ std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEn
   };
   auto gap = [&] { return bound && better(sense, *bound, r.value); };
   RegionDual d;
-  const bool proven = read(engine.R, engine.terms, "", d);
-  if (every_graph) *every_graph = d.graphs > 0 && !d.relaxed;
-  if (proven) return bound;
+  if (read(engine.R, engine.terms, "", d)) return bound;
   const Regions* parent = &engine.R;
   std::unique_ptr<Level> level;
   // (Each level costs a dual as large as the first: on hundreds of strips, a
@@ -335,10 +331,9 @@ std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEn
 // best triangulation found optimal (r.optimal, r.method "exact") or finds the
 // optimum, by pruning and the DP over what is left. It needs every region
 // listed whole (list_whole); else the regions not listed whole are read through
-// their fill graphs (every_graph: whether all were). Returns the bound (nothing
-// if it does not apply).
+// their fill graphs. Returns the bound (nothing if it does not apply).
 std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& engine, KOrderResult& r, std::string& how,
-                                    const std::string& refused, const Progress& progress, bool& every_graph) {
+                                    const std::string& refused, const Progress& progress) {
   Regions& R = engine.R;
   RegionModel& model = engine.model;
   const Sense sense = info(o).sense;
@@ -346,7 +341,7 @@ std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& e
   DualLimits dual;
   dual.progress = progress;
   dual.max_rounds = 2;
-  if (R.incomplete) return bound_by_fill_graphs(dt, o, engine, r, how, progress, 2, kDualSweeps, &every_graph);
+  if (R.incomplete) return bound_by_fill_graphs(dt, o, engine, r, how, progress, 2);
   StateDpLimits dl;
   dl.progress = progress;
   // Two clusterings in turn: the ascent stops at a fixed point of its own in
@@ -609,22 +604,15 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // Counts: the dual before the views (it proves most instances on its own: a
   // 131k-cell DEM at k = 4, max-convex-vertices, where the views cost twice the
   // dual and proved nothing).
-  bool every_graph = false;
   if (provable && better(sense, bound, r.value)) {
-    if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, options.progress, every_graph)) {
+    if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, options.progress)) {
       if (r.optimal) return r;
       bound = tighter(sense, bound, *d);
     }
   }
-  // The views read a region through projections of its fills, the dual through
-  // all of them: once the dual read every region not listed whole through its
-  // graph, the views did not tighten a count nor find a better triangulation
-  // (the volcano at k = 4 to 8, the 10,000-point sample at k = 4 and 5, the
-  // 131k-cell DEM at k = 5), and cost seconds (the sample, min-mixed-vertices: 36
-  // -> 31 s at k = 4, 58 -> 54 s at k = 5). Not asked then.
   ViewBoundLimits vl;
   vl.views.progress = vl.dp.progress = options.progress;
-  const bool met = !better(sense, bound, r.value) || every_graph;
+  const bool met = !better(sense, bound, r.value);
   if (const auto vb = met ? std::nullopt : view_bound(dt, R, o, cand, terms, engine.limits.max_region_triangles, r.value, vl)) {
     bound = tighter(sense, bound, vb->bound);
     if (vb->realised && !better(sense, r.value, vb->bound)) {
