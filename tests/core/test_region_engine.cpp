@@ -25,6 +25,19 @@ namespace {
 
 bool close(double a, double b) { return a == b || std::abs(a - b) <= 1e-12 * std::max(std::abs(a), std::abs(b)); }
 
+KOrderResult solve_by(const FirstOrder& fo, Objective o, uint32_t k, Method m) {
+  SolveOptions options;
+  options.method = m;
+  return solve_k_order(fo, o, k, options);
+}
+
+// An answer at order k is a valid k-OD triangulation that has the value it reports.
+void check_answer(const KOrderResult& r, const FirstOrder& fo, Objective o, uint32_t k) {
+  CHECK(r.value == evaluate(o, r.triangulation));
+  CHECK(is_k_order(r.triangulation, fo.base, k));
+  CHECK(validate(r.triangulation) == "");
+}
+
 }  // namespace
 
 TEST_CASE("every objective's terms evaluate to the objective on any triangulation") {
@@ -90,9 +103,7 @@ TEST_CASE("exact at order k equals brute force for every objective (k = 2, 3, 4)
         CAPTURE(oi.id);
         CHECK(got.optimal);
         CHECK(close(got.value, want.value));
-        CHECK(got.value == evaluate(oi.objective, got.triangulation));
-        CHECK(is_k_order(got.triangulation, fo.base, k));
-        CHECK(validate(got.triangulation) == "");
+        check_answer(got, fo, oi.objective, k);
       }
     }
   }
@@ -110,18 +121,14 @@ TEST_CASE("grids of non-square cells: every region at order k a quad, solved as 
       for (const auto& oi : objectives()) {
         const KOrderResult want = k_order_brute_force(fo, oi.objective, k);
         for (const Method m : {Method::Exact, Method::Auto}) {
-          SolveOptions ex;
-          ex.method = m;
-          const KOrderResult got = solve_k_order(fo, oi.objective, k, ex);
+          const KOrderResult got = solve_by(fo, oi.objective, k, m);
           CAPTURE(seed);
           CAPTURE(k);
           CAPTURE(oi.id);
           as_quads += got.details.find("each a quad") != std::string::npos;
           CHECK(got.optimal);
           CHECK(close(got.value, want.value));
-          CHECK(got.value == evaluate(oi.objective, got.triangulation));
-          CHECK(is_k_order(got.triangulation, fo.base, k));
-          CHECK(validate(got.triangulation) == "");
+          check_answer(got, fo, oi.objective, k);
         }
       }
     }
@@ -292,15 +299,12 @@ TEST_CASE("orders 5 to 8: auto and approx never pass the brute-force optimum, an
       for (const auto& oi : objectives()) {
         const KOrderResult b = k_order_brute_force(fo, oi.objective, k, 2'000'000);
         for (const Method m : {Method::Auto, Method::Approx}) {
-          SolveOptions options;
-          options.method = m;
-          const KOrderResult h = solve_k_order(fo, oi.objective, k, options);
+          const KOrderResult h = solve_by(fo, oi.objective, k, m);
           CAPTURE(seed);
           CAPTURE(k);
           CAPTURE(oi.id);
           CAPTURE(static_cast<int>(m));
-          CHECK(is_k_order(h.triangulation, fo.base, k));
-          CHECK(h.value == evaluate(oi.objective, h.triangulation));
+          check_answer(h, fo, oi.objective, k);
           CHECK(h.optimal != h.bound.has_value());
           CHECK((!better(oi.sense, h.value, b.value) || close(h.value, b.value)));
           if (h.bound) CHECK((!better(oi.sense, b.value, *h.bound) || close(b.value, *h.bound)));
