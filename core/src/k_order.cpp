@@ -513,35 +513,42 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   Mesh start = k == 1 ? dt : first_order.get();
   double start_value = k == 1 ? evaluate(o, dt) : first_order.value;
   std::string start_name = k == 1 ? "Delaunay triangulation" : "first order optimum";
-  // Min-max: a start whose worst term is the terms' floor (what every k-OD
-  // triangulation has), or below which arc consistency refutes the relaxation
-  // (none_below), is optimal before any search over the regions (a 131k-cell DEM
-  // at k = 4: minmax-edge-enclosing-circle 11 s instead of 38, the first order
-  // optimum meets the floor; minmax-vertex-normal-angle, the answer at order 3).
-  auto meets_floor = [&] {
-    if (!bounded || description.combine != TermCombine::Max) return false;
-    std::string why;
-    if (!better(sense, tighter(sense, terms.floor(), global), start_value))
-      why = "'s worst term is one that every k-OD triangulation has";
-    else if (none_below(relaxation(model.graph), start_value, options.progress))
-      why = ": no k-OD triangulation has every term below it (arc consistency over the regions' states)";
-    else
-      return false;
+  // Min-max: why `value` is optimal, when the terms' floor (the largest term no
+  // region can change: RegionTerms::floor) or arc consistency over the model's
+  // relaxation (none_below) shows it; empty when neither does. Tried on the start
+  // before any search over the regions, and on the search's answer before the
+  // flips and the bound's threshold search (a 131k-cell DEM at k = 4:
+  // minmax-edge-enclosing-circle 38 -> 8 s, the first order optimum meets the
+  // floor; minmax-vertex-normal-angle 31 -> 10 s, arc consistency). A value
+  // tried in vain is not tried again (listing more states of the regions not
+  // listed whole leaves the relaxation as it was).
+  double not_shown = NAN;
+  auto min_max_proof = [&](double value) -> std::string {
+    if (!bounded || description.combine != TermCombine::Max || value == not_shown) return "";
+    if (!better(sense, terms.floor(), value)) return "its worst term is one that every k-OD triangulation has";
+    if (none_below(relaxation(model.graph), value, options.progress))
+      return "no k-OD triangulation has every term below it (arc consistency over the regions' states)";
+    not_shown = value;
+    return "";
+  };
+  auto start_proven = [&] {
+    const std::string why = min_max_proof(start_value);
+    if (why.empty()) return false;
     r.triangulation = std::move(start);
     r.value = start_value;
     r.optimal = true;
     r.method = "exact";
-    r.details = region_summary(R) + "; the " + start_name + why + " (exact refused: " + refused + ")";
+    r.details = region_summary(R) + "; the " + start_name + ": " + why + " (exact refused: " + refused + ")";
     return true;
   };
-  if (meets_floor()) return r;
+  if (start_proven()) return r;
   bool added = add_states_of(R, dt, start);
   solve_lower();
   if (lower) {
     added = add_states_of(R, dt, lower->triangulation) || added;
     if (better(sense, lower->value, start_value))
       start = std::move(lower->triangulation), start_value = lower->value, start_name = "answer at order " + std::to_string(k <= 8 ? k - 1 : k / 2);
-    if (meets_floor()) return r;
+    if (start_proven()) return r;
   }
   if (added) model = region_model(dt, R, o, {}, options.progress);
   const ListedBest listed = engine.best_listed(listed_states(R, start), options.progress);
@@ -563,13 +570,9 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     r.triangulation = std::move(start);
     r.value = start_value;
   }
-  // Min-max: whether the relaxation has no assignment below the answer (arc
-  // consistency: at once, where the flips below and the DP's threshold search
-  // for the bound take seconds: a 131k-cell DEM at k = 4,
-  // minmax-vertex-normal-angle, 31 s before). Then it is optimal.
-  const bool refuted =
-      bounded && description.combine == TermCombine::Max && none_below(relaxation(model.graph), r.value, options.progress);
-  if (refuted) how += "; no triangulation has every term below it (arc consistency over the regions' states)";
+  const std::string proof = min_max_proof(r.value);
+  const bool refuted = !proof.empty();
+  if (refuted) how += "; " + proof;
   // Asked for the approximation scheme: Baker's shifting (the paper's Theorem
   // 10), bands of Delaunay triangles kept every lambda layers cut the regions too
   // large for the engine (slower: lambda runs of it).

@@ -10,4 +10,3 @@ export function sniffFormat(bytes: Uint8Array): BinaryFormat | null {
   if (a === 0x4c && b === 0x41 && c === 0x53 && d === 0x46) return 'las'; // "LASF", also LAZ
   return null;
 }
-
