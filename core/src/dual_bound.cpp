@@ -33,7 +33,7 @@ void for_entries(const StateFactor& f, Visit visit) {
 }
 
 // Along scope position j of a table (its stride `inner`, its classes d): adds
-// w[class] to every entry, or takes per class the least entry.
+// w[class] to every entry.
 void add_along(std::vector<double>& t, size_t inner, size_t d, const double* w) {
   for (size_t o = 0; o < t.size(); o += inner * d)
     for (size_t c = 0; c < d; ++c) {
@@ -42,14 +42,44 @@ void add_along(std::vector<double>& t, size_t inner, size_t d, const double* w) 
     }
 }
 
-void min_along(const std::vector<double>& t, size_t inner, size_t d, double* out) {
-  std::fill(out, out + d, INFINITY);
-  for (size_t o = 0; o < t.size(); o += inner * d)
-    for (size_t c = 0; c < d; ++c) {
-      const double* p = t.data() + o + c * inner;
-      for (size_t i = 0; i < inner; ++i) out[c] = std::min(out[c], p[i]);
+// A factor's table in rows along its first scope position (stride 1): per
+// row, its first entry, its classes at the other positions, and the sum of
+// w[j][class] over those (the ascent's inner loops then add one term per entry,
+// where a pass per position would read the whole table m times). leave(j) is
+// called as position j (from 1) is about to change class, and for each at the end.
+template <class Row, class Leave>
+void for_rows(const StateFactor& f, const std::vector<std::vector<double>>& w, Row row, Leave leave) {
+  const size_t m = f.dims.size();
+  const size_t d0 = m ? f.dims[0] : 1;
+  std::vector<uint32_t> c(m, 0);
+  // rest[j]: the sum over positions j.. (from 1) at their current classes,
+  // recomputed only below the position that moved.
+  std::vector<double> rest(m + 1, 0.0);
+  for (size_t j = m; j-- > 1;) rest[j] = rest[j + 1] + w[j][0];
+  for (size_t o = 0; o < f.table.size(); o += d0) {
+    row(o, c, m > 1 ? rest[1] : 0.0);
+    size_t j = 1;
+    for (; j < m; ++j) {
+      leave(j, c[j]);
+      if (++c[j] < f.dims[j]) break;
+      c[j] = 0;
     }
+    if (j >= m) break;
+    for (size_t i = j; i >= 1; --i) rest[i] = rest[i + 1] + w[i][c[i]];
+  }
 }
+
+// A factor position's states grouped by class: class c's are
+// state[start[c]] .. state[start[c + 1] - 1].
+struct ClassStates {
+  std::vector<uint32_t> start, state;
+  explicit ClassStates(const std::vector<uint32_t>& project, uint32_t classes) : start(classes + 1, 0), state(project.size()) {
+    for (uint32_t c : project) ++start[c + 1];
+    for (uint32_t c = 0; c < classes; ++c) start[c + 1] += start[c];
+    std::vector<uint32_t> at(start.begin(), start.end() - 1);
+    for (uint32_t s = 0; s < project.size(); ++s) state[at[project[s]]++] = s;
+  }
+};
 
 // The ascent on a simplified graph, in min form (every value times `sign`).
 struct Ascent {
@@ -65,6 +95,8 @@ struct Ascent {
   uint64_t clock = 1;
   std::vector<uint64_t> changed, updated;
   bool in_range = true;
+  std::vector<std::vector<ClassStates>> classes;  // per table factor and scope position
+  std::vector<std::vector<double>> u_, marginal_;  // (the update's scratch)
 
   Ascent(const StateGraph& graph, std::vector<const ImplicitFactor*> implicit_factors)
       : g(graph), implicit(std::move(implicit_factors)), sign(graph.sense == Sense::Min ? 1.0 : -1.0) {
@@ -74,7 +106,11 @@ struct Ascent {
     }
     for (const StateFactor& f : g.factors) {
       msg.emplace_back();
-      for (uint32_t d : f.dims) msg.back().emplace_back(d, 0.0);
+      classes.emplace_back();
+      for (size_t j = 0; j < f.dims.size(); ++j) {
+        msg.back().emplace_back(f.dims[j], 0.0);
+        classes.back().emplace_back(f.project[j], f.dims[j]);
+      }
     }
     for (const ImplicitFactor* f : implicit) {
       msg.emplace_back();
@@ -101,29 +137,37 @@ struct Ascent {
     send(fi, f.scope, nullptr, marginal, u);
   }
 
-  // MPLP's messages from factor fi to its scope (project: per position, state
-  // -> class; null: the classes are the states): each variable gets its equal
-  // share of the min-marginals, less what it holds besides.
-  void send(size_t fi, const std::vector<uint32_t>& scope, const std::vector<std::vector<uint32_t>>* project,
+  // MPLP's messages from factor fi to its scope (by_class: per position, its
+  // states by class; null: the classes are the states): each variable gets its
+  // equal share of the min-marginals, less what it holds besides.
+  void send(size_t fi, const std::vector<uint32_t>& scope, const std::vector<ClassStates>* by_class,
             const std::vector<std::vector<double>>& marginal, const std::vector<std::vector<double>>& u) {
     const size_t m = scope.size();
     for (size_t j = 0; j < m; ++j) {
-      std::vector<double> next(u[j].size());
-      for (size_t c = 0; c < next.size(); ++c) {
-        next[c] = on_grid(marginal[j][c] / static_cast<double>(m) - u[j][c]);
-        // (so a table entry less all its m messages stays below 2^31 at every step)
-        if (!(std::fabs(next[c]) * static_cast<double>(2 * (m + 1)) < kLargest)) in_range = false;
-      }
-      if (!in_range) return;
-      if (next == msg[fi][j]) continue;
+      std::vector<double>& old = msg[fi][j];
       std::vector<double>& ux = unary[scope[j]];
-      for (size_t s = 0; s < ux.size(); ++s) {
-        const size_t c = project ? (*project)[j][s] : s;
-        ux[s] += next[c] - msg[fi][j][c];
-        if (!(std::fabs(ux[s]) < kLargest)) in_range = false;
+      bool any = false;
+      for (size_t c = 0; c < old.size(); ++c) {
+        const double next = on_grid(marginal[j][c] / static_cast<double>(m) - u[j][c]);
+        // (so a table entry less all its m messages stays below 2^31 at every step)
+        if (!(std::fabs(next) * static_cast<double>(2 * (m + 1)) < kLargest)) in_range = false;
+        if (!in_range) return;
+        if (next == old[c]) continue;
+        const double delta = next - old[c];
+        old[c] = next;
+        any = true;
+        auto add = [&](uint32_t s) {
+          ux[s] += delta;
+          if (!(std::fabs(ux[s]) < kLargest)) in_range = false;
+        };
+        if (!by_class) {
+          add(static_cast<uint32_t>(c));
+          continue;
+        }
+        const ClassStates& k = (*by_class)[j];
+        for (uint32_t i = k.start[c]; i < k.start[c + 1]; ++i) add(k.state[i]);
       }
-      msg[fi][j].swap(next);
-      changed[scope[j]] = clock;
+      if (any) changed[scope[j]] = clock;
     }
     set_least(fi);
   }
@@ -156,29 +200,51 @@ struct Ascent {
     // none changed since its last update, it would change nothing.
     if (std::all_of(f.scope.begin(), f.scope.end(), [&](uint32_t x) { return changed[x] <= updated[fi]; })) return;
     updated[fi] = ++clock;
-    std::vector<std::vector<double>> u(m), marginal(m);
-    std::vector<double> joint(f.table);
-    for (double& v : joint) v *= sign;
-    size_t inner = 1;
+    std::vector<std::vector<double>>& u = u_;
+    std::vector<std::vector<double>>& marginal = marginal_;
+    u.resize(std::max(u.size(), m)), marginal.resize(std::max(marginal.size(), m));
+    double size = 0;
     for (size_t j = 0; j < m; ++j) {
-      u[j].assign(f.dims[j], INFINITY);
       const std::vector<double>& ux = unary[f.scope[j]];
-      for (size_t s = 0; s < ux.size(); ++s) {
-        const uint32_t c = f.project[j][s];
-        u[j][c] = std::min(u[j][c], ux[s]);
+      const ClassStates& k = classes[fi][j];
+      u[j].resize(f.dims[j]);
+      for (uint32_t c = 0; c < f.dims[j]; ++c) {
+        double least = INFINITY;
+        for (uint32_t i = k.start[c]; i < k.start[c + 1]; ++i) least = std::min(least, ux[k.state[i]]);
+        u[j][c] = least - msg[fi][j][c];
       }
-      for (uint32_t c = 0; c < f.dims[j]; ++c) u[j][c] -= msg[fi][j][c];
-      add_along(joint, inner, f.dims[j], u[j].data());
-      inner *= f.dims[j];
-      if (work.tick(static_cast<double>(ux.size() + joint.size()))) report(progress, sweep, sweeps);
+      marginal[j].assign(f.dims[j], INFINITY);
+      size += static_cast<double>(ux.size());
     }
-    inner = 1;
-    for (size_t j = 0; j < m; ++j) {
-      marginal[j].resize(f.dims[j]);
-      min_along(joint, inner, f.dims[j], marginal[j].data());
-      inner *= f.dims[j];
+    if (work.tick(size + static_cast<double>(m * f.table.size()))) report(progress, sweep, sweeps);
+    // The table plus what its variables hold, and its least entry per class
+    // of each position: position 0 along each row, the others from the least
+    // of the rows since their class last changed. (Every value is dyadic and
+    // in range, so sums are exact in any order.)
+    if (m) {
+      const size_t d0 = f.dims[0];
+      const double* u0 = u[0].data();
+      double* m0 = marginal[0].data();
+      std::vector<double> low(m + 1, INFINITY);  // per position from 1: least since its class last changed
+      for_rows(
+          f, u,
+          [&](size_t o, const std::vector<uint32_t>&, double rest) {
+            const double* t = f.table.data() + o;
+            double row = INFINITY;
+            for (size_t i = 0; i < d0; ++i) {
+              const double v = sign * t[i] + u0[i] + rest;
+              m0[i] = std::min(m0[i], v);
+              row = std::min(row, v);
+            }
+            low[1] = std::min(low[1], row);
+          },
+          [&](size_t j, uint32_t c) {
+            marginal[j][c] = std::min(marginal[j][c], low[j]);
+            low[j + 1] = std::min(low[j + 1], low[j]);
+            low[j] = INFINITY;
+          });
     }
-    send(fi, f.scope, &f.project, marginal, u);
+    send(fi, f.scope, &classes[fi], marginal, u);
   }
 
   // Factor fi's least reparametrised entry (every entry checked in range).
@@ -191,10 +257,26 @@ struct Ascent {
       if (!(std::fabs(factor_least[fi]) < kLargest)) in_range = false;
       return;
     }
-    const std::vector<double> t = reparametrised(fi);
-    for (double v : t)
-      if (!(std::fabs(v) < kLargest)) in_range = false;
-    factor_least[fi] = *std::min_element(t.begin(), t.end());
+    // (reparametrised(fi) in one pass, its least entry and its range.)
+    const StateFactor& f = g.factors[fi];
+    std::vector<std::vector<double>> w(msg[fi]);
+    for (auto& c : w)
+      for (double& v : c) v = -v;
+    const size_t d0 = f.dims.empty() ? 1 : f.dims[0];
+    const double zero = 0;
+    const double* w0 = f.dims.empty() ? &zero : w[0].data();
+    const size_t step = f.dims.empty() ? 0 : 1;
+    double least = INFINITY, most = -INFINITY;  // (the values are finite: tables and messages are)
+    for_rows(f, w, [&](size_t o, const std::vector<uint32_t>&, double rest) {
+      const double* t = f.table.data() + o;
+      for (size_t i = 0; i < d0; ++i) {
+        const double v = sign * t[i] + w0[i * step] + rest;
+        least = std::min(least, v);
+        most = std::max(most, v);
+      }
+    }, [](size_t, uint32_t) {});
+    if (!(least > -kLargest && most < kLargest)) in_range = false;
+    factor_least[fi] = least;
   }
 
   // The bound: each piece at its best, summed exactly (nothing when a value

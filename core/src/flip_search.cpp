@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "hodt/circle_count.hpp"
+#include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/objective_terms.hpp"
 #include "hodt/predicates.hpp"
@@ -16,7 +17,8 @@ struct Local {
   const Mesh& m;
   const ObjectiveTerms& d;
   const std::vector<uint8_t>& on_hull;
-  std::vector<uint32_t> nb;
+  VertexTermMemo* memo;
+  std::vector<uint32_t> nb, sorted;
   std::vector<Tri> tris;
 
   double add(double a, double b) const { return combine(d.combine, a, b); }
@@ -45,7 +47,11 @@ struct Local {
       h = static_cast<uint32_t>(t);
       if (h == first) break;
     }
-    return vertex_term(d, m, Star(v, nb, tris));
+    auto eval = [&] { return vertex_term(d, m, Star(v, nb, tris)); };
+    if (!memo) return eval();
+    sorted = nb;
+    std::sort(sorted.begin(), sorted.end());
+    return (*memo)(v, sorted, eval);
   }
 
   double edge(uint32_t h) const {
@@ -74,14 +80,20 @@ struct Local {
 
 }  // namespace
 
-uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o, const Progress& progress) {
+uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o, const Progress& progress,
+                          VertexTermMemo* memo) {
   const ObjectiveTerms& d = objective_terms(o, m);
   const Sense sense = info(o).sense;
   std::vector<uint8_t> on_hull(m.num_vertices(), 0);
   for (uint32_t v : m.hull) on_hull[v] = 1;
   CircleCounter circles(delaunay);
-  Local local{m, d, on_hull, {}, {}};
+  Local local{m, d, on_hull, has_domain(delaunay) ? nullptr : memo, {}, {}, {}};
   uint32_t flips = 0;
+  // A flip's test reads only the stars of its quad's four vertices (and the
+  // terms of edges and triangles between them): after the first pass, a quad
+  // none of whose vertices a flip touched since the pass before is tested no
+  // more (it would be rejected again).
+  std::vector<int> touched(m.num_vertices(), -2);  // the last pass that flipped at the vertex
   for (int pass = 0; pass < 30; ++pass) {
     if (progress && !progress(pass, 30)) throw Cancelled();
     bool changed = false;
@@ -91,6 +103,7 @@ uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o
       const int32_t f = m.halfedges[e];
       if (f < static_cast<int32_t>(e)) continue;
       const uint32_t a = m.origin(e), b = m.target(e), c = m.apex(e), x = m.apex(static_cast<uint32_t>(f));
+      if (pass > 0 && std::max({touched[a], touched[b], touched[c], touched[x]}) < pass - 1) continue;
       const int sa = orient2d(m.point(c), m.point(x), m.point(a)), sb = orient2d(m.point(c), m.point(x), m.point(b));
       if (sa == 0 || sb == 0 || sa == sb) continue;  // not strictly convex
       if (circles.count(a, x, c, k) > k || circles.count(x, b, c, k) > k) continue;
@@ -99,8 +112,12 @@ uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o
       const double after = local.around(e);
       // Strictly better, beyond rounding (sums of lengths are not exact).
       const double margin = d.combine == TermCombine::Sum ? 1e-12 * std::abs(before) : 0;
-      if (sense == Sense::Min ? after < before - margin : after > before + margin) changed = true, ++flips;
-      else flip_edge(m, e);  // undo
+      if (sense == Sense::Min ? after < before - margin : after > before + margin) {
+        changed = true, ++flips;
+        for (uint32_t v : {a, b, c, x}) touched[v] = pass;
+      } else {
+        flip_edge(m, e);  // undo
+      }
     }
     if (!changed) break;
   }

@@ -185,7 +185,7 @@ bool list_whole(const Mesh& dt, Objective o, RegionEngine& engine, const Progres
   wide.max_total_states = 1'500'000;
   enumerate_regions(dt, R, wide);
   if (R.incomplete) R = std::move(listed);
-  else engine.model = region_model(dt, R, o, {}, progress);
+  else engine.model = region_model(dt, R, o, engine.model_limits, progress);
   return !R.incomplete;
 }
 
@@ -218,6 +218,7 @@ std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEn
   const Sense sense = info(o).sense;
   RegionDualLimits limits;
   limits.dual.progress = limits.dp.progress = progress;
+  limits.model = engine.model_limits;
   limits.dp.max_table = 1 << 24;
   limits.dual.max_sweeps = max_sweeps;
   std::optional<double> bound;
@@ -394,7 +395,7 @@ std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& e
 // min-mixed-vertices: 77 -> 76, the bound, in 0.5 s), while they improve it.
 // What improves r replaces it.
 double by_stars(const Mesh& dt, Objective o, uint32_t k, const Candidates& cand, KOrderResult& r, double bound,
-                std::string& how, const Progress& progress) {
+                std::string& how, const Progress& progress, VertexTermMemo& memo) {
   const Sense sense = info(o).sense;
   StarBoundLimits stars;
   stars.progress = progress;
@@ -408,7 +409,7 @@ double by_stars(const Mesh& dt, Objective o, uint32_t k, const Candidates& cand,
   bool decoded = false, windowed = false;
   auto adopt = [&](const std::vector<Tri>& tris) {
     Mesh m = mesh_of(dt.coords, tris);
-    improve_by_flips(m, dt, k, o, progress);
+    improve_by_flips(m, dt, k, o, progress, &memo);
     const double v = evaluate(o, m);
     if (!better(sense, v, r.value)) return false;
     r.triangulation = std::move(m), r.value = v;
@@ -437,7 +438,7 @@ double by_stars(const Mesh& dt, Objective o, uint32_t k, const Candidates& cand,
 // bounded: whether a heuristic answer needs its bound (the ladder's lower
 // orders serve only as starts).
 KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes,
-                           FirstOrderStart& first_order, bool bounded = true) {
+                           FirstOrderStart& first_order, VertexTermMemo& memo, bool bounded = true) {
   const Mesh& dt = fo.base;
   if (options.method == Method::BruteForce) {
     return brute_force_k_order(dt, o, k, max_nodes, options.progress);
@@ -474,13 +475,13 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     if (lower || k < 3) return;
     SolveOptions lower_options = options;
     lower_options.method = Method::Auto;
-    lower = solve_regions(fo, o, k <= 8 ? k - 1 : k / 2, lower_options, max_nodes, first_order, false);
+    lower = solve_regions(fo, o, k <= 8 ? k - 1 : k / 2, lower_options, max_nodes, first_order, memo, false);
   };
   if (k >= 5) solve_lower();
   RegionLimits budgets;
   budgets.max_nodes_per_region = max_nodes;
   const KOrderStructure structure(dt, k, std::move(useful), options.progress);
-  RegionEngine engine(dt, o, structure, std::move(skeleton), budgets, options.progress);
+  RegionEngine engine(dt, o, structure, std::move(skeleton), budgets, options.progress, &memo);
   Regions& R = engine.R;
   const Candidates& cand = engine.cand;
   const RegionTerms& terms = engine.terms;
@@ -550,7 +551,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
       start = std::move(lower->triangulation), start_value = lower->value, start_name = "answer at order " + std::to_string(k <= 8 ? k - 1 : k / 2);
     if (start_proven()) return r;
   }
-  if (added) model = region_model(dt, R, o, {}, options.progress);
+  if (added) model = region_model(dt, R, o, engine.model_limits, options.progress);
   const ListedBest listed = engine.best_listed(listed_states(R, start), options.progress);
   if (bounded && listed.bound_only && !R.incomplete && !model.graph.relaxed_terms &&
       !better(sense, listed.listed_value, start_value)) {
@@ -586,7 +587,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // Then k-OD flips that improve the terms around them (they reach into the
   // regions too large to list).
   Mesh flipped = r.triangulation;
-  if (!refuted && improve_by_flips(flipped, dt, k, o, options.progress)) {
+  if (!refuted && improve_by_flips(flipped, dt, k, o, options.progress, &memo)) {
     const double v = evaluate(o, flipped);
     if (better(sense, v, r.value)) r.triangulation = std::move(flipped), r.value = v, how += ", then k-OD flips";
   }
@@ -615,6 +616,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   }
   ViewBoundLimits vl;
   vl.views.progress = vl.dp.progress = options.progress;
+  vl.model = engine.model_limits;
   const bool met = !better(sense, bound, r.value);
   if (const auto vb = met ? std::nullopt : view_bound(dt, R, o, cand, terms, engine.limits.max_region_triangles, r.value, vl)) {
     bound = tighter(sense, bound, vb->bound);
@@ -630,6 +632,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     RegionDualLimits limits;
     limits.dual.progress = options.progress;
     limits.dual.max_sweeps = 100;
+    limits.model = engine.model_limits;
     if (const auto t = region_threshold_bound(dt, R, o, cand, terms, bound, r.value, limits)) {
       bound = tighter(sense, bound, *t);
       how += ", bound by thresholds over the regions' fill graphs";
@@ -649,7 +652,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // Counts and lengths: the bound from the vertices' stars, which lists no
   // region (one region of thousands of triangles, as from k = 6 on the volcano, too).
   if (description.combine == TermCombine::Sum && better(sense, bound, r.value))
-    bound = by_stars(dt, o, k, cand, r, bound, how, options.progress);
+    bound = by_stars(dt, o, k, cand, r, bound, how, options.progress, memo);
   r.bound = sense == Sense::Min ? std::min(bound, r.value) : std::max(bound, r.value);
   r.optimal = *r.bound == r.value;
   if (options.method == Method::Exact && !r.optimal)
@@ -665,7 +668,8 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
 KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes) {
   if (!fo.is_delaunay) throw InputError("higher order needs the Delaunay triangulation: not for user triangulations");
   FirstOrderStart first_order{fo, o, options, {}, 0, {}};
-  KOrderResult r = solve_regions(fo, o, k, options, max_nodes, first_order);
+  VertexTermMemo memo;  // (the ladder's orders meet the same stars too)
+  KOrderResult r = solve_regions(fo, o, k, options, max_nodes, first_order, memo);
   r.delaunay_value = evaluate(o, fo.base);
   return r;
 }

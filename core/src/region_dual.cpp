@@ -157,7 +157,7 @@ void prove(const Mesh& dt, const Regions& R, Objective o, const std::vector<Regi
     listed.regions[r].complete = true;
   }
   listed.incomplete = 0;
-  const RegionModel whole = region_model(dt, listed, o, {}, limits.dual.progress);
+  const RegionModel whole = region_model(dt, listed, o, limits.model, limits.dual.progress);
   const DualProof again(whole.graph, limits.dual, incumbent);
   if (!again.applies()) return;
   const DualProof::Proof p = again.prove(incumbent, limits.dp);
@@ -244,7 +244,7 @@ std::optional<GraphModel> graph_model(const Mesh& dt, const Regions& R, Objectiv
     }
   }
   if (m.relaxed == order.size()) return std::nullopt;
-  m.model = region_model(dt, R, o, {}, limits.dual.progress, &views);
+  m.model = region_model(dt, R, o, limits.model, limits.dual.progress, &views);
   m.factors.resize(R.regions.size());
   for (uint32_t r = 0; r < R.regions.size(); ++r) {
     if (!graphs[r]) continue;

@@ -25,7 +25,7 @@ RegionEngine::RegionEngine(const Mesh& dt, Objective o, const KOrderStructure& s
 
 // (Forced edges drop the useful edges that cross them: the candidates follow.)
 RegionEngine::RegionEngine(const Mesh& dt, Objective o, const KOrderStructure& structure, Regions skeleton,
-                           const RegionLimits& budgets, const Progress& progress)
+                           const RegionLimits& budgets, const Progress& progress, VertexTermMemo* memo)
     : R(std::move(skeleton)),
       restricted_(R.useful.size() < structure.useful.size() ? restrict_candidates(structure.candidates, R.useful)
                                                              : Candidates{}),
@@ -35,8 +35,9 @@ RegionEngine::RegionEngine(const Mesh& dt, Objective o, const KOrderStructure& s
   limits.candidates = &cand;
   limits.progress = progress;
   limits.terms = &terms;
+  model_limits.memo = memo;
   enumerate_regions(dt, R, limits);
-  model = region_model(dt, R, o, {}, progress);
+  model = region_model(dt, R, o, model_limits, progress);
 }
 
 std::optional<std::string> RegionEngine::exact_refusal() const {

@@ -5,6 +5,7 @@
 #include <map>
 #include <unordered_set>
 
+#include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/region_terms.hpp"
@@ -218,7 +219,7 @@ struct Builder {
     }
   }
 
-  void vertex_terms(double max_factor) {
+  void vertex_terms(double max_factor, VertexTermMemo* memo) {
     std::vector<Fans> fans(src.size());
     std::vector<uint8_t> have(src.size(), 0);
     auto fans_at = [&](uint32_t i) -> const Fans& {
@@ -263,7 +264,8 @@ struct Builder {
           tris.insert(tris.end(), fan.begin(), fan.end());
         }
         star_neighbors(v, tris, nb);
-        return vertex_term(d, dt, Star(v, nb, tris));
+        auto eval = [&] { return vertex_term(d, dt, Star(v, nb, tris)); };
+        return memo ? (*memo)(v, nb, eval) : eval();
       };
       if (choice_regions.empty()) {
         add_constant(term({}));
@@ -336,7 +338,7 @@ RegionModel region_model(const Mesh& dt, const Regions& R, Objective o, const Re
       g.partial.push_back(partial);
     }
   }
-  if (vertex_site(d.site)) b.vertex_terms(limits.max_factor);
+  if (vertex_site(d.site)) b.vertex_terms(limits.max_factor, has_domain(dt) ? nullptr : limits.memo);
   else if (edge_site(d.site)) b.edge_terms();
   else b.triangle_terms();
   return M;

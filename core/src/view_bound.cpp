@@ -50,7 +50,7 @@ std::optional<ViewBound> view_bound(const Mesh& dt, const Regions& R, Objective 
       else retry[r] = 1, per[r].max_states *= 4, any = true;
     }
     if (!any) break;
-    const RegionModel M = region_model(dt, R, o, {}, limits.views.progress, &views);
+    const RegionModel M = region_model(dt, R, o, limits.model, limits.views.progress, &views);
     // Where the tables are too large, mini-buckets: still a bound, but their
     // assignment is no optimum to refine the views by, so the rounds stop.
     StateDpLimits dp = limits.dp;

@@ -7,11 +7,14 @@
 #include "hodt/factor_graph.hpp"
 #include "hodt/mesh.hpp"
 #include "hodt/objectives.hpp"
+#include "hodt/vertex_term_memo.hpp"
 
 namespace hodt {
 
 // Improves the k-OD triangulation m (same points as `delaunay`) in place; returns
-// the number of flips made.
-uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o, const Progress& progress = {});
+// the number of flips made. memo: vertex terms of the solve's stars (for this
+// objective; not used within a domain).
+uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o, const Progress& progress = {},
+                          VertexTermMemo* memo = nullptr);
 
 }  // namespace hodt

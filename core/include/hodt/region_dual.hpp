@@ -19,6 +19,7 @@
 
 #include "hodt/dual_bound.hpp"
 #include "hodt/fill_enumerator.hpp"
+#include "hodt/region_model.hpp"
 #include "hodt/region_terms.hpp"
 #include "hodt/regions.hpp"
 
@@ -43,6 +44,7 @@ struct RegionDualLimits {
   uint64_t max_listed_total = 200'000;
   DualLimits dual;
   StateDpLimits dp;                    // for the DP over what the proof lists
+  RegionModelLimits model;             // the models over the regions listed whole
 };
 
 struct RegionDual {

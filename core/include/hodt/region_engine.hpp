@@ -38,9 +38,10 @@ struct RegionEngine {
   RegionEngine(const Mesh& delaunay, Objective o, const KOrderStructure& structure, uint32_t k,
                const RegionLimits& budgets, const Progress& progress, const std::vector<uint8_t>& forced = {});
   // The same from a skeleton of the structure's useful edges (k_order_skeleton),
-  // computed once.
+  // computed once; memo (when given, it must outlive the engine): vertex terms
+  // shared with the other engines of the solve.
   RegionEngine(const Mesh& delaunay, Objective o, const KOrderStructure& structure, Regions skeleton,
-               const RegionLimits& budgets, const Progress& progress);
+               const RegionLimits& budgets, const Progress& progress, VertexTermMemo* memo = nullptr);
   RegionEngine(const RegionEngine&) = delete;
 
   Regions R;
@@ -50,6 +51,7 @@ struct RegionEngine {
   const Candidates& cand;
   const RegionTerms terms;  // (reads R and cand)
   RegionLimits limits;
+  RegionModelLimits model_limits;  // (every model of R: the engine's, rebuilt, the duals' and the views')
   RegionModel model;
 
   // Why the exact DP cannot run (a region not listed whole, a term not tabulated).

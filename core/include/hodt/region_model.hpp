@@ -14,6 +14,7 @@
 #include "hodt/region_views.hpp"
 #include "hodt/regions.hpp"
 #include "hodt/state_graph.hpp"
+#include "hodt/vertex_term_memo.hpp"
 
 namespace hodt {
 
@@ -30,6 +31,9 @@ struct RegionModel {
 
 struct RegionModelLimits {
   double max_factor = 1 << 20;  // entries of one vertex factor; larger ones are relaxed
+  // Vertex terms remembered across the models of one solve (one objective, one
+  // Delaunay triangulation); not used within a domain.
+  VertexTermMemo* memo = nullptr;
 };
 
 // views: per region, nothing or its views (a relaxation, as above).

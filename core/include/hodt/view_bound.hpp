@@ -28,6 +28,7 @@ struct ViewBoundLimits {
   uint32_t max_rounds = 4;
   uint64_t max_total_states = 3'000'000;  // partial fills over all views' DPs (about 5 us each)
   StateDpLimits dp;
+  RegionModelLimits model;  // the models over the views
 };
 
 // Nothing when no region can be read through views (or the DP does not fit).
