@@ -603,7 +603,12 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // The bound: the model's relaxation, or the tighter one that reads the regions
   // too large to list through their views; when those views agree, a
   // triangulation that meets it.
-  double bound = refuted ? r.value : tighter(sense, relaxation_bound(model.graph, dl), global);
+  // (Counts, unless approx is asked, read it only if the dual's proof, which
+  // needs no other bound, did not come: a 10k-point DEM sample at k = 4,
+  // max-convex-edges, 1.1 s.)
+  auto relaxed = [&] { return tighter(sense, relaxation_bound(model.graph, dl), global); };
+  const bool dual_first = provable && options.method != Method::Approx;
+  double bound = refuted ? r.value : dual_first ? global : relaxed();
   if (description.combine == TermCombine::Max) bound = tighter(sense, bound, terms.floor());
   // Counts: the dual before the views (it proves most instances on its own: a
   // 131k-cell DEM at k = 4, max-convex-vertices, where the views cost twice the
@@ -613,6 +618,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
       if (r.optimal) return r;
       bound = tighter(sense, bound, *d);
     }
+    if (dual_first) bound = tighter(sense, bound, relaxed());
   }
   ViewBoundLimits vl;
   vl.views.progress = vl.dp.progress = options.progress;
