@@ -89,11 +89,6 @@ uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o
   CircleCounter circles(delaunay);
   Local local{m, d, on_hull, has_domain(delaunay) ? nullptr : memo, {}, {}, {}};
   uint32_t flips = 0;
-  // A flip's test reads only the stars of its quad's four vertices (and the
-  // terms of edges and triangles between them): after the first pass, a quad
-  // none of whose vertices a flip touched since the pass before is tested no
-  // more (it would be rejected again).
-  std::vector<int> touched(m.num_vertices(), -2);  // the last pass that flipped at the vertex
   for (int pass = 0; pass < 30; ++pass) {
     if (progress && !progress(pass, 30)) throw Cancelled();
     bool changed = false;
@@ -103,7 +98,6 @@ uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o
       const int32_t f = m.halfedges[e];
       if (f < static_cast<int32_t>(e)) continue;
       const uint32_t a = m.origin(e), b = m.target(e), c = m.apex(e), x = m.apex(static_cast<uint32_t>(f));
-      if (pass > 0 && std::max({touched[a], touched[b], touched[c], touched[x]}) < pass - 1) continue;
       const int sa = orient2d(m.point(c), m.point(x), m.point(a)), sb = orient2d(m.point(c), m.point(x), m.point(b));
       if (sa == 0 || sb == 0 || sa == sb) continue;  // not strictly convex
       if (circles.count(a, x, c, k) > k || circles.count(x, b, c, k) > k) continue;
@@ -112,12 +106,8 @@ uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o
       const double after = local.around(e);
       // Strictly better, beyond rounding (sums of lengths are not exact).
       const double margin = d.combine == TermCombine::Sum ? 1e-12 * std::abs(before) : 0;
-      if (sense == Sense::Min ? after < before - margin : after > before + margin) {
-        changed = true, ++flips;
-        for (uint32_t v : {a, b, c, x}) touched[v] = pass;
-      } else {
-        flip_edge(m, e);  // undo
-      }
+      if (sense == Sense::Min ? after < before - margin : after > before + margin) changed = true, ++flips;
+      else flip_edge(m, e);  // undo
     }
     if (!changed) break;
   }
