@@ -32,16 +32,6 @@ void for_entries(const StateFactor& f, Visit visit) {
   }
 }
 
-// Along scope position j of a table (its stride `inner`, its classes d): adds
-// w[class] to every entry.
-void add_along(std::vector<double>& t, size_t inner, size_t d, const double* w) {
-  for (size_t o = 0; o < t.size(); o += inner * d)
-    for (size_t c = 0; c < d; ++c) {
-      double* p = t.data() + o + c * inner;
-      for (size_t i = 0; i < inner; ++i) p[i] += w[c];
-    }
-}
-
 // A factor's table in rows along its first scope position (stride 1): per
 // row, its first entry, its classes at the other positions, and the sum of
 // w[j][class] over those (the ascent's inner loops then add one term per entry,
@@ -172,19 +162,24 @@ struct Ascent {
     set_least(fi);
   }
 
-  // Factor fi's table less its messages (exact: dyadic values in range).
-  std::vector<double> reparametrised(size_t fi) const {
+  // Factor fi's table less its messages, entry by entry: visit(entry, value).
+  // (Exact: dyadic values in range; one pass along rows, for_rows.)
+  template <class Visit>
+  void for_reparametrised(size_t fi, Visit visit) const {
     const StateFactor& f = g.factors[fi];
-    std::vector<double> t(f.table);
-    for (double& v : t) v *= sign;
-    std::vector<double> w;
-    size_t inner = 1;
-    for (size_t j = 0; j < f.scope.size(); ++j) {
-      w.clear();
-      for (double v : msg[fi][j]) w.push_back(-v);
-      add_along(t, inner, f.dims[j], w.data());
-      inner *= f.dims[j];
-    }
+    if (f.dims.empty()) return visit(size_t(0), sign * f.table[0]);
+    const size_t d0 = f.dims[0];
+    const double* m0 = msg[fi][0].data();
+    for_rows(
+        f, msg[fi],
+        [&](size_t o, const std::vector<uint32_t>&, double rest) {
+          for (size_t i = 0; i < d0; ++i) visit(o + i, sign * f.table[o + i] - m0[i] - rest);
+        },
+        [](size_t, uint32_t) {});
+  }
+  std::vector<double> reparametrised(size_t fi) const {
+    std::vector<double> t(g.factors[fi].table.size());
+    for_reparametrised(fi, [&](size_t e, double v) { t[e] = v; });
     return t;
   }
 
@@ -257,24 +252,8 @@ struct Ascent {
       if (!(std::fabs(factor_least[fi]) < kLargest)) in_range = false;
       return;
     }
-    // (reparametrised(fi) in one pass, its least entry and its range.)
-    const StateFactor& f = g.factors[fi];
-    std::vector<std::vector<double>> w(msg[fi]);
-    for (auto& c : w)
-      for (double& v : c) v = -v;
-    const size_t d0 = f.dims.empty() ? 1 : f.dims[0];
-    const double zero = 0;
-    const double* w0 = f.dims.empty() ? &zero : w[0].data();
-    const size_t step = f.dims.empty() ? 0 : 1;
     double least = INFINITY, most = -INFINITY;  // (the values are finite: tables and messages are)
-    for_rows(f, w, [&](size_t o, const std::vector<uint32_t>&, double rest) {
-      const double* t = f.table.data() + o;
-      for (size_t i = 0; i < d0; ++i) {
-        const double v = sign * t[i] + w0[i * step] + rest;
-        least = std::min(least, v);
-        most = std::max(most, v);
-      }
-    }, [](size_t, uint32_t) {});
+    for_reparametrised(fi, [&](size_t, double v) { least = std::min(least, v), most = std::max(most, v); });
     if (!(least > -kLargest && most < kLargest)) in_range = false;
     factor_least[fi] = least;
   }

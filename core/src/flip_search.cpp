@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "hodt/circle_count.hpp"
-#include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/objective_terms.hpp"
 #include "hodt/predicates.hpp"
@@ -87,7 +86,7 @@ uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o
   std::vector<uint8_t> on_hull(m.num_vertices(), 0);
   for (uint32_t v : m.hull) on_hull[v] = 1;
   CircleCounter circles(delaunay);
-  Local local{m, d, on_hull, has_domain(delaunay) ? nullptr : memo, {}, {}, {}};
+  Local local{m, d, on_hull, memo, {}, {}, {}};
   uint32_t flips = 0;
   for (int pass = 0; pass < 30; ++pass) {
     if (progress && !progress(pass, 30)) throw Cancelled();

@@ -395,7 +395,7 @@ std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& e
 // min-mixed-vertices: 77 -> 76, the bound, in 0.5 s), while they improve it.
 // What improves r replaces it.
 double by_stars(const Mesh& dt, Objective o, uint32_t k, const Candidates& cand, KOrderResult& r, double bound,
-                std::string& how, const Progress& progress, VertexTermMemo& memo) {
+                std::string& how, const Progress& progress, VertexTermMemo* memo) {
   const Sense sense = info(o).sense;
   StarBoundLimits stars;
   stars.progress = progress;
@@ -409,7 +409,7 @@ double by_stars(const Mesh& dt, Objective o, uint32_t k, const Candidates& cand,
   bool decoded = false, windowed = false;
   auto adopt = [&](const std::vector<Tri>& tris) {
     Mesh m = mesh_of(dt.coords, tris);
-    improve_by_flips(m, dt, k, o, progress, &memo);
+    improve_by_flips(m, dt, k, o, progress, memo);
     const double v = evaluate(o, m);
     if (!better(sense, v, r.value)) return false;
     r.triangulation = std::move(m), r.value = v;
@@ -438,7 +438,7 @@ double by_stars(const Mesh& dt, Objective o, uint32_t k, const Candidates& cand,
 // bounded: whether a heuristic answer needs its bound (the ladder's lower
 // orders serve only as starts).
 KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes,
-                           FirstOrderStart& first_order, VertexTermMemo& memo, bool bounded = true) {
+                           FirstOrderStart& first_order, VertexTermMemo* memo, bool bounded = true) {
   const Mesh& dt = fo.base;
   if (options.method == Method::BruteForce) {
     return brute_force_k_order(dt, o, k, max_nodes, options.progress);
@@ -481,7 +481,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   RegionLimits budgets;
   budgets.max_nodes_per_region = max_nodes;
   const KOrderStructure structure(dt, k, std::move(useful), options.progress);
-  RegionEngine engine(dt, o, structure, std::move(skeleton), budgets, options.progress, &memo);
+  RegionEngine engine(dt, o, structure, std::move(skeleton), budgets, options.progress, memo);
   Regions& R = engine.R;
   const Candidates& cand = engine.cand;
   const RegionTerms& terms = engine.terms;
@@ -587,7 +587,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // Then k-OD flips that improve the terms around them (they reach into the
   // regions too large to list).
   Mesh flipped = r.triangulation;
-  if (!refuted && improve_by_flips(flipped, dt, k, o, options.progress, &memo)) {
+  if (!refuted && improve_by_flips(flipped, dt, k, o, options.progress, memo)) {
     const double v = evaluate(o, flipped);
     if (better(sense, v, r.value)) r.triangulation = std::move(flipped), r.value = v, how += ", then k-OD flips";
   }
@@ -674,8 +674,8 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
 KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes) {
   if (!fo.is_delaunay) throw InputError("higher order needs the Delaunay triangulation: not for user triangulations");
   FirstOrderStart first_order{fo, o, options, {}, 0, {}};
-  VertexTermMemo memo;  // (the ladder's orders meet the same stars too)
-  KOrderResult r = solve_regions(fo, o, k, options, max_nodes, first_order, memo);
+  VertexTermMemo memo;  // (the ladder's orders meet the same stars too; none within a domain)
+  KOrderResult r = solve_regions(fo, o, k, options, max_nodes, first_order, has_domain(fo.base) ? nullptr : &memo);
   r.delaunay_value = evaluate(o, fo.base);
   return r;
 }

@@ -5,7 +5,6 @@
 #include <map>
 #include <unordered_set>
 
-#include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/region_terms.hpp"
@@ -338,7 +337,7 @@ RegionModel region_model(const Mesh& dt, const Regions& R, Objective o, const Re
       g.partial.push_back(partial);
     }
   }
-  if (vertex_site(d.site)) b.vertex_terms(limits.max_factor, has_domain(dt) ? nullptr : limits.memo);
+  if (vertex_site(d.site)) b.vertex_terms(limits.max_factor, limits.memo);
   else if (edge_site(d.site)) b.edge_terms();
   else b.triangle_terms();
   return M;

@@ -13,7 +13,7 @@ namespace hodt {
 
 // Improves the k-OD triangulation m (same points as `delaunay`) in place; returns
 // the number of flips made. memo: vertex terms of the solve's stars (for this
-// objective; not used within a domain).
+// objective; none within a domain: vertex_term_memo.hpp).
 uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o, const Progress& progress = {},
                           VertexTermMemo* memo = nullptr);
 

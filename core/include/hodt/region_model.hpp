@@ -32,7 +32,7 @@ struct RegionModel {
 struct RegionModelLimits {
   double max_factor = 1 << 20;  // entries of one vertex factor; larger ones are relaxed
   // Vertex terms remembered across the models of one solve (one objective, one
-  // Delaunay triangulation); not used within a domain.
+  // Delaunay triangulation; none within a domain: vertex_term_memo.hpp).
   VertexTermMemo* memo = nullptr;
 };
 

@@ -8,8 +8,8 @@
 // Over the convex hull the star of v in a triangulation is the fan over its
 // neighbours in angular order (the triangles around v tile a neighbourhood of
 // it, or at a hull vertex the wedge inside the hull), so the neighbours decide
-// the term. Not so within a domain, where holes open gaps in a star: the
-// models do not use a memo there.
+// the term. Not so within a domain, where holes open gaps in a star: a solve
+// there has no memo.
 #pragma once
 #include <cstddef>
 #include <cstdint>
