@@ -9,7 +9,7 @@
 namespace hodt {
 
 BottleneckBuilder::BottleneckBuilder(uint32_t num_quads, bool prune)
-    : prune_(prune), unary_seq_(num_quads, kUnary) {
+    : prune_(prune), unary_seq_(num_quads, kUnary), in_binary_(num_quads, 0) {
   model_.num_quads = num_quads;
   index_.reserve(2 * size_t(num_quads));  // no rehash of a large map in one step
 }
@@ -27,6 +27,7 @@ PairTerm* BottleneckBuilder::find(uint32_t q, uint32_t r) {
 
 void BottleneckBuilder::add(const PairTerm& t, uint32_t seq) {
   index_.insert((uint64_t(uint32_t(t.q)) << 32) | uint32_t(t.r), static_cast<uint32_t>(model_.terms.size()));
+  if (t.r >= 0) in_binary_[t.q] = in_binary_[t.r] = 1;
   model_.terms.push_back(t);
   seq_.push_back(seq);
 }
@@ -61,7 +62,9 @@ void BottleneckBuilder::binary(uint32_t q, uint32_t r, const double v[4]) {
     t.v[0] = v[0], t.v[1] = v[2], t.v[2] = v[1], t.v[3] = v[3];
   }
   const uint32_t seq = next_seq_++;
-  PairTerm* kept = find(uint32_t(t.q), uint32_t(t.r));
+  // (Only quads that both have a kept binary term can share one: on a raster,
+  // where the floor prunes most pairs, most lookups end here.)
+  PairTerm* kept = in_binary_[t.q] && in_binary_[t.r] ? find(uint32_t(t.q), uint32_t(t.r)) : nullptr;
   if (kept) seq_[static_cast<size_t>(kept - model_.terms.data())] = seq;  // even when this part is pruned
   if (below_floor(t.v, 4)) return;
   if (!kept) {
@@ -167,10 +170,15 @@ BottleneckResult solve_bottleneck(const BottleneckModel& m, const Progress& prog
   BottleneckResult r;
   r.choice.assign(m.num_quads, 0);  // Delaunay: feasible at `upper`
   size_t lo = 0, hi = cand.size() - 1;
-  // Progress: the binary search's steps (about log2 of the candidates).
-  const double steps = std::ceil(std::log2(static_cast<double>(cand.size()))) + 1;
+  // Progress: the binary search's steps (about log2 of the candidates), and
+  // the lower bound's test first: on a raster, where pairs tie in large groups,
+  // the optimum is often the bound itself, one test instead of all the steps
+  // (and elsewhere one test more).
+  const double steps = std::ceil(std::log2(static_cast<double>(cand.size()))) + 2;
+  bool lower_first = true;
   while (lo < hi) {
-    const size_t mid = lo + (hi - lo) / 2;
+    const size_t mid = lower_first ? lo : lo + (hi - lo) / 2;
+    lower_first = false;
     ThresholdStep step;
     const double done = static_cast<double>(r.trace.size());
     report(progress, done, steps);
@@ -187,21 +195,26 @@ BottleneckResult solve_bottleneck(const BottleneckModel& m, const Progress& prog
   r.value = cand[lo];
   // Among the optimal choices prefer Delaunay diagonals: revert a flipped quad when
   // every term it is part of stays within the optimum (fewer, meaningful flips).
-  // Terms of each quad: (quad, term) sorted, as quads are visited in order.
-  std::vector<std::pair<uint32_t, uint32_t>> terms_of;
-  for (uint32_t k = 0; k < m.terms.size(); ++k) {
-    terms_of.push_back({static_cast<uint32_t>(m.terms[k].q), k});
-    if (m.terms[k].r >= 0) terms_of.push_back({static_cast<uint32_t>(m.terms[k].r), k});
+  // Terms of each quad in compressed rows, in term order.
+  std::vector<uint32_t> first(m.num_quads + 1, 0), terms_of;
+  for (const PairTerm& t : m.terms) {
+    ++first[static_cast<uint32_t>(t.q) + 1];
+    if (t.r >= 0) ++first[static_cast<uint32_t>(t.r) + 1];
   }
-  std::sort(terms_of.begin(), terms_of.end());
-  auto next = terms_of.begin();
+  for (uint32_t q = 0; q < m.num_quads; ++q) first[q + 1] += first[q];
+  terms_of.resize(first.back());
+  {
+    std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+    for (uint32_t k = 0; k < m.terms.size(); ++k) {
+      terms_of[fill[static_cast<uint32_t>(m.terms[k].q)]++] = k;
+      if (m.terms[k].r >= 0) terms_of[fill[static_cast<uint32_t>(m.terms[k].r)]++] = k;
+    }
+  }
   for (uint32_t q = 0; q < m.num_quads; ++q) {
-    const auto begin = next;
-    while (next != terms_of.end() && next->first == q) ++next;
     if (!r.choice[q]) continue;
     r.choice[q] = 0;
-    for (auto it = begin; it != next; ++it) {
-      const PairTerm& t = m.terms[it->second];
+    for (uint32_t k = first[q]; k < first[q + 1]; ++k) {
+      const PairTerm& t = m.terms[terms_of[k]];
       const int idx = r.choice[static_cast<uint32_t>(t.q)] + (t.r >= 0 ? 2 * r.choice[static_cast<uint32_t>(t.r)] : 0);
       if (t.v[idx] > r.value) {
         r.choice[q] = 1;

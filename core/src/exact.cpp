@@ -52,13 +52,12 @@ Choice smaller_largest_triangles(const FirstOrder& fo, const Progress& progress)
   // The optimum is the larger of the largest fixed triangle and, over the quads,
   // the smaller of their two options; a quad flips only if Delaunay exceeds it.
   const Mesh& m = fo.base;
-  // Triangles whose rough area (within 2^-21) is below the running optimum by
-  // the margin 2^-20 cannot raise it or exceed it, accurate area and all: most
-  // skip the accurate area.
+  // Triangles whose area is bounded below the running optimum by the margin
+  // 2^-46 (the accurate area is within 4 ulps of the exact one) cannot raise it
+  // or exceed it: most skip the accurate area.
   double optimum = 0;
   auto below = [&](uint32_t a, uint32_t b, uint32_t c) {
-    const double r = rough_triangle_area(m.point(a), m.point(b), m.point(c));
-    return r > 0 && r * (1 + 0x1p-20) <= optimum;
+    return rough_area_bounds(m.point(a), m.point(b), m.point(c)).hi * (1 + 0x1p-46) <= optimum;
   };
   auto choice_below = [&](uint32_t q, bool flipped) {  // both triangles of the choice
     uint32_t t[6];
@@ -95,8 +94,12 @@ BottleneckModel pair_model(const FirstOrder& fo, Objective o, const Progress& pr
     case Objective::MinmaxEdgeAreaRatio: return edge_pair_model(fo, ratio, progress);
     case Objective::MinmaxEdgeNormalAngle: return edge_pair_model(fo, angle, progress);
     case Objective::MinmaxEdgeEnclosingCircle: return edge_pair_model(fo, circle, progress);
-    case Objective::MinmaxVertexAreaRatio: return vertex_pair_model(fo, ratio, progress);
-    case Objective::MinmaxVertexNormalAngle: return vertex_pair_model(fo, angle, progress);
+    case Objective::MinmaxVertexAreaRatio:
+      return vertex_pair_model(fo, ratio, progress,
+                               [&](const Tri* t, size_t n, double cut) { return star_area_ratio_below(m, t, n, cut); });
+    case Objective::MinmaxVertexNormalAngle:
+      return vertex_pair_model(fo, angle, progress,
+                               [&](const Tri* t, size_t n, double cut) { return star_normal_angle_below(m, t, n, cut); });
     default: throw std::logic_error("not a pair objective");
   }
 }

@@ -37,6 +37,33 @@ double cos_of(double cut) {
   return value;
 }
 
+// sin(cut - margin), recomputed only when they change.
+double sin_below(double cut, double margin) {
+  static thread_local double last = NAN, last_margin = NAN, value = NAN;
+  if (cut != last || margin != last_margin) last = cut, last_margin = margin, value = std::sin(cut - margin);
+  return value;
+}
+
+double cross_length(const double n[3], const double k[3]) {
+  const double cx = n[1] * k[2] - n[2] * k[1], cy = n[2] * k[0] - n[0] * k[2], cz = n[0] * k[1] - n[1] * k[0];
+  return std::sqrt(cx * cx + cy * cy + cz * cz);
+}
+
+// Whether two normals (cross the length of their cross product, x their dot
+// product, norms the product of their lengths) are at an angle below
+// cut - margin + 2^-48. A small angle's cosine is near 1, where a margin in
+// cosine is a large one in angle (2^-20 is 1% of an angle of 0.01); its sine
+// is well conditioned: the computed cross is within 5u norms of the exact one,
+// the sine's own rounding is covered by 2^-40, and with x > 0 and cut <= 1 the
+// angle is below pi/2 and its cosine above 1/2: the angle is within 2^-49 of
+// the sine's bound. (Smooth terrain: neighbouring normals differ by small
+// angles, and so does the cut.) With norms in [1e-140, 1e140] and the angle
+// above the margin, the cross product's squares neither underflow nor overflow.
+bool small_angle_below(double cross, double x, double norms, double cut, double margin) {
+  return x > 0 && cut <= 1 && cut > margin && norms > 1e-140 && norms < 1e140 &&
+         cross <= norms * sin_below(cut, margin) * (1 - 0x1p-40);
+}
+
 // The angle of two normals, or 0 when it is at most cut. The angle is
 // portable_angle(y, x) of y = |n x k| and x = n . k, within 1e-15 of atan2(y, x),
 // and atan2(y, x) < cut - 1e-15 when x / |(x, y)| exceeds cos(cut) by the margin
@@ -46,25 +73,38 @@ double angle_above(const std::array<double, 3>& n, const std::array<double, 3>& 
   const double x = normals_dot(n.data(), k.data());
   if (cut >= kRightAngleBound && x >= 0) return 0;
   if (cut > 0) {
-    const double cx = n[1] * k[2] - n[2] * k[1], cy = n[2] * k[0] - n[0] * k[2], cz = n[0] * k[1] - n[1] * k[0];
-    const double r = std::sqrt(cx * cx + cy * cy + cz * cz + x * x);
-    if (r > 1e-140 && r < 1e140 && x >= r * (cos_of(cut) + 1e-9)) return 0;  // (no underflow or overflow)
+    const double cross = cross_length(n.data(), k.data()), r = std::sqrt(cross * cross + x * x);
+    if (r > 1e-140 && r < 1e140 &&  // (no underflow or overflow)
+        (x >= r * (cos_of(cut) + 1e-9) || small_angle_below(cross, x, r, cut, 0x1p-40)))
+      return 0;
   }
   return normals_angle(n.data(), k.data());
 }
 
-double rough_area(const Mesh& m, const Tri& t) { return rough_triangle_area(m.point(t[0]), m.point(t[1]), m.point(t[2])); }
+AreaBounds rough_area(const Mesh& m, const Tri& t) { return rough_area_bounds(m.point(t[0]), m.point(t[1]), m.point(t[2])); }
 }  // namespace
 
 double pair_area_ratio(const Mesh& m, const Tri& s, const Tri& t) { return area_ratio(area(m, s), area(m, t)); }
 
 double pair_area_ratio(const Mesh& m, const Tri& s, const Tri& t, double cut) {
-  // Rough areas within 2^-21 make a ratio within 2^-19.9: below the cut with
-  // the margin 2^-18, the exact ratio is below it too, and so is the accurate
-  // one (within 9 ulps of it): most pairs end here.
-  const double a = rough_area(m, s), b = rough_area(m, t);
-  if (a > 0 && b > 0 && area_ratio(a, b) * (1 + 0x1p-18) <= cut) return cut;
+  // The exact ratio is at most the bounds' ratio, and the accurate one (areas
+  // within 4 ulps) within 2^-47 of the exact one: with the margin 2^-46 (which
+  // also covers this division's rounding) it is at most the cut. Most pairs end
+  // here, on a raster too, where the cut is within 1e-11 of 1.
+  const AreaBounds a = rough_area(m, s), b = rough_area(m, t);
+  if (a.lo > 0 && b.lo > 0 && std::max(a.hi / b.lo, b.hi / a.lo) * (1 + 0x1p-46) <= cut) return cut;
   return pair_area_ratio(m, s, t);
+}
+
+bool star_area_ratio_below(const Mesh& m, const Tri* t, size_t n, double cut) {
+  // Every pair's ratio is at most the largest bound over the least (the margin
+  // as for one pair).
+  double lo = INFINITY, hi = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const AreaBounds a = rough_area(m, t[i]);
+    lo = std::min(lo, a.lo), hi = std::max(hi, a.hi);
+  }
+  return lo > 0 && hi / lo * (1 + 0x1p-46) <= cut;
 }
 
 double pair_normal_angle(const Mesh& m, const Tri& s, const Tri& t) {
@@ -99,11 +139,34 @@ double pair_normal_angle(const Mesh& m, const Tri& s, const Tri& t, double cut) 
   // cut - 2^-20 and the exact one below cut. Most pairs end here. (In the
   // coordinate range |n|^2 < 2^608 and a product of two would overflow: the
   // norms are taken one by one.)
+  // Small angles by their sine: within 2^-28 radians for the two rough
+  // normals, the margin 2^-26 covers it.
   double n[3], k[3];
-  if (cut > 0 && rough_normal(m, s, n) && rough_normal(m, t, k) &&
-      normals_dot(n, k) >= std::sqrt(normals_dot(n, n)) * std::sqrt(normals_dot(k, k)) * (cos_of(cut) + 0x1p-20))
-    return 0;
+  if (cut > 0 && rough_normal(m, s, n) && rough_normal(m, t, k)) {
+    const double x = normals_dot(n, k), norms = std::sqrt(normals_dot(n, n)) * std::sqrt(normals_dot(k, k));
+    if (x >= norms * (cos_of(cut) + 0x1p-20) || small_angle_below(cross_length(n, k), x, norms, cut, 0x1p-26)) return 0;
+  }
   return angle_above(normal(m, s), normal(m, t), cut);
+}
+
+bool star_normal_angle_below(const Mesh& m, const Tri* t, size_t n, double cut) {
+  // Each rough normal within cut / 2 - 2^-26 (+ 2^-48) of some axis: any two
+  // within cut - 2^-25 of each other, the exact ones within 2^-28 more. The
+  // axis: the sum of the unit normals (any vector will do, a central one
+  // passes most stars).
+  if (n == 0 || n > 64) return false;
+  double normals[64][3], norm[64], axis[3] = {0, 0, 0};
+  for (size_t i = 0; i < n; ++i) {
+    if (!rough_normal(m, t[i], normals[i])) return false;
+    norm[i] = std::sqrt(normals_dot(normals[i], normals[i]));
+    for (int c = 0; c < 3; ++c) axis[c] += normals[i][c] / norm[i];
+  }
+  const double axis_norm = std::sqrt(normals_dot(axis, axis));
+  for (size_t i = 0; i < n; ++i)
+    if (!small_angle_below(cross_length(axis, normals[i]), normals_dot(axis, normals[i]), axis_norm * norm[i], cut / 2,
+                           0x1p-26))
+      return false;
+  return true;
 }
 
 double pair_enclosing_circle(const Mesh& m, const Tri& s, const Tri& t, double cut) {

@@ -6,6 +6,7 @@
 
 #include "generators.hpp"
 #include "hodt/bottleneck.hpp"
+#include "hodt/measures.hpp"
 #include "hodt/pair_measures.hpp"
 #include "hodt/skeleton.hpp"
 #include "hodt/terrain.hpp"
@@ -52,6 +53,62 @@ TEST_CASE("pair filters: the measure, or at most the cut when the measure is") {
   CHECK(filtered > pairs / 10);
 }
 
+// The star filters: a star (here every vertex's triangles, and the same with
+// a quad's flipped pair in) passes only if every pair in it measures at most the
+// cut. Cuts at the star's largest pair value and within the filters' margins of
+// it; passing where the cut is far above.
+TEST_CASE("star filters: a star passes only when every pair is at most the cut") {
+  size_t stars = 0, passed = 0;
+  for (uint64_t seed = 1; seed <= 40; ++seed) {
+    std::vector<double> xyz = seed % 4 == 0 ? sliver_points(40, seed)
+                              : seed % 4 == 1 ? dem_points(150, seed)
+                              : seed % 4 == 2 ? jittered_grid(8, 7, 1e-9, seed)
+                                              : grid_points(9, 8, seed);
+    if (seed % 4 == 3)  // (a raster after reprojection, as in the benchmark)
+      for (size_t i = 0; i < xyz.size(); i += 3) xyz[i] = 731012.3456789 + 74.98765 * xyz[i], xyz[i + 1] = 4100000.25 + 74.98765 * xyz[i + 1];
+    if (seed > 36) {  // both ends of the coordinate range
+      xyz = uniform_points(60, seed);
+      for (double& v : xyz) v = (v + 0.1) * (seed % 2 ? 1e44 : 1e-44);
+    }
+    const Terrain t = Terrain::from_points(xyz);
+    const FirstOrder& fo = t.structure();
+    const Mesh& m = fo.base;
+    const Stars st = build_stars(m);
+    const VertexIncidence vi = vertex_incidence(fo);
+    for (uint32_t v = 0; v < m.num_vertices(); ++v) {
+      std::vector<Tri> star;
+      for (uint32_t i = st.tri_offset[v]; i < st.tri_offset[v + 1]; ++i) star.push_back(base_triangle(m, st.triangle[i]));
+      for (int with_flip = 0; with_flip < 2; ++with_flip) {
+        if (with_flip) {  // a quad's other diagonal: its two triangles at v too
+          if (vi.quads_begin(v) == vi.quads_end(v)) continue;
+          Tri at[2];
+          const uint32_t n = quad_triangles_at(fo, *vi.quads_begin(v), v, true, at);
+          star.insert(star.end(), at, at + n);
+        }
+        double largest[2] = {0, 0};
+        for (size_t i = 0; i < star.size(); ++i)
+          for (size_t j = i + 1; j < star.size(); ++j) {
+            largest[0] = std::max(largest[0], pair_area_ratio(m, star[i], star[j]));
+            largest[1] = std::max(largest[1], pair_normal_angle(m, star[i], star[j]));
+          }
+        for (int k = 0; k < 2; ++k)
+          for (double factor : {1 - 1e-7, 1 - 1e-12, 1 - 1e-15, 1.0, 1 + 1e-15, 1 + 1e-12, 1.5, 3.0}) {
+            const double cut = k == 0 ? 1 + (largest[0] - 1) * factor : largest[1] * factor;
+            const bool below = k == 0 ? star_area_ratio_below(m, star.data(), star.size(), cut)
+                                      : star_normal_angle_below(m, star.data(), star.size(), cut);
+            ++stars;
+            if (below) {
+              ++passed;
+              CHECK(largest[k] <= cut);
+            }
+          }
+      }
+    }
+  }
+  MESSAGE(stars << " stars and cuts, " << passed << " passed");
+  CHECK(passed > stars / 10);
+}
+
 // A pruned model (measures with a cut, the floor raised by every term's least
 // value) keeps only what the search reads: the same thresholds, the same
 // clauses in the same order, so the same answer as the full model, ties and all.
@@ -71,6 +128,8 @@ TEST_CASE("pair models: pruned, the bottleneck search answers as over the full m
     auto ratio = [&](const Tri& s, const Tri& u, double cut) { return pair_area_ratio(m, s, u, cut); };
     auto angle = [&](const Tri& s, const Tri& u, double cut) { return pair_normal_angle(m, s, u, cut); };
     auto circle = [&](const Tri& s, const Tri& u, double cut) { return pair_enclosing_circle(m, s, u, cut); };
+    auto star_ratio = [&](const Tri* t, size_t n, double cut) { return star_area_ratio_below(m, t, n, cut); };
+    auto star_angle = [&](const Tri* t, size_t n, double cut) { return star_normal_angle_below(m, t, n, cut); };
     auto full_ratio = [&](const Tri& s, const Tri& u) { return pair_area_ratio(m, s, u); };
     auto full_angle = [&](const Tri& s, const Tri& u) { return pair_normal_angle(m, s, u); };
     auto full_circle = [&](const Tri& s, const Tri& u) { return pair_enclosing_circle(m, s, u); };
@@ -78,8 +137,8 @@ TEST_CASE("pair models: pruned, the bottleneck search answers as over the full m
         {edge_pair_model(fo, ratio), edge_pair_model(fo, full_ratio)},
         {edge_pair_model(fo, angle), edge_pair_model(fo, full_angle)},
         {edge_pair_model(fo, circle), edge_pair_model(fo, full_circle)},
-        {vertex_pair_model(fo, ratio), vertex_pair_model(fo, full_ratio)},
-        {vertex_pair_model(fo, angle), vertex_pair_model(fo, full_angle)},
+        {vertex_pair_model(fo, ratio, {}, star_ratio), vertex_pair_model(fo, full_ratio)},
+        {vertex_pair_model(fo, angle, {}, star_angle), vertex_pair_model(fo, full_angle)},
     };
     for (const auto& [pruned, full] : models) {
       CHECK(pruned.terms.size() <= full.terms.size());

@@ -46,8 +46,11 @@ struct BottleneckResult {
 // Builds a model: a pair measure evaluated on triangles (vertex triples).
 template <class Measure>
 BottleneckModel edge_pair_model(const FirstOrder& fo, Measure measure, const Progress& progress = {});
-template <class Measure>
-BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure, const Progress& progress = {});
+// (star_below: see bottleneck_models.ipp; none by default)
+constexpr auto kNoStarFilter = [](const Tri*, size_t, double) { return false; };
+template <class Measure, class StarBelow = decltype(kNoStarFilter)>
+BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure, const Progress& progress = {},
+                                  StarBelow star_below = kNoStarFilter);
 
 struct SearchExplanation;  // explain.hpp
 // record (optional): the candidates and every test in full (clauses, components).
@@ -81,6 +84,7 @@ class BottleneckBuilder {
   uint32_t next_seq_ = 0;               // positions in the full model: a unary term at
   std::vector<uint32_t> unary_seq_;     // its first part (per quad), a binary one at its last
   std::vector<uint32_t> seq_;           // per kept term
+  std::vector<uint8_t> in_binary_;      // per quad: in a kept binary term
   FlatIndex index_;  // (q, r) -> kept term
 };
 

@@ -70,9 +70,13 @@ BottleneckModel edge_pair_model(const FirstOrder& fo, Measure measure, const Pro
 }
 
 // Vertex-adjacent pairs: all pairs of distinct triangles around each vertex. The
-// floor (pairs of fixed triangles) comes first, to prune the rest.
-template <class Measure>
-BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure, const Progress& progress) {
+// floor (pairs of fixed triangles) comes first, to prune the rest. A star whose
+// candidate triangles star_below(triangles, count, cut) shows all within the
+// floor gives the builder its terms at the floor (pruned, in their place) without
+// measuring its pairs: on a raster, four quads meet at every vertex.
+template <class Measure, class StarBelow>
+BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure, const Progress& progress,
+                                  StarBelow star_below) {
   const Mesh& m = fo.base;
   const VertexIncidence vi = vertex_incidence(fo);
   BottleneckBuilder b(fo.num_quads(), kTakesCut<Measure>);
@@ -92,6 +96,7 @@ BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure, const P
   auto pair = [&](const Tri& s, const Tri& t) { return measure_above(measure, s, t, b.floor()); };
   std::vector<Tri> at[2];  // triangles of each quad at v, per choice
   std::vector<uint32_t> count[2];
+  std::vector<Tri> star;   // every candidate at v
   for (uint32_t v = 0; v < m.num_vertices(); ++v) {
     const uint32_t* qs = vi.quads_begin(v);
     const uint32_t nq = static_cast<uint32_t>(vi.quads_end(v) - qs);
@@ -101,6 +106,17 @@ BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure, const P
       at[x].resize(2 * nq);
       count[x].resize(nq);
       for (uint32_t i = 0; i < nq; ++i) count[x][i] = quad_triangles_at(fo, qs[i], v, x, &at[x][2 * i]);
+    }
+    star = fixed;
+    for (int x = 0; x < 2; ++x)
+      for (uint32_t i = 0; i < nq; ++i) star.insert(star.end(), &at[x][2 * i], &at[x][2 * i] + count[x][i]);
+    if (kTakesCut<Measure> && star_below(star.data(), star.size(), b.floor())) {
+      const double f = b.floor(), w[4] = {f, f, f, f};
+      for (uint32_t i = 0; i < nq; ++i) {
+        b.unary(qs[i], f, f);
+        for (uint32_t j = i + 1; j < nq; ++j) b.binary(qs[i], qs[j], w);
+      }
+      continue;
     }
     for (uint32_t i = 0; i < nq; ++i) {
       double u[2];

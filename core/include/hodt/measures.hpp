@@ -37,14 +37,20 @@ inline double triangle_area(const double* a, const double* b, const double* c) {
   middle_first(a, b, c);
   return 0.5 * accurate_det(a, b, c);
 }
-// The same by the plain float formula, for filters that only need to know that
-// an area is far from some bound: within 2^-21 of the exact area (relative), or
-// 0 when the formula cannot be trusted. Its error is at most 3u (|p| + |q|) +
-// u |det| (u = 2^-53; rounded differences and products p, q): 2^-21 when the
-// products cancel less than det >= 2^-30 (|p| + |q|). Counterclockwise triangles.
-inline double rough_triangle_area(const double* a, const double* b, const double* c) {
+// Bounds on the exact plane area of a counterclockwise triangle by the plain
+// float formula, for filters that only need to know that an area is far from
+// some bound. The formula's error is at most 4u (|p| + |q|) to first order
+// (u = 2^-53; rounded differences and products p, q, and their difference):
+// 8u covers the rest. Tight where the products do not cancel, as in every
+// cell of a raster at any offset (pairs there tie to within 1e-12, and a fixed
+// relative margin would decide none of them); lo <= 0 when cancelling.
+struct AreaBounds {
+  double lo, hi;
+};
+inline AreaBounds rough_area_bounds(const double* a, const double* b, const double* c) {
   const double p = (b[0] - a[0]) * (c[1] - a[1]), q = (b[1] - a[1]) * (c[0] - a[0]), det = p - q;
-  return det >= 0x1p-30 * (std::abs(p) + std::abs(q)) ? 0.5 * det : 0;
+  const double err = 0x1p-50 * (std::abs(p) + std::abs(q));
+  return {0.5 * (det - err), 0.5 * (det + err)};
 }
 // Larger over smaller plane area.
 inline double area_ratio(double area1, double area2) { return area1 > area2 ? area1 / area2 : area2 / area1; }

@@ -17,6 +17,11 @@ double pair_normal_angle(const Mesh& m, const Tri& s, const Tri& t);
 // cut, without accurate areas or normals, arctangents or circles.
 double pair_area_ratio(const Mesh& m, const Tri& s, const Tri& t, double cut);
 double pair_normal_angle(const Mesh& m, const Tri& s, const Tri& t, double cut);
+// Whether every pair of the triangles t[0..n) measures at most cut, from float
+// estimates (false when unsure): a star's candidates far below the cut are
+// skipped whole, in time linear in its triangles rather than in its pairs.
+bool star_area_ratio_below(const Mesh& m, const Tri* t, size_t n, double cut);
+bool star_normal_angle_below(const Mesh& m, const Tri* t, size_t n, double cut);
 // Smallest circle around the four points of two edge-adjacent triangles; with a
 // cut, as above.
 double pair_enclosing_circle(const Mesh& m, const Tri& s, const Tri& t);
