@@ -8,10 +8,11 @@
 
 namespace hodt {
 
-BottleneckBuilder::BottleneckBuilder(uint32_t num_quads, bool prune)
-    : prune_(prune), unary_seq_(num_quads, kUnary), in_binary_(num_quads, 0) {
+BottleneckBuilder::BottleneckBuilder(uint32_t num_quads, bool prune, bool repeated_pairs)
+    : prune_(prune), repeated_pairs_(repeated_pairs), unary_seq_(num_quads, kUnary), unary_term_(num_quads, kNone),
+      in_binary_(num_quads, 0) {
   model_.num_quads = num_quads;
-  index_.reserve(2 * size_t(num_quads));  // no rehash of a large map in one step
+  if (repeated_pairs) index_.reserve(2 * size_t(num_quads));  // no rehash of a large map in one step
 }
 
 void BottleneckBuilder::constant(double v) { model_.floor = std::max(model_.floor, v); }
@@ -21,12 +22,14 @@ bool BottleneckBuilder::below_floor(const double* v, int n) const {
 }
 
 PairTerm* BottleneckBuilder::find(uint32_t q, uint32_t r) {
-  const uint32_t at = index_.find((uint64_t(q) << 32) | r);
-  return at == FlatIndex::kNone ? nullptr : &model_.terms[at];
+  const uint32_t at = r == kUnary ? unary_term_[q] : index_.find((uint64_t(q) << 32) | r);
+  return at == kNone ? nullptr : &model_.terms[at];
 }
 
 void BottleneckBuilder::add(const PairTerm& t, uint32_t seq) {
-  index_.insert((uint64_t(uint32_t(t.q)) << 32) | uint32_t(t.r), static_cast<uint32_t>(model_.terms.size()));
+  const uint32_t at = static_cast<uint32_t>(model_.terms.size());
+  if (t.r < 0) unary_term_[t.q] = at;
+  else if (repeated_pairs_) index_.insert((uint64_t(uint32_t(t.q)) << 32) | uint32_t(t.r), at);
   if (t.r >= 0) in_binary_[t.q] = in_binary_[t.r] = 1;
   model_.terms.push_back(t);
   seq_.push_back(seq);
@@ -64,7 +67,7 @@ void BottleneckBuilder::binary(uint32_t q, uint32_t r, const double v[4]) {
   const uint32_t seq = next_seq_++;
   // (Only quads that both have a kept binary term can share one: on a raster,
   // where the floor prunes most pairs, most lookups end here.)
-  PairTerm* kept = in_binary_[t.q] && in_binary_[t.r] ? find(uint32_t(t.q), uint32_t(t.r)) : nullptr;
+  PairTerm* kept = repeated_pairs_ && in_binary_[t.q] && in_binary_[t.r] ? find(uint32_t(t.q), uint32_t(t.r)) : nullptr;
   if (kept) seq_[static_cast<size_t>(kept - model_.terms.data())] = seq;  // even when this part is pruned
   if (below_floor(t.v, 4)) return;
   if (!kept) {

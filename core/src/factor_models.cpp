@@ -1,11 +1,13 @@
 #include "hodt/factor_models.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "hodt/bottleneck.hpp"
 #include "hodt/format.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/pair_measures.hpp"
+#include "hodt/neighbourhood_classes.hpp"
 #include "hodt/skeleton.hpp"
 
 namespace hodt {
@@ -17,7 +19,15 @@ std::string vertex_at(const Mesh& m, uint32_t v) {
   return "the vertex at (" + format_number(m.point(v)[0]) + ", " + format_number(m.point(v)[1]) + ")";
 }
 
-// A term per vertex: value(v, its neighbours) over all choices of the quads at v.
+// A vertex's neighbours over the choices of its quads: the fixed ones, and one
+// per quad that comes with one of its diagonals (bit i of present: quad i's).
+struct StarChoices {
+  const double* centre;
+  std::vector<const double*> fixed, optional;
+  uint32_t present;
+};
+
+// A term per vertex: value(v, its neighbours, star) over all choices of the quads at v.
 // work(d): steps to compute one entry for d neighbours. Terms over the budget are
 // refused or left out (g.relaxed counts them) before any table is allocated.
 template <class Work, class Value>
@@ -62,6 +72,7 @@ void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, cons
            " flippable quads and " + std::to_string(fixed.size() + sizes[v].scope) + " possible neighbours around it";
   });
   std::vector<const double*> nb;
+  StarChoices star;
   for (uint32_t v = 0; v < n; ++v) {
     if (progress.tick(32)) report(limits.progress, v, n);
     if (interior_only && on_hull[v]) continue;
@@ -75,17 +86,24 @@ void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, cons
     Factor f;
     f.scope.assign(qs, qs + nq);
     f.table.resize(size_t(1) << nq);
+    // Each quad's diagonal through v adds its opposite corner, in one state.
+    star.centre = m.point(v);
+    star.fixed.clear();
+    star.optional.clear();
+    for (uint32_t w : fixed) star.fixed.push_back(m.point(w));
+    uint32_t when_flipped = 0;  // bit i: quad i's corner comes with its flipped diagonal
+    for (uint32_t i = 0; i < nq; ++i) {
+      const Quad& q = fo.quads[qs[i]];
+      const bool on_base = v == q.a || v == q.b;
+      star.optional.push_back(m.point(on_base ? (v == q.a ? q.b : q.a) : (v == q.c ? q.d : q.c)));
+      if (!on_base) when_flipped |= 1u << i;
+    }
     for (size_t idx = 0; idx < f.table.size(); ++idx) {
-      nb.clear();
-      for (uint32_t w : fixed) nb.push_back(m.point(w));
-      for (uint32_t i = 0; i < nq; ++i) {
-        const Quad& q = fo.quads[qs[i]];
-        const bool flipped = (idx >> i) & 1;
-        // The chosen diagonal adds the opposite corner for its two ends.
-        if (!flipped && (v == q.a || v == q.b)) nb.push_back(m.point(v == q.a ? q.b : q.a));
-        if (flipped && (v == q.c || v == q.d)) nb.push_back(m.point(v == q.c ? q.d : q.c));
-      }
-      f.table[idx] = value(m.point(v), nb);
+      star.present = ~(static_cast<uint32_t>(idx) ^ when_flipped) & ((nq < 32 ? 1u << nq : 0u) - 1);
+      nb = star.fixed;
+      for (uint32_t i = 0; i < nq; ++i)
+        if ((star.present >> i) & 1) nb.push_back(star.optional[i]);
+      f.table[idx] = value(star.centre, nb, star);
       if (progress.tick(sizes[v].work_per_entry + 1)) report(limits.progress, v, n);
     }
     if (nq == 0) {
@@ -160,33 +178,39 @@ FactorGraph factor_model(const FirstOrder& fo, Objective o, const DpLimits& limi
   // Steps per entry: a vertex class tests triples of neighbours, the others scan them.
   auto triples = [](uint32_t d) { return d * (d - 1.0) * (d - 2.0) / 6 + d * (d - 1.0) / 2; };
   auto scan = [](uint32_t d) { return static_cast<double>(d); };
+  // The classes of a vertex over the choices of its quads, from one look at its
+  // candidate neighbours (the choices come one vertex after another).
+  std::optional<NeighbourhoodClasses> classes;
+  const double* classes_of = nullptr;
+  auto class_of = [&](const StarChoices& star) {
+    if (star.centre != classes_of) classes.emplace(star.centre, star.fixed, star.optional), classes_of = star.centre;
+    return classes->of(star.present);
+  };
   auto ratio = [&](const Tri& s, const Tri& t) { return pair_area_ratio(m, s, t); };
   auto angle = [&](const Tri& s, const Tri& t) { return pair_normal_angle(m, s, t); };
   auto circle = [&](const Tri& s, const Tri& t) { return pair_enclosing_circle(m, s, t); };
   switch (o) {
     case Objective::MaxConvexVertices:
-      vertex_terms(fo, true, g, limits, over, triples, [&](const double* p, const auto& nb) {
-        return count(vertex_class(p, nb.data(), static_cast<uint32_t>(nb.size())) == kConvex);
-      });
+      vertex_terms(fo, true, g, limits, over, triples,
+                   [&](const double*, const auto&, const StarChoices& star) { return count(class_of(star) == kConvex); });
       break;
     case Objective::MinMixedVertices:
-      vertex_terms(fo, true, g, limits, over, triples, [&](const double* p, const auto& nb) {
-        return count(vertex_class(p, nb.data(), static_cast<uint32_t>(nb.size())) == kMixed);
-      });
+      vertex_terms(fo, true, g, limits, over, triples,
+                   [&](const double*, const auto&, const StarChoices& star) { return count(class_of(star) == kMixed); });
       break;
     case Objective::MinLocalMinima:
-      vertex_terms(fo, true, g, limits, over, scan, [&](const double* p, const auto& nb) {
+      vertex_terms(fo, true, g, limits, over, scan, [&](const double* p, const auto& nb, const StarChoices&) {
         return count(extremum(p, nb.data(), static_cast<uint32_t>(nb.size())) == kLocalMinimum);
       });
       break;
     case Objective::MinLocalExtrema:
-      vertex_terms(fo, true, g, limits, over, scan, [&](const double* p, const auto& nb) {
+      vertex_terms(fo, true, g, limits, over, scan, [&](const double* p, const auto& nb, const StarChoices&) {
         return count(extremum(p, nb.data(), static_cast<uint32_t>(nb.size())) != kNotExtremum);
       });
       break;
     case Objective::MinmaxDegree:
       g.combine = Combine::Max;
-      vertex_terms(fo, false, g, limits, over, scan, [](const double*, const auto& nb) { return static_cast<double>(nb.size()); });
+      vertex_terms(fo, false, g, limits, over, scan, [](const double*, const auto& nb, const StarChoices&) { return static_cast<double>(nb.size()); });
       break;
     case Objective::MaxConvexEdges:
       convex_edge_terms(fo, g, limits.progress);

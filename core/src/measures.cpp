@@ -18,48 +18,6 @@ EdgeShape edge_shape(const double* u, const double* v, const double* w, const do
   return o < 0 ? kConvexEdge : o > 0 ? kReflexEdge : kFlatEdge;
 }
 
-VertexClass vertex_class(const double* p, const double* const* nb, uint32_t d, bool below_known, bool above_known) {
-  // orient2d(p, nb[i], nb[j]) for all pairs, reused by every triple below.
-  // (On the stack for the usual degrees: this runs for every fan a solver weighs.)
-  int8_t small[32 * 32];
-  std::vector<int8_t> large(d > 32 ? size_t(d) * d : 0);
-  int8_t* o = d > 32 ? large.data() : small;
-  for (uint32_t i = 0; i < d; ++i)
-    for (uint32_t j = i + 1; j < d; ++j) {
-      const int s = orient2d(p, nb[i], nb[j]);
-      o[i * d + j] = static_cast<int8_t>(s);
-      o[j * d + i] = static_cast<int8_t>(-s);
-    }
-  // Flat: all neighbours on one plane through p.
-  uint32_t fi = d, fj = d;
-  for (uint32_t i = 0; i < d && fi == d; ++i)
-    for (uint32_t j = i + 1; j < d; ++j)
-      if (o[i * d + j] != 0) { fi = i, fj = j; break; }
-  const bool known = below_known || above_known;  // (then not flat)
-  if (fi == d && !known) return kFlat;  // cannot happen for an interior vertex
-  bool flat = !known;
-  for (uint32_t k = 0; k < d && flat; ++k)  // (k = fi, fj are on the plane: skip the exact zero)
-    flat = k == fi || k == fj || orient3d(p, nb[fi], nb[fj], nb[k]) == 0;
-  if (flat) return kFlat;
-  // p is strictly below (above) the upper (lower) hull of its neighbours iff some
-  // triangle of neighbours contains p in the plane and has p strictly below (above) it.
-  bool below = below_known, above = above_known;
-  for (uint32_t i = 0; i < d && !(below && above); ++i)
-    for (uint32_t j = i + 1; j < d && !(below && above); ++j)
-      for (uint32_t k = j + 1; k < d; ++k) {
-        const int s = orient2d(nb[i], nb[j], nb[k]);
-        if (s == 0) continue;
-        // p in the closed triangle i, j, k: orient(i, j, p) = orient(p, i, j) etc.
-        if (o[i * d + j] * s < 0 || o[j * d + k] * s < 0 || o[k * d + i] * s < 0) continue;
-        const int h = orient3d(nb[i], nb[j], nb[k], p) * s;  // > 0: p above the plane
-        if (h < 0) below = true;
-        if (h > 0) above = true;
-        if (below && above) break;
-      }
-  if (below && above) return kMixed;
-  return below ? kConcave : kConvex;
-}
-
 Extremum extremum(const double* p, const double* const* nb, uint32_t d) {
   bool all_higher = true, all_lower = true;
   for (uint32_t i = 0; i < d; ++i) {

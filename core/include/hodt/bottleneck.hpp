@@ -64,7 +64,10 @@ BottleneckResult solve_bottleneck(const BottleneckModel& model, const Progress& 
 // would list them (the 2-SAT answer depends on the clause order).
 class BottleneckBuilder {
  public:
-  BottleneckBuilder(uint32_t num_quads, bool prune);
+  // repeated_pairs: binary terms over the same quads may come more than once
+  // (and are merged). Not so for edge pairs: two convex quads share at most
+  // one edge.
+  BottleneckBuilder(uint32_t num_quads, bool prune, bool repeated_pairs);
   double floor() const { return model_.floor; }
   void constant(double v);
   void unary(uint32_t q, double v0, double v1);
@@ -78,14 +81,15 @@ class BottleneckBuilder {
   PairTerm* find(uint32_t q, uint32_t r);
   void add(const PairTerm& t, uint32_t seq);
 
-  static constexpr uint32_t kUnary = UINT32_MAX;
+  static constexpr uint32_t kUnary = UINT32_MAX, kNone = FlatIndex::kNone;
   BottleneckModel model_;
-  bool prune_;
+  bool prune_, repeated_pairs_;
   uint32_t next_seq_ = 0;               // positions in the full model: a unary term at
   std::vector<uint32_t> unary_seq_;     // its first part (per quad), a binary one at its last
   std::vector<uint32_t> seq_;           // per kept term
+  std::vector<uint32_t> unary_term_;    // per quad: its kept unary term
   std::vector<uint8_t> in_binary_;      // per quad: in a kept binary term
-  FlatIndex index_;  // (q, r) -> kept term
+  FlatIndex index_;  // (q, r) -> kept binary term (repeated pairs only)
 };
 
 }  // namespace hodt

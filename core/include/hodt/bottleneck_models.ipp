@@ -27,7 +27,7 @@ double measure_above(Measure& measure, const Tri& s, const Tri& t, double cut) {
 template <class Measure>
 BottleneckModel edge_pair_model(const FirstOrder& fo, Measure measure, const Progress& progress) {
   const Mesh& m = fo.base;
-  BottleneckBuilder b(fo.num_quads(), kTakesCut<Measure>);
+  BottleneckBuilder b(fo.num_quads(), kTakesCut<Measure>, false);
   WorkCounter work;
   const double total = 2.0 * m.halfedges.size() + fo.num_quads();
   auto fixed = [&](uint32_t e) { return fo.quad_of_triangle[e / 3] < 0; };
@@ -79,7 +79,7 @@ BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure, const P
                                   StarBelow star_below) {
   const Mesh& m = fo.base;
   const VertexIncidence vi = vertex_incidence(fo);
-  BottleneckBuilder b(fo.num_quads(), kTakesCut<Measure>);
+  BottleneckBuilder b(fo.num_quads(), kTakesCut<Measure>, true);
   WorkCounter work;
   const double total = 2.0 * m.num_vertices();
   std::vector<Tri> fixed;
