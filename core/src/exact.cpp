@@ -116,6 +116,7 @@ Solution solve_polynomial(const FirstOrder& fo, Objective o, const ExactOptions&
   s.method = "exact";
   s.optimal = true;
   const Progress& progress = options.limits.progress;
+  double expected = -INFINITY;  // the search's optimum, for the critical pair
   switch (o) {
     case Objective::MaxConvexVertices: s.choice = reflex_diagonals(fo, progress); break;
     case Objective::MinTotalEdgeLength: s.choice = shorter_diagonals(fo, progress); break;
@@ -130,6 +131,7 @@ Solution solve_polynomial(const FirstOrder& fo, Objective o, const ExactOptions&
       BottleneckResult r = solve_bottleneck(pair_model(fo, o, progress), progress,
                                             options.explanation ? &options.explanation->search.emplace() : nullptr);
       s.choice = std::move(r.choice);
+      expected = r.value;
       if (options.trace) s.trace = std::move(r.trace);
       break;
     }
@@ -137,7 +139,7 @@ Solution solve_polynomial(const FirstOrder& fo, Objective o, const ExactOptions&
       throw LimitError(std::string(info(o).id) + " is NP-hard: it has no polynomial exact algorithm");
   }
   const Mesh mesh = triangulate(fo, s.choice);
-  s.critical = critical_pair(o, mesh, progress);
+  s.critical = critical_pair(o, mesh, progress, expected);
   s.value = s.critical ? s.critical->value : evaluate(o, mesh, progress);  // the same number, computed once
   return s;
 }

@@ -124,19 +124,19 @@ double sorted_enclosing_circle(const double* const p[4]) {
 }
 
 // Grids (DEM rasters, at any offset) repeat a few shapes over and over, and there
-// every pair of cocircular cells needs the exact predicates. When the points'
-// pairwise differences are all exact, every step above (exact signs, lengths
-// and determinants of differences, xy order) depends on those differences
-// alone: four points with the same differences to the first get the same
+// every pair of cocircular cells needs the exact predicates. Every step above
+// (exact signs, xy order, and lengths and determinants from rounded differences
+// with their errors) is a function of the points' exact pairwise differences.
+// When the differences to the first point are exact doubles they determine all
+// the others: four points with the same differences to the first get the same
 // radius, bit for bit, and recent shapes are remembered by those differences.
 bool shape_key(const double* const p[4], double key[6]) {
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      for (int c = 0; c < 2; ++c) {
-        const Difference d = difference(p[j][c], p[i][c]);
-        if (d.e != 0) return false;
-        if (i == 0) key[2 * (j - 1) + c] = d.d;
-      }
+  for (int j = 1; j < 4; ++j)
+    for (int c = 0; c < 2; ++c) {
+      const Difference d = difference(p[j][c], p[0][c]);
+      if (d.e != 0) return false;
+      key[2 * (j - 1) + c] = d.d;
+    }
   return true;
 }
 }  // namespace

@@ -154,7 +154,7 @@ bool star_normal_angle_below(const Mesh& m, const Tri* t, size_t n, double cut) 
   // within cut - 2^-25 of each other, the exact ones within 2^-28 more. The
   // axis: the sum of the unit normals (any vector will do, a central one
   // passes most stars).
-  if (n == 0 || n > 64) return false;
+  if (n == 0 || n > 64 || cut / 2 > 1) return false;  // (past 1: the sine test declines every normal)
   double normals[64][3], norm[64], axis[3] = {0, 0, 0};
   for (size_t i = 0; i < n; ++i) {
     if (!rough_normal(m, t[i], normals[i])) return false;
@@ -214,15 +214,16 @@ namespace {
 // The first pair (edge- or vertex-adjacent, in mesh order) of largest value. A
 // feature of each triangle (its area, normal...) is computed once per edge or
 // star; value(fa, fb, cut) may answer anything <= cut for a pair that cannot win.
+// below: a value under the largest (pairs at most it answer as cut).
 template <class Feature, class Value>
-std::optional<CriticalPair> first_largest_pair(const Mesh& m, bool edge, Feature feature, Value value,
+std::optional<CriticalPair> first_largest_pair(const Mesh& m, bool edge, Feature feature, Value value, double below,
                                                const Progress& progress) {
   std::optional<CriticalPair> best;
   WorkCounter work;
   const std::vector<uint8_t> inside = inside_triangles(m);  // (pairs of inside triangles only)
   auto consider = [&](uint32_t s, uint32_t t, const auto& fs, const auto& ft) {
     if (!inside[s] || !inside[t]) return;
-    const double v = value(fs, ft, best ? best->value : -INFINITY);
+    const double v = value(fs, ft, best ? std::max(best->value, below) : below);
     if (!best || v > best->value) best = CriticalPair{base_triangle(m, s), base_triangle(m, t), v};
   };
   if (edge) {
@@ -248,7 +249,8 @@ std::optional<CriticalPair> first_largest_pair(const Mesh& m, bool edge, Feature
 
 }  // namespace
 
-std::optional<CriticalPair> critical_pair(Objective o, const Mesh& m, const Progress& progress) {
+namespace {
+std::optional<CriticalPair> largest_pair(Objective o, const Mesh& m, double below, const Progress& progress) {
   // Edges: the best value so far is the cut, and float estimates show most pairs
   // below it (only the few that raise it get accurate measures). Stars: each
   // triangle's accurate area or normal once per star, as its pairs there share it.
@@ -260,13 +262,26 @@ std::optional<CriticalPair> critical_pair(Objective o, const Mesh& m, const Prog
   auto angle = [&](const Tri& a, const Tri& b, double cut) { return pair_normal_angle(m, a, b, cut); };
   auto circle = [&](const Tri& a, const Tri& b, double cut) { return pair_enclosing_circle(m, a, b, cut); };
   switch (o) {
-    case Objective::MinmaxEdgeAreaRatio: return first_largest_pair(m, true, tri, ratio_above, progress);
-    case Objective::MinmaxEdgeNormalAngle: return first_largest_pair(m, true, tri, angle, progress);
-    case Objective::MinmaxEdgeEnclosingCircle: return first_largest_pair(m, true, tri, circle, progress);
-    case Objective::MinmaxVertexAreaRatio: return first_largest_pair(m, false, tri_area, ratio, progress);
-    case Objective::MinmaxVertexNormalAngle: return first_largest_pair(m, false, tri_normal, angle_above, progress);
+    case Objective::MinmaxEdgeAreaRatio: return first_largest_pair(m, true, tri, ratio_above, below, progress);
+    case Objective::MinmaxEdgeNormalAngle: return first_largest_pair(m, true, tri, angle, below, progress);
+    case Objective::MinmaxEdgeEnclosingCircle: return first_largest_pair(m, true, tri, circle, below, progress);
+    case Objective::MinmaxVertexAreaRatio: return first_largest_pair(m, false, tri_area, ratio, below, progress);
+    case Objective::MinmaxVertexNormalAngle: return first_largest_pair(m, false, tri_normal, angle_above, below, progress);
     default: return std::nullopt;
   }
+}
+
+}  // namespace
+
+std::optional<CriticalPair> critical_pair(Objective o, const Mesh& m, const Progress& progress, double expected) {
+  // With the value expected, every pair under it answers as a cut from the
+  // start; should the largest not exceed the cut after all, search again.
+  if (expected > -INFINITY) {
+    const double below = std::nextafter(expected, -INFINITY);
+    std::optional<CriticalPair> c = largest_pair(o, m, below, progress);
+    if (c && c->value > below) return c;
+  }
+  return largest_pair(o, m, -INFINITY, progress);
 }
 
 }  // namespace hodt

@@ -156,3 +156,29 @@ TEST_CASE("pair models: pruned, the bottleneck search answers as over the full m
   MESSAGE(steps << " threshold tests alike");
   CHECK(steps > 50);
 }
+
+// The critical pair found from the value expected (every pair below it cut
+// short) is the one found without, and so is it when the expectation is wrong.
+TEST_CASE("critical pair: the same pair with the value expected, right or wrong") {
+  const Objective pair_objectives[] = {Objective::MinmaxEdgeAreaRatio, Objective::MinmaxEdgeNormalAngle,
+                                       Objective::MinmaxEdgeEnclosingCircle, Objective::MinmaxVertexAreaRatio,
+                                       Objective::MinmaxVertexNormalAngle};
+  for (uint64_t seed = 1; seed <= 24; ++seed) {
+    std::vector<double> xyz = seed % 3 == 0 ? grid_points(7, 6, seed) : seed % 3 == 1 ? dem_points(80, seed) : sliver_points(30, seed);
+    if (seed % 6 == 0)  // a raster after reprojection: pairs tie
+      for (size_t i = 0; i < xyz.size(); i += 3) xyz[i] = 731012.3456789 + 74.98765 * xyz[i], xyz[i + 1] = 4100000.25 + 74.98765 * xyz[i + 1];
+    const Terrain t = Terrain::from_points(xyz);
+    const Mesh& m = t.structure().base;
+    for (Objective o : pair_objectives) {
+      const std::optional<CriticalPair> plain = critical_pair(o, m);
+      REQUIRE(plain);
+      for (double expected : {plain->value, plain->value * 2, plain->value / 2, std::nextafter(plain->value, INFINITY)}) {
+        const std::optional<CriticalPair> c = critical_pair(o, m, {}, expected);
+        REQUIRE(c);
+        CHECK(c->value == plain->value);
+        CHECK(c->first == plain->first);
+        CHECK(c->second == plain->second);
+      }
+    }
+  }
+}

@@ -94,6 +94,16 @@ BottleneckModel vertex_pair_model(const FirstOrder& fo, Measure measure, const P
     if (work.tick(kMeasureWork * (1 + fixed.size() * fixed.size() / 2.0))) report(progress, v, total);
   }
   auto pair = [&](const Tri& s, const Tri& t) { return measure_above(measure, s, t, b.floor()); };
+  // Each quad's own two triangles (a pair at both ends of its diagonal) before
+  // the stars: the floor they raise prunes the stars' pairs from the start.
+  for (uint32_t q = 0; q < fo.num_quads(); ++q) {
+    uint32_t t[2][6];
+    fo.triangles_of(q, false, t[0]);
+    fo.triangles_of(q, true, t[1]);
+    double u[2];
+    for (int x = 0; x < 2; ++x) u[x] = pair(Tri{t[x][0], t[x][1], t[x][2]}, Tri{t[x][3], t[x][4], t[x][5]});
+    b.unary(q, u[0], u[1]);
+  }
   std::vector<Tri> at[2];  // triangles of each quad at v, per choice
   std::vector<uint32_t> count[2];
   std::vector<Tri> star;   // every candidate at v

@@ -1,6 +1,7 @@
 // The pair measures of the min-max objectives, on triangles given by vertex index,
 // computed exactly as evaluate_all computes them (bit-identical values).
 #pragma once
+#include <cmath>
 #include <optional>
 
 #include "hodt/mesh.hpp"
@@ -30,6 +31,9 @@ double pair_enclosing_circle(const Mesh& m, const Tri& s, const Tri& t, double c
 // Is the objective a max over pairs (edge- or vertex-adjacent)?
 bool is_pair_objective(Objective o);
 // The pair of triangles attaining a pair objective's value on a triangulation.
-std::optional<CriticalPair> critical_pair(Objective o, const Mesh& m, const Progress& progress = {});
+// expected: the value, when a solver knows it (then the pairs below it take no
+// accurate measure; the answer is the same).
+std::optional<CriticalPair> critical_pair(Objective o, const Mesh& m, const Progress& progress = {},
+                                          double expected = -INFINITY);
 
 }  // namespace hodt
