@@ -705,7 +705,7 @@ Solution k_order_solution(const FirstOrder& fo, Objective o, uint32_t k, const S
   for (uint32_t e = 0; e < m.triangles.size(); ++e)
     if (m.halfedges[e] < static_cast<int32_t>(e))
       s.non_delaunay_edges += !delaunay_edges.count(edge_key(std::min(m.origin(e), m.target(e)), std::max(m.origin(e), m.target(e))));
-  s.critical = critical_pair(o, m);
+  s.critical = critical_pair(o, m, {}, r.value);  // (its value known: pairs below it cut short)
   s.mesh = std::move(r.triangulation);
   s.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return s;

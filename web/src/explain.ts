@@ -28,7 +28,8 @@ export interface ThresholdTest {
   assignment: Uint8Array;
 }
 
-/** The min-max objectives at order 1: the binary search over candidate values. */
+/** The min-max objectives at order 1: the binary search over candidate values
+ * (the lowest first: on rasters it is often the optimum). */
 export interface SearchExplanation {
   /** The largest value no choice avoids (pairs of fixed triangles). */
   floor: number;

@@ -26,7 +26,7 @@ const STEPS: readonly Step[] = [
     title: '2-SAT search (Section 2.1)',
     example: 'sat-small',
     doThis: 'Load the example, then press Play.',
-    notice: 'Each test asks "can every pair stay below t?". Quads with one bad diagonal are forced; the rest become clauses, and a red ✕ (both diagonals in one strongly connected component) means no. The search halves the candidates each time.',
+    notice: 'Each test asks "can every pair stay below t?". Quads with one bad diagonal are forced; the rest become clauses, and a red ✕ (both diagonals in one strongly connected component) means no. The search tests the lower bound first, then halves the candidates each time.',
   },
   {
     tab: 'baker',

@@ -38,7 +38,7 @@ interface State {
 export function createSatView(ctx: TeachContext): TeachView {
   const { root, side, main, caption } = createPane('sat', '2-SAT search for min-max objectives', [
     'A min-max objective is the worst value over pairs of adjacent triangles. Only a few values can be the optimum: the candidates on the line below. ',
-    'The solver asks, by binary search: "is there a first order triangulation with every pair at most t?" ',
+    'The solver asks, by binary search (the lower bound first: it is often the optimum): "is there a first order triangulation with every pair at most t?" ',
     'Pairs of fixed triangles over t answer no at once; a quad with one diagonal over t is forced to the other; every remaining pair over t between two quads becomes 2-SAT clauses on their diagonals, ',
     'solved through the strongly connected components of the implication graph. See ',
     paperLink('2.1'),
@@ -164,7 +164,7 @@ export function createSatView(ctx: TeachContext): TeachView {
     } else if (player.pos === 0) {
       status.replaceChildren(
         `${s.search.candidates.length} candidate values lie between the lower bound (${fmt(s.search.candidates[0]!)}) and the Delaunay value (${fmt(s.solution.delaunayValue)}). `,
-        `Binary search tests ${n} of them. Press Next.`,
+        `The search tests the lower bound first, then halves the rest: ${n} test${n === 1 ? '' : 's'} in all. Press Next.`,
       );
     } else if (player.pos <= n) {
       const a = stepAt(player.pos - 1);
