@@ -4,17 +4,22 @@
 
 #include "delaunay_builder.hpp"
 #include "hodt/predicates.hpp"
+#include "hodt/raster_delaunay.hpp"
 #include "hodt/spatial_order.hpp"
 
 namespace hodt {
 
 Mesh delaunay(std::vector<double> xyz, bool spatially_ordered) {
   const uint32_t n = static_cast<uint32_t>(xyz.size() / 3);
-  std::vector<uint32_t> order;
-  if (!spatially_ordered) order = spatial_order(xyz);
-  auto at = [&](uint32_t k) { return spatially_ordered ? k : order[k]; };
   Mesh m;
   m.coords = std::move(xyz);
+  if (raster_delaunay(m)) {  // a raster: in closed form
+    canonicalize(m);
+    return m;
+  }
+  std::vector<uint32_t> order;
+  if (!spatially_ordered) order = spatial_order(m.coords.vector());
+  auto at = [&](uint32_t k) { return spatially_ordered ? k : order[k]; };
   const uint32_t nt = n > 2 ? 2 * n - 5 : 1;  // at most 2n - 2 - h triangles, h >= 3
   m.triangles.reserve(3 * size_t(nt));
   m.halfedges.reserve(3 * size_t(nt));
