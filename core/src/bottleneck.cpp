@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "hodt/explain.hpp"
+#include "hodt/parity_sat.hpp"
 #include "hodt/two_sat.hpp"
 
 namespace hodt {
@@ -101,9 +103,47 @@ BottleneckModel BottleneckBuilder::finish(const Progress& progress) {
 
 namespace {
 
+// The quads' states a term forbids at threshold t: bit x + 2 y for (x_q, x_r) =
+// (x, y); a unary term's bit x for x_q = x.
+uint32_t forbidden(const PairTerm& term, double t) {
+  uint32_t f = 0;
+  for (int k = 0; k < (term.r < 0 ? 2 : 4); ++k) f |= uint32_t(term.v[k] > t) << k;
+  return f;
+}
+
+// The test as a parity system (parity_sat.hpp), if every binary term forbids
+// no state, both mixed or both equal states, or all states but those of one
+// quad's value: else nothing (a term that forbids one state is a true clause).
+std::optional<ParitySat> as_parity(const BottleneckModel& m, double t) {
+  ParitySat p(m.num_quads);
+  for (const PairTerm& term : m.terms) {
+    const uint32_t f = forbidden(term, t), q = static_cast<uint32_t>(term.q), r = static_cast<uint32_t>(term.r);
+    if (term.r < 0) {
+      if (f == 1 || f == 2) p.fix(q, f == 1);  // (both: the caller stops first)
+      continue;
+    }
+    switch (f) {
+      case 0b0000: break;
+      case 0b0110: p.relate(q, r, false); break;  // no mixed states
+      case 0b1001: p.relate(q, r, true); break;   // no equal states
+      case 0b0011: p.fix(r, true); break;         // y = 0 forbidden
+      case 0b1100: p.fix(r, false); break;
+      case 0b0101: p.fix(q, true); break;         // x = 0 forbidden
+      case 0b1010: p.fix(q, false); break;
+      case 0b1111: p.relate(q, q, true); break;   // (a contradiction)
+      default:
+        if (__builtin_popcount(f) != 3) return std::nullopt;
+        const uint32_t allowed = 0b1111 & ~f;  // one state left: x = its bit 1, y = its bit 2
+        p.fix(q, allowed & 0b1010), p.fix(r, allowed & 0b1100);
+    }
+  }
+  return p;
+}
+
 // Is there a choice with every term at most t? The paper's eliminations (a pair
 // over the threshold between fixed triangles, or in both states of a quad: "no";
-// in one state: the quad is forced) become unit clauses; the rest 2-SAT.
+// in one state: the quad is forced) become unit clauses; the rest 2-SAT, decided
+// as a parity system when it is one (the same answer, found faster).
 // test (optional) records what the test saw, in full.
 std::optional<Choice> feasible(const BottleneckModel& m, double t, ThresholdStep& step, const Progress& progress,
                                double done, double total, ThresholdTest* test) {
@@ -116,29 +156,40 @@ std::optional<Choice> feasible(const BottleneckModel& m, double t, ThresholdStep
   }
   TwoSat sat(m.num_quads);
   WorkCounter work;
+  uint32_t clauses = 0;
   for (const PairTerm& term : m.terms) {
     if (work.tick()) report(progress, done, total);
-    const uint32_t q = static_cast<uint32_t>(term.q);
+    const uint32_t q = static_cast<uint32_t>(term.q), f = forbidden(term, t);
     if (term.r < 0) {
-      const bool over0 = term.v[0] > t, over1 = term.v[1] > t;
-      if (over0 && over1) {
+      if (f == 3) {
         step.immediate_no = true;
         if (test) test->immediate_no = true, test->blocked.push_back(q);
         return std::nullopt;
       }
-      if (over0 || over1) {
-        ++step.forced;
-        sat.forbid(q, over1);
-        if (test) test->forced.insert(test->forced.end(), {q, over1 ? 0u : 1u});
+      if (f) {
+        ++step.forced, ++clauses;
+        if (test) test->forced.insert(test->forced.end(), {q, f == 2 ? 0u : 1u});
       }
       continue;
     }
-    for (int x = 0; x < 2; ++x)
-      for (int y = 0; y < 2; ++y)
-        if (term.v[x + 2 * y] > t) sat.forbid(q, x, term.r, y);
+    clauses += static_cast<uint32_t>(__builtin_popcount(f));
   }
-  step.clauses = static_cast<uint32_t>(sat.num_clauses());
-  auto a = sat.solve(progress, done, total, test ? &test->component : nullptr);
+  step.clauses = clauses;
+  std::optional<ParitySat> parity = as_parity(m, t);
+  std::optional<Choice> a;
+  if (parity) a = parity->solve();
+  if (!parity || test) {  // the clauses (and for a record, their components)
+    for (const PairTerm& term : m.terms) {
+      if (work.tick()) report(progress, done, total);
+      const uint32_t q = static_cast<uint32_t>(term.q), f = forbidden(term, t);
+      for (uint32_t x = 0; x < 2; ++x)
+        for (uint32_t y = 0; y < (term.r < 0 ? 1u : 2u); ++y)
+          if ((f >> (x + 2 * y)) & 1) term.r < 0 ? sat.forbid(q, x) : sat.forbid(q, x, term.r, y);
+    }
+    std::optional<Choice> general = sat.solve(progress, done, total, test ? &test->component : nullptr);
+    if (!parity) a = std::move(general);
+    else if (general.has_value() != a.has_value()) throw std::logic_error("bottleneck: parity and 2-SAT disagree");
+  }
   step.satisfiable = a.has_value();
   if (test) {
     test->satisfiable = step.satisfiable;

@@ -174,3 +174,27 @@ TEST_CASE("explain: regions of order k multiply to the number of k-OD triangulat
     }
   }
 }
+
+// On rasters the threshold tests are parity systems (pairs tie in large groups),
+// decided by union-find: the explanation also runs the 2-SAT and throws should
+// they disagree; the optimum is brute force's.
+TEST_CASE("explain: on rasters the parity tests agree with 2-SAT and the optimum with brute force") {
+  const Objective pair_objectives[] = {Objective::MinmaxEdgeAreaRatio, Objective::MinmaxEdgeNormalAngle,
+                                       Objective::MinmaxEdgeEnclosingCircle, Objective::MinmaxVertexAreaRatio,
+                                       Objective::MinmaxVertexNormalAngle};
+  size_t tests = 0;
+  for (uint64_t seed = 1; seed <= 12; ++seed) {
+    std::vector<double> xyz = grid_points(4 + static_cast<int>(seed % 3), 4 + static_cast<int>(seed % 2), seed, seed % 2 == 0);
+    if (seed % 3 != 1)
+      for (size_t i = 0; i < xyz.size(); i += 3) xyz[i] = 731012.3456789 + 74.98765 * xyz[i], xyz[i + 1] = 4100000.25 + 74.98765 * xyz[i + 1];
+    const FirstOrder fo = terrain_of(xyz);
+    for (Objective o : pair_objectives) {
+      const Explanation e = explain(fo, o, SolveOptions{});
+      REQUIRE(e.search);
+      tests += e.search->tests.size();
+      CHECK(e.solution.value == brute_force(fo, o).value);
+      CHECK(e.solution.choice == solve(fo, o, SolveOptions{}).choice);
+    }
+  }
+  CHECK(tests > 20);  // (most rasters need one test: the lower bound)
+}
