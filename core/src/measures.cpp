@@ -147,7 +147,9 @@ double enclosing_circle(const double* a, const double* b, const double* c, const
   std::sort(p, p + 4, xy_less);
   std::array<double, 6> key;
   if (!shape_key(p, key.data())) return sorted_enclosing_circle(p);
-  static thread_local RecentValues<6, double, 1024> recent;
+  // (8192 shapes, 512 KB: a reprojected raster's rounding makes a few thousand
+  // distinct ones, and with 1024 a million-cell raster missed one call in ten.)
+  static thread_local RecentValues<6, double, 8192> recent;
   return recent.get(key, [&] { return sorted_enclosing_circle(p); });
 }
 
