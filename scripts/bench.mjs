@@ -73,14 +73,17 @@ const KINDS = {
 const REAL = new Set(['utm-grid', 'lidar']);
 const uniformPerPoint = {};
 
-// A fresh module per run (its heap size is that run's peak), warmed up on a small
-// terrain first: V8 compiles wasm in tiers, and the first call of a big function
-// would otherwise pay for the optimising compile.
+// A fresh module per run (its heap size is that run's peak), warmed up on small
+// terrains first: V8 compiles wasm in tiers, and the first call of a big function
+// would otherwise pay for the optimising compile. Scattered points and a raster
+// (whose triangulation and tied searches take paths of their own).
 async function warmModule(objectives) {
   const module = await loadModule();
-  const t = module.fromPoints(KINDS.dem(3000, rng(99)), false);
-  for (let r = 0; r < 3; ++r) for (const o of objectives) { try { t.solve(o, 'exact', 0.25, false, 1, undefined); } catch {} }
-  t.delete();
+  for (const xyz of [KINDS.dem(3000, rng(99)), KINDS['utm-grid'](3000)]) {
+    const t = module.fromPoints(xyz, false);
+    for (let r = 0; r < 3; ++r) for (const o of objectives) { try { t.solve(o, 'exact', 0.25, false, 1, undefined); } catch {} }
+    t.delete();
+  }
   return module;
 }
 
