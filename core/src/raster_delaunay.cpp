@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <unordered_map>
 
+#include "hodt/flat_index.hpp"
 #include "hodt/predicates.hpp"
 
 namespace hodt {
@@ -13,7 +13,7 @@ namespace {
 
 // The distinct values of one coordinate, each with its rank once sorted.
 struct Lines {
-  std::unordered_map<uint64_t, uint32_t> index;  // bits of the value (-0 as +0) -> rank
+  FlatIndex index;  // bits of the value (-0 as +0) -> rank
   std::vector<double> values;
   static uint64_t key(double v) {
     v += 0.0;  // -0 -> +0
@@ -22,12 +22,14 @@ struct Lines {
     return bits;
   }
   void add(double v) {
-    if (index.emplace(key(v), 0).second) values.push_back(v);
+    if (index.find(key(v)) == FlatIndex::kNone) index.insert(key(v), 0), values.push_back(v);
   }
   void rank() {
     std::sort(values.begin(), values.end());
-    for (uint32_t i = 0; i < values.size(); ++i) index[key(values[i])] = i;
+    index.clear();
+    for (uint32_t i = 0; i < values.size(); ++i) index.insert(key(values[i]), i);
   }
+  uint32_t operator[](double v) const { return index.find(key(v)); }
 };
 
 }  // namespace
@@ -52,7 +54,7 @@ bool raster_delaunay(Mesh& m) {
   // points share one).
   std::vector<uint32_t> node(n, UINT32_MAX);
   for (uint32_t i = 0; i < n; ++i) {
-    uint32_t& at = node[rows.index[Lines::key(p(i)[1])] * nx + cols.index[Lines::key(p(i)[0])]];
+    uint32_t& at = node[rows[p(i)[1]] * nx + cols[p(i)[0]]];
     if (at != UINT32_MAX) return false;
     at = i;
   }
