@@ -22,12 +22,21 @@ std::string vertex_at(const Mesh& m, uint32_t v) {
 // A vertex's neighbours over the choices of its quads: the fixed ones, and one
 // per quad that comes with one of its diagonals (bit i of present: quad i's).
 struct StarChoices {
+  uint32_t vertex;
   const double* centre;
   std::vector<const double*> fixed, optional;
   uint32_t present;
+  // The neighbours of the present choice (in a buffer of its own).
+  const std::vector<const double*>& neighbours() const {
+    nb = fixed;
+    for (uint32_t i = 0; i < optional.size(); ++i)
+      if ((present >> i) & 1) nb.push_back(optional[i]);
+    return nb;
+  }
+  mutable std::vector<const double*> nb;
 };
 
-// A term per vertex: value(v, its neighbours, star) over all choices of the quads at v.
+// A term per vertex: value(star) over all choices of the quads at the star's vertex.
 // work(d): steps to compute one entry for d neighbours. Terms over the budget are
 // refused or left out (g.relaxed counts them) before any table is allocated.
 template <class Work, class Value>
@@ -71,7 +80,6 @@ void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, cons
     return vertex_at(m, static_cast<uint32_t>(v)) + " has " + std::to_string(sizes[v].scope) +
            " flippable quads and " + std::to_string(fixed.size() + sizes[v].scope) + " possible neighbours around it";
   });
-  std::vector<const double*> nb;
   StarChoices star;
   for (uint32_t v = 0; v < n; ++v) {
     if (progress.tick(32)) report(limits.progress, v, n);
@@ -87,7 +95,7 @@ void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, cons
     f.scope.assign(qs, qs + nq);
     f.table.resize(size_t(1) << nq);
     // Each quad's diagonal through v adds its opposite corner, in one state.
-    star.centre = m.point(v);
+    star.vertex = v, star.centre = m.point(v);
     star.fixed.clear();
     star.optional.clear();
     for (uint32_t w : fixed) star.fixed.push_back(m.point(w));
@@ -100,10 +108,7 @@ void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, cons
     }
     for (size_t idx = 0; idx < f.table.size(); ++idx) {
       star.present = ~(static_cast<uint32_t>(idx) ^ when_flipped) & ((nq < 32 ? 1u << nq : 0u) - 1);
-      nb = star.fixed;
-      for (uint32_t i = 0; i < nq; ++i)
-        if ((star.present >> i) & 1) nb.push_back(star.optional[i]);
-      f.table[idx] = value(star.centre, nb, star);
+      f.table[idx] = value(star);
       if (progress.tick(sizes[v].work_per_entry + 1)) report(limits.progress, v, n);
     }
     if (nq == 0) {
@@ -181,10 +186,14 @@ FactorGraph factor_model(const FirstOrder& fo, Objective o, const DpLimits& limi
   // The classes of a vertex over the choices of its quads, from one look at its
   // candidate neighbours (the choices come one vertex after another).
   std::optional<NeighbourhoodClasses> classes;
-  const double* classes_of = nullptr;
+  uint32_t classes_of = UINT32_MAX;
   auto class_of = [&](const StarChoices& star) {
-    if (star.centre != classes_of) classes.emplace(star.centre, star.fixed, star.optional), classes_of = star.centre;
+    if (star.vertex != classes_of) classes.emplace(star.centre, star.fixed, star.optional), classes_of = star.vertex;
     return classes->of(star.present);
+  };
+  auto extremum_of = [](const StarChoices& star) {
+    const std::vector<const double*>& nb = star.neighbours();
+    return extremum(star.centre, nb.data(), static_cast<uint32_t>(nb.size()));
   };
   auto ratio = [&](const Tri& s, const Tri& t) { return pair_area_ratio(m, s, t); };
   auto angle = [&](const Tri& s, const Tri& t) { return pair_normal_angle(m, s, t); };
@@ -192,25 +201,24 @@ FactorGraph factor_model(const FirstOrder& fo, Objective o, const DpLimits& limi
   switch (o) {
     case Objective::MaxConvexVertices:
       vertex_terms(fo, true, g, limits, over, triples,
-                   [&](const double*, const auto&, const StarChoices& star) { return count(class_of(star) == kConvex); });
+                   [&](const StarChoices& star) { return count(class_of(star) == kConvex); });
       break;
     case Objective::MinMixedVertices:
       vertex_terms(fo, true, g, limits, over, triples,
-                   [&](const double*, const auto&, const StarChoices& star) { return count(class_of(star) == kMixed); });
+                   [&](const StarChoices& star) { return count(class_of(star) == kMixed); });
       break;
     case Objective::MinLocalMinima:
-      vertex_terms(fo, true, g, limits, over, scan, [&](const double* p, const auto& nb, const StarChoices&) {
-        return count(extremum(p, nb.data(), static_cast<uint32_t>(nb.size())) == kLocalMinimum);
-      });
+      vertex_terms(fo, true, g, limits, over, scan,
+                   [&](const StarChoices& star) { return count(extremum_of(star) == kLocalMinimum); });
       break;
     case Objective::MinLocalExtrema:
-      vertex_terms(fo, true, g, limits, over, scan, [&](const double* p, const auto& nb, const StarChoices&) {
-        return count(extremum(p, nb.data(), static_cast<uint32_t>(nb.size())) != kNotExtremum);
-      });
+      vertex_terms(fo, true, g, limits, over, scan,
+                   [&](const StarChoices& star) { return count(extremum_of(star) != kNotExtremum); });
       break;
     case Objective::MinmaxDegree:
       g.combine = Combine::Max;
-      vertex_terms(fo, false, g, limits, over, scan, [](const double*, const auto& nb, const StarChoices&) { return static_cast<double>(nb.size()); });
+      vertex_terms(fo, false, g, limits, over, scan,
+                   [](const StarChoices& star) { return static_cast<double>(star.fixed.size() + __builtin_popcount(star.present)); });
       break;
     case Objective::MaxConvexEdges:
       convex_edge_terms(fo, g, limits.progress);
