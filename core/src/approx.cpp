@@ -7,6 +7,7 @@
 #include "hodt/explain.hpp"
 #include "hodt/factor_models.hpp"
 #include "hodt/min_max_degree.hpp"
+#include "hodt/roof_dual.hpp"
 #include "hodt/skeleton.hpp"
 
 namespace hodt {
@@ -40,6 +41,13 @@ Solution baker_solution(const FirstOrder& fo, Objective o, const SolveOptions& o
   const bool mixed = o == Objective::MinMixedVertices;
   FactorGraph g = factor_model(fo, o, limits, OverBudget::Relax);
   if (mixed) g = non_mixed_model(fo, std::move(g));
+  // Pairwise terms (convex edges): the scheme runs on the variables the roof
+  // dual leaves free, and the better of the two bounds holds.
+  PersistentReduction reduced = reduce_by_roof_dual(g, limits.progress);
+  auto tighter = [&](double b) {
+    if (!reduced.roof) return b;
+    return g.sense == Sense::Max ? std::min(b, reduced.roof->bound) : std::max(b, reduced.roof->bound);
+  };
   Solution s;
   s.objective = o;
   s.method = "approx";
@@ -49,25 +57,28 @@ Solution baker_solution(const FirstOrder& fo, Objective o, const SolveOptions& o
   auto units = [&](double x) { return mixed ? interior - x : x; };
   try {
     std::vector<uint32_t> layer = quad_layers(fo, limits.progress);
-    BakerResult r = baker(g, layer, options.epsilon, limits, UINT32_MAX, options.explanation != nullptr);
+    BakerResult r = baker(reduced.graph, layer, options.epsilon, limits, UINT32_MAX, options.explanation != nullptr);
     if (options.explanation) {
       BakerExplanation& e = options.explanation->baker.emplace();
       e.lambda = r.lambda, e.width = r.width, e.layer = std::move(layer);
       for (size_t i = 0; i < r.shifts.size(); ++i) {
         const BakerShift& b = r.shifts[i];
+        reduced.fill(r.shift_choices[i]);
         e.shifts.push_back({b.shift, units(b.relaxed), evaluate(o, triangulate(fo, r.shift_choices[i]), limits.progress),
                             units(b.bound), b.dropped, std::move(r.shift_choices[i])});
       }
     }
     s.choice = std::move(r.choice);
-    bound = r.bound;
+    reduced.fill(s.choice);
+    bound = tighter(r.bound);
     s.details = "lambda " + std::to_string(r.lambda) + ", " + std::to_string(r.shifts.size()) +
                 " shifts, widest thick layer " + std::to_string(r.width);
   } catch (const LimitError& e) {
     // A thick layer too wide for the DP: the local search alone, from Delaunay,
     // with every term at its best as the bound.
     s.choice.assign(fo.num_quads(), 0);
-    bound = best_possible(g);
+    reduced.fill(s.choice);
+    bound = tighter(best_possible(reduced.graph));
     s.details = std::string("Baker's scheme refused (") + e.what() + "); local search from Delaunay, bound: every term at its best";
   }
   if (g.relaxed)

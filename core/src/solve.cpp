@@ -16,6 +16,7 @@
 #include "hodt/k_order.hpp"
 #include "hodt/min_max_degree.hpp"
 #include "hodt/pair_measures.hpp"
+#include "hodt/roof_dual.hpp"
 #include "hodt/solve_options.hpp"
 
 namespace hodt {
@@ -53,7 +54,11 @@ Solution solve_factor_graph(const FirstOrder& fo, Objective objective, const Sol
     s.choice = min_max_degree_exact(fo, limits);
   } else {
     const FactorGraph g = factor_model(fo, objective, limits);
-    DpResult dp = solve_exact(g, limits);
+    // Pairwise terms (convex edges): the roof dual's persistent assignment first,
+    // the decomposition then covers only the variables it leaves free.
+    const PersistentReduction reduced = reduce_by_roof_dual(g, limits.progress);
+    DpResult dp = solve_exact(reduced.graph, limits);
+    reduced.fill(dp.choice);
     if (options.explanation) {
       const Decomposition& d = dp.decomposition;
       options.explanation->exact = ExactExplanation{d.width, d.num_components, d.order, d.component};
