@@ -28,7 +28,7 @@ static double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::cerr << "usage: hodt_bench POINTS.bin REPS [--approx] [OBJECTIVE...]\n";
+    std::cerr << "usage: hodt_bench POINTS.bin REPS [--approx | --auto] [OBJECTIVE...]\n";
     return 2;
   }
   std::ifstream in(argv[1], std::ios::binary);
@@ -56,15 +56,17 @@ int main(int argc, char** argv) {
   std::string out = "{\"terrain\": " + format_number(median(triangulate)) +
                     ", \"structure\": " + format_number(median(structure)) + ", \"quads\": " +
                     std::to_string(terrain.structure().num_quads()) + ", \"objectives\": {";
-  const bool approx = argc > 3 && std::string(argv[3]) == "--approx";
-  for (int k = approx ? 4 : 3; k < argc; ++k) {
+  const std::string flag = argc > 3 ? argv[3] : "";
+  const bool approx = flag == "--approx", automatic = flag == "--auto";
+  const int first = approx || automatic ? 4 : 3;
+  for (int k = first; k < argc; ++k) {
     const auto o = parse_objective(argv[k]);
     if (!o) return 2;
     std::vector<double> t;
     std::string error;
     for (int r = 0; r < reps && error.empty(); ++r) {
       SolveOptions opt;
-      opt.method = approx ? Method::Approx : Method::Exact;
+      opt.method = approx ? Method::Approx : automatic ? Method::Auto : Method::Exact;
       const auto t0 = Clock::now();
       try {
         Solution sol = solve(terrain.structure(), *o, opt);
@@ -74,7 +76,7 @@ int main(int argc, char** argv) {
       }
       t.push_back(ms_since(t0));
     }
-    out += std::string(k > (approx ? 4 : 3) ? ", " : "") + "\"" + argv[k] + "\": " + (error.empty() ? format_number(median(t)) : "null");
+    out += std::string(k > first ? ", " : "") + "\"" + argv[k] + "\": " + (error.empty() ? format_number(median(t)) : "null");
   }
   std::cout << out << "}}\n";
 }

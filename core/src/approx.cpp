@@ -7,7 +7,6 @@
 #include "hodt/explain.hpp"
 #include "hodt/factor_models.hpp"
 #include "hodt/min_max_degree.hpp"
-#include "hodt/roof_dual.hpp"
 #include "hodt/skeleton.hpp"
 
 namespace hodt {
@@ -32,21 +31,25 @@ double best_possible(const FactorGraph& g) {
   return top;
 }
 
-Solution baker_solution(const FirstOrder& fo, Objective o, const SolveOptions& options) {
+Solution baker_solution(const FirstOrder& fo, Objective o, const SolveOptions& options, ReducedModel* built) {
   DpLimits limits;
   limits.max_width = options.max_width;
   limits.progress = options.progress;
-  // Vertex terms too large to tabulate are relaxed: counted at their best value
-  // in the bound (which stays certified), and measured for real in the value.
   const bool mixed = o == Objective::MinMixedVertices;
-  FactorGraph g = factor_model(fo, o, limits, OverBudget::Relax);
-  if (mixed) g = non_mixed_model(fo, std::move(g));
   // Pairwise terms (convex edges): the scheme runs on the variables the roof
   // dual leaves free, and the better of the two bounds holds.
-  PersistentReduction reduced = reduce_by_roof_dual(g, limits.progress);
+  std::optional<ReducedModel> own;
+  if (!built || built->model.sense != Sense::Max) {
+    // Vertex terms too large to tabulate are relaxed: counted at their best value
+    // in the bound (which stays certified), and measured for real in the value.
+    FactorGraph g = factor_model(fo, o, limits, OverBudget::Relax);
+    if (mixed) g = non_mixed_model(fo, std::move(g));
+    built = &own.emplace(reduce_by_roof_dual(std::move(g), limits.progress));
+  }
+  ReducedModel& m = *built;
   auto tighter = [&](double b) {
-    if (!reduced.roof) return b;
-    return g.sense == Sense::Max ? std::min(b, reduced.roof->bound) : std::max(b, reduced.roof->bound);
+    if (!m.roof) return b;
+    return m.model.sense == Sense::Max ? std::min(b, m.roof->bound) : std::max(b, m.roof->bound);
   };
   Solution s;
   s.objective = o;
@@ -55,38 +58,37 @@ Solution baker_solution(const FirstOrder& fo, Objective o, const SolveOptions& o
   const uint32_t interior = fo.base.num_vertices() - static_cast<uint32_t>(fo.base.hull.size());
   // The scheme maximises non-mixed vertices; the fewest mixed is interior - that.
   auto units = [&](double x) { return mixed ? interior - x : x; };
+  Choice x;  // over m.graph()
   try {
     std::vector<uint32_t> layer = quad_layers(fo, limits.progress);
-    BakerResult r = baker(reduced.graph, layer, options.epsilon, limits, UINT32_MAX, options.explanation != nullptr);
+    BakerResult r = baker(m.graph(), m.restrict(layer), options.epsilon, limits, UINT32_MAX, options.explanation != nullptr);
     if (options.explanation) {
       BakerExplanation& e = options.explanation->baker.emplace();
       e.lambda = r.lambda, e.width = r.width, e.layer = std::move(layer);
       for (size_t i = 0; i < r.shifts.size(); ++i) {
         const BakerShift& b = r.shifts[i];
-        reduced.fill(r.shift_choices[i]);
-        e.shifts.push_back({b.shift, units(b.relaxed), evaluate(o, triangulate(fo, r.shift_choices[i]), limits.progress),
-                            units(b.bound), b.dropped, std::move(r.shift_choices[i])});
+        Choice shift = m.expand(r.shift_choices[i]);
+        e.shifts.push_back({b.shift, units(b.relaxed), evaluate(o, triangulate(fo, shift), limits.progress),
+                            units(b.bound), b.dropped, std::move(shift)});
       }
     }
-    s.choice = std::move(r.choice);
-    reduced.fill(s.choice);
+    x = std::move(r.choice);
     bound = tighter(r.bound);
     s.details = "lambda " + std::to_string(r.lambda) + ", " + std::to_string(r.shifts.size()) +
                 " shifts, widest thick layer " + std::to_string(r.width);
   } catch (const LimitError& e) {
     // A thick layer too wide for the DP: the local search alone, from Delaunay,
     // with every term at its best as the bound.
-    s.choice.assign(fo.num_quads(), 0);
-    reduced.fill(s.choice);
-    bound = tighter(best_possible(reduced.graph));
+    x.assign(m.graph().num_vars, 0);
+    bound = tighter(best_possible(m.graph()));
     s.details = std::string("Baker's scheme refused (") + e.what() + "); local search from Delaunay, bound: every term at its best";
   }
-  if (g.relaxed)
-    s.details += "; " + std::to_string(g.relaxed) +
+  if (m.model.relaxed)
+    s.details += "; " + std::to_string(m.model.relaxed) +
                  " vertex terms too large to tabulate were relaxed (counted at their best in the bound)";
-  const bool improved = improve_locally(g, s.choice, options.progress);
-  prefer_delaunay(g, s.choice, options.progress);
-  s.local_search_improved = improved;
+  s.local_search_improved = improve_locally(m.graph(), x, options.progress);
+  s.choice = m.expand(x);
+  prefer_delaunay(m.model, s.choice, options.progress);
   s.value = evaluate(o, triangulate(fo, s.choice), options.progress);
   s.bound = units(bound);  // mixed: a lower bound on the fewest mixed
   s.optimal = s.value == *s.bound;
@@ -168,11 +170,11 @@ Solution degree_solution(const FirstOrder& fo, const SolveOptions& options) {
 
 }  // namespace
 
-Solution approximate(const FirstOrder& fo, Objective o, const SolveOptions& options) {
+Solution approximate(const FirstOrder& fo, Objective o, const SolveOptions& options, ReducedModel* built) {
   switch (o) {
     case Objective::MaxConvexEdges:
     case Objective::MinMixedVertices:
-      return baker_solution(fo, o, options);
+      return baker_solution(fo, o, options, built);
     case Objective::MinmaxDegree:
       return degree_solution(fo, options);
     default:

@@ -163,11 +163,37 @@ FactorGraph condition(const FactorGraph& g, const std::vector<int8_t>& fixed) {
   return c;
 }
 
-PersistentReduction reduce_by_roof_dual(const FactorGraph& g, const Progress& progress) {
-  if (!roof_dual_applies(g)) return {g, std::nullopt};
-  RoofDual roof = roof_dual(g, progress);
-  FactorGraph reduced = condition(g, roof.fixed);
-  return {std::move(reduced), std::move(roof)};
+ReducedModel reduce_by_roof_dual(FactorGraph model, const Progress& progress) {
+  ReducedModel r;
+  if (!roof_dual_applies(model)) {
+    r.model = std::move(model);
+    return r;
+  }
+  r.roof = roof_dual(model, progress);
+  r.free = condition(model, r.roof->fixed);
+  std::vector<uint32_t> renamed(model.num_vars, UINT32_MAX);
+  for (uint32_t v = 0; v < model.num_vars; ++v)
+    if (r.roof->fixed[v] < 0) renamed[v] = static_cast<uint32_t>(r.original.size()), r.original.push_back(v);
+  r.free.num_vars = static_cast<uint32_t>(r.original.size());
+  for (Factor& f : r.free.factors)
+    for (uint32_t& v : f.scope) v = renamed[v];
+  r.model = std::move(model);
+  return r;
+}
+
+Choice ReducedModel::expand(const Choice& x) const {
+  if (!roof) return x;
+  Choice full(roof->fixed.size());
+  for (size_t v = 0; v < full.size(); ++v) full[v] = static_cast<uint8_t>(std::max<int8_t>(roof->fixed[v], 0));
+  for (size_t i = 0; i < original.size(); ++i) full[original[i]] = x[i];
+  return full;
+}
+
+std::vector<uint32_t> ReducedModel::restrict(const std::vector<uint32_t>& per_variable) const {
+  if (!roof) return per_variable;
+  std::vector<uint32_t> r(original.size());
+  for (size_t i = 0; i < original.size(); ++i) r[i] = per_variable[original[i]];
+  return r;
 }
 
 }  // namespace hodt

@@ -45,7 +45,9 @@ DpLimits dp_limits(const SolveOptions& options) {
 }
 
 // The NP-hard objectives exactly: the factor graph DP over a tree decomposition.
-Solution solve_factor_graph(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
+// On a refusal, the model (and its roof dual) is left in *refused for Baker's scheme.
+Solution solve_factor_graph(const FirstOrder& fo, Objective objective, const SolveOptions& options,
+                            std::optional<ReducedModel>* refused = nullptr) {
   const DpLimits limits = dp_limits(options);
   Solution s;
   s.objective = objective;
@@ -53,18 +55,31 @@ Solution solve_factor_graph(const FirstOrder& fo, Objective objective, const Sol
   if (objective == Objective::MinmaxDegree) {
     s.choice = min_max_degree_exact(fo, limits);
   } else {
-    const FactorGraph g = factor_model(fo, objective, limits);
     // Pairwise terms (convex edges): the roof dual's persistent assignment first,
     // the decomposition then covers only the variables it leaves free.
-    const PersistentReduction reduced = reduce_by_roof_dual(g, limits.progress);
-    DpResult dp = solve_exact(reduced.graph, limits);
-    reduced.fill(dp.choice);
-    if (options.explanation) {
-      const Decomposition& d = dp.decomposition;
-      options.explanation->exact = ExactExplanation{d.width, d.num_components, d.order, d.component};
+    ReducedModel m = reduce_by_roof_dual(factor_model(fo, objective, limits), limits.progress);
+    DpResult dp;
+    try {
+      dp = solve_exact(m.graph(), limits);
+    } catch (const LimitError&) {
+      if (refused) refused->emplace(std::move(m));
+      throw;
     }
-    s.choice = std::move(dp.choice);
-    prefer_delaunay(g, s.choice, limits.progress);
+    if (options.explanation) {
+      // Per quad: the free ones in their order and components, then each fixed
+      // quad alone (a component of its own, as a quad without interactions).
+      const Decomposition& d = dp.decomposition;
+      ExactExplanation e{d.width, d.num_components, {}, std::vector<uint32_t>(fo.num_quads(), UINT32_MAX)};
+      for (uint32_t i = 0; i < d.order.size(); ++i) {
+        const uint32_t q = m.roof ? m.original[d.order[i]] : d.order[i];
+        e.order.push_back(q), e.component[q] = d.component[d.order[i]];
+      }
+      for (uint32_t q = 0; q < fo.num_quads(); ++q)
+        if (e.component[q] == UINT32_MAX) e.order.push_back(q), e.component[q] = e.num_components++;
+      options.explanation->exact = std::move(e);
+    }
+    s.choice = m.expand(dp.choice);
+    prefer_delaunay(m.model, s.choice, limits.progress);
   }
   s.optimal = true;
   s.value = evaluate(objective, triangulate(fo, s.choice), limits.progress);
@@ -81,14 +96,16 @@ Solution dispatch(const FirstOrder& fo, Objective objective, const SolveOptions&
       return solve_factor_graph(fo, objective, options);
     case Method::Approx:
       return approximate(fo, objective, options);
-    case Method::Auto:
+    case Method::Auto: {
+      std::optional<ReducedModel> refused;
       try {  // exact when every component's decomposition fits the memory cap
-        return solve_factor_graph(fo, objective, options);
+        return solve_factor_graph(fo, objective, options, &refused);
       } catch (const LimitError& e) {
-        Solution s = approximate(fo, objective, options);
+        Solution s = approximate(fo, objective, options, refused ? &*refused : nullptr);
         s.details = std::string("exact refused (") + e.what() + "); " + s.details;
         return s;
       }
+    }
     default:
       break;
   }

@@ -92,14 +92,15 @@ inline std::vector<double> saddle_grid(int w) {
 
 // A 61 x 61 window of a smooth raster (the benchmark's hill function sampled on
 // a 316 x 316 lattice): its convex edges keep, after the roof dual, a frustrated
-// component of treewidth above 20 (a few hundred quads).
-inline std::vector<double> frustrated_raster() {
+// component of treewidth above 20 (a few hundred quads). Smaller windows of the
+// same region keep free quads too.
+inline std::vector<double> frustrated_raster(int w = 61, int x0 = 90, int y0 = 255) {
   auto hill = [](double x, double y) {
     return std::sin(3 * x) * std::cos(2.3 * y) + 0.5 * std::sin(7.1 * x + 5.3 * y) + 0.2 * std::cos(13 * x * y);
   };
   std::vector<double> p;
-  for (int j = 255; j < 316; ++j)
-    for (int i = 90; i < 151; ++i) p.insert(p.end(), {double(i), double(j), 300 + 200 * hill(i / 316.0, j / 316.0)});
+  for (int j = y0; j < y0 + w; ++j)
+    for (int i = x0; i < x0 + w; ++i) p.insert(p.end(), {double(i), double(j), 300 + 200 * hill(i / 316.0, j / 316.0)});
   return p;
 }
 

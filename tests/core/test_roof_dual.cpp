@@ -6,8 +6,11 @@
 #include <cmath>
 
 #include "generators.hpp"
+#include "hodt/delaunay.hpp"
+#include "hodt/factor_models.hpp"
 #include "hodt/max_flow.hpp"
 #include "hodt/roof_dual.hpp"
+#include "hodt/solve.hpp"
 
 using namespace hodt;
 using namespace hodt::test;
@@ -170,4 +173,34 @@ TEST_CASE("roof dual: a bound on the optimum, and an assignment some optimum ext
   CHECK(strict > 40);                 // the bound is not the optimum computed some other way
   CHECK(labelled < variables);        // nor is every variable labelled
   CHECK(labelled > variables / 2);
+}
+
+TEST_CASE("convex edges: the roof dual and the DP on the quads it leaves free equal the DP alone") {
+  uint32_t instances = 0, fixed = 0, quads = 0, partly = 0;
+  for (uint64_t seed = 1; seed <= 70; ++seed) {
+    std::vector<double> p;
+    switch (seed % 7) {
+      case 5: p = frustrated_raster(15, 100 + static_cast<int>(seed % 5) * 4, 260 + static_cast<int>(seed % 3) * 10); break;
+      case 6: p = grid_points(30, 30, seed, true); break;
+      case 0: p = uniform_points(400, seed); break;
+      case 1: p = dem_points(400, seed); break;
+      case 2: p = grid_points(16, 16, seed, true); break;  // equal heights, cocircular cells
+      case 3: p = jittered_grid(16, 16, 0.35, seed); break;
+      default: p = grid_points(16, 16, seed); break;
+    }
+    const FirstOrder fo = first_order(delaunay(p));
+    const FactorGraph g = factor_model(fo, Objective::MaxConvexEdges);
+    const DpResult alone = solve_exact(g);
+    SolveOptions exact;
+    exact.method = Method::Exact;
+    const Solution s = solve(fo, Objective::MaxConvexEdges, exact);
+    INFO("seed " << seed);
+    CHECK(s.value == alone.value);
+    CHECK(g.evaluate(s.choice) == alone.value);
+    const RoofDual rd = roof_dual(g);
+    CHECK(rd.bound >= alone.value);
+    ++instances, fixed += rd.num_fixed, quads += g.num_vars, partly += rd.num_fixed < g.num_vars;
+  }
+  MESSAGE(instances << " instances, the roof dual fixed " << fixed << " of " << quads << " quads");
+  CHECK(partly >= 10);  // the DP on the free quads ran
 }

@@ -13,11 +13,15 @@
 // and a degree test too large keeps the last proven lower bound. The value is
 // always measured on the returned triangulation, the bound always certified.
 #pragma once
+#include "hodt/roof_dual.hpp"
 #include "hodt/solution.hpp"
 #include "hodt/solve.hpp"
 
 namespace hodt {
 
-Solution approximate(const FirstOrder& fo, Objective o, const SolveOptions& options);
+// built: the model exact built and refused (method auto), reused when it is the
+// one Baker's scheme reads (a maximised sum: convex edges), so that the model
+// and its roof dual are not computed twice.
+Solution approximate(const FirstOrder& fo, Objective o, const SolveOptions& options, ReducedModel* built = nullptr);
 
 }  // namespace hodt

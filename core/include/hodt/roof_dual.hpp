@@ -32,18 +32,23 @@ RoofDual roof_dual(const FactorGraph& g, const Progress& progress = {});
 // folded into the constant.
 FactorGraph condition(const FactorGraph& g, const std::vector<int8_t>& fixed);
 
-// A graph reduced to its free variables when the roof dual applies (else the
-// graph itself): what the exact engine and Baker's scheme solve. An optimum of
-// the reduced graph, completed by fill(), is an optimum of the original.
-struct PersistentReduction {
-  FactorGraph graph;
+// A model and, when the roof dual applies, the same model over its free
+// variables (renumbered 0, 1, ...: a raster keeps about 1 % of its quads): what
+// the exact engine and Baker's scheme solve. An optimum of graph(), expanded, is
+// an optimum of the model.
+struct ReducedModel {
+  FactorGraph model;
   std::optional<RoofDual> roof;
-  void fill(Choice& x) const {
-    if (roof)
-      for (size_t v = 0; v < x.size(); ++v)
-        if (roof->fixed[v] >= 0) x[v] = static_cast<uint8_t>(roof->fixed[v]);
-  }
+  FactorGraph free;                // with a roof: the model on the free variables
+  std::vector<uint32_t> original;  // with a roof: per variable of free, the model's variable
+
+  FactorGraph& graph() { return roof ? free : model; }
+  const FactorGraph& graph() const { return roof ? free : model; }
+  // An assignment of the model's variables: the fixed ones, and x on the free.
+  Choice expand(const Choice& x) const;
+  // Per variable of graph(), from values per variable of the model.
+  std::vector<uint32_t> restrict(const std::vector<uint32_t>& per_variable) const;
 };
-PersistentReduction reduce_by_roof_dual(const FactorGraph& g, const Progress& progress = {});
+ReducedModel reduce_by_roof_dual(FactorGraph model, const Progress& progress = {});
 
 }  // namespace hodt
