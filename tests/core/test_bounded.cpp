@@ -199,7 +199,9 @@ TEST_CASE("approx never refuses: a thick layer too wide for the DP falls back to
   SolveOptions options;
   options.method = Method::Approx;
   options.max_width = 0;  // every thick layer is wider
-  for (auto [o, fo] : {std::pair{Objective::MaxConvexEdges, &frustrated}, std::pair{Objective::MinMixedVertices, &jittered}}) {
+  for (const auto& c : {std::pair{Objective::MaxConvexEdges, &frustrated}, std::pair{Objective::MinMixedVertices, &jittered}}) {
+    const Objective o = c.first;  // (clang 14 cannot capture a structured binding)
+    const FirstOrder* fo = c.second;
     CAPTURE(std::string(info(o).id));
     const Solution s = solve(*fo, o, options);
     CAPTURE(s.details);
