@@ -90,17 +90,18 @@ inline std::vector<double> saddle_grid(int w) {
   return p;
 }
 
-// A 61 x 61 window of a smooth raster (the benchmark's hill function sampled on
-// a 316 x 316 lattice): its convex edges keep, after the roof dual, a frustrated
-// component of treewidth above 20 (a few hundred quads). Smaller windows of the
-// same region keep free quads too.
-inline std::vector<double> frustrated_raster(int w = 61, int x0 = 90, int y0 = 255) {
+// A 60 x 60 window of a smooth raster (the benchmark's hill function sampled on
+// a 1000 x 1000 lattice, as its 1M raster is): after the roof dual, most of its
+// convex-edge quads stay free in a frustrated component of treewidth above 20,
+// for min-degree and min-fill alike. Windows of a coarser lattice (316) keep
+// smaller free components.
+inline std::vector<double> frustrated_raster(int w = 60, int x0 = 340, int y0 = 860, double lattice = 1000) {
   auto hill = [](double x, double y) {
     return std::sin(3 * x) * std::cos(2.3 * y) + 0.5 * std::sin(7.1 * x + 5.3 * y) + 0.2 * std::cos(13 * x * y);
   };
   std::vector<double> p;
   for (int j = y0; j < y0 + w; ++j)
-    for (int i = x0; i < x0 + w; ++i) p.insert(p.end(), {double(i), double(j), 300 + 200 * hill(i / 316.0, j / 316.0)});
+    for (int i = x0; i < x0 + w; ++i) p.insert(p.end(), {double(i), double(j), 300 + 200 * hill(i / lattice, j / lattice)});
   return p;
 }
 

@@ -105,7 +105,7 @@ TEST_CASE("auto runs exact when it fits, else approx, and says which") {
   const FactorGraph g = factor_model(grid, Objective::MaxConvexEdges);
   const RoofDual rd = roof_dual(g);
   CHECK(*a.bound <= rd.bound);
-  CHECK(rd.num_fixed > g.num_vars / 2);
+  CHECK(a.details.find("the roof dual fixed " + std::to_string(rd.num_fixed) + " of ") != std::string::npos);
 }
 
 TEST_CASE("long runs report progress and can be cancelled") {

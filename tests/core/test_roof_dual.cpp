@@ -180,7 +180,7 @@ TEST_CASE("convex edges: the roof dual and the DP on the quads it leaves free eq
   for (uint64_t seed = 1; seed <= 70; ++seed) {
     std::vector<double> p;
     switch (seed % 7) {
-      case 5: p = frustrated_raster(15, 100 + static_cast<int>(seed % 5) * 4, 260 + static_cast<int>(seed % 3) * 10); break;
+      case 5: p = frustrated_raster(15, 100 + static_cast<int>(seed % 5) * 4, 260 + static_cast<int>(seed % 3) * 10, 316); break;
       case 6: p = grid_points(30, 30, seed, true); break;
       case 0: p = uniform_points(400, seed); break;
       case 1: p = dem_points(400, seed); break;

@@ -62,9 +62,15 @@ struct Decomposition {
   std::vector<uint32_t> component_width;
   bool complete = true;                      // false: stopped at a bag wider than asked
 };
+// Elimination orders: min-degree, min-fill, or (Auto) min-degree and, when that
+// is wider than max_width, min-fill on graphs of at most kMinFillVariables
+// variables (min-fill counts fill-ins: slower, often narrower).
+enum class Elimination : uint8_t { Auto, MinDegree, MinFill };
+constexpr uint32_t kMinFillVariables = 50000;
 // Stops early (complete = false) once a bag is wider than max_width: the fill-in
 // of a wide component would cost far more memory and time than the answer needs.
-Decomposition decompose(const FactorGraph& g, uint32_t max_width = UINT32_MAX, const Progress& progress = {});
+Decomposition decompose(const FactorGraph& g, uint32_t max_width = UINT32_MAX, const Progress& progress = {},
+                        Elimination elimination = Elimination::Auto);
 
 struct DpResult {
   Choice choice;
