@@ -159,12 +159,15 @@ bool eliminate_min_fill(Adjacency adj, Decomposition& d, uint32_t max_width, con
     }
     return UINT32_MAX;
   };
+  WorkCounter work;  // (a step near the end recounts thousands of fills)
   auto changed = [&](const std::vector<uint32_t>& nb) {
     ++round;
     auto recount = [&](uint32_t w) {
       if (gone[w] || seen[w] == round) return;
       seen[w] = round;
+      const double before = spent;
       heap.push({fill_of(w), static_cast<uint32_t>(adj[w].size()), w, ++stamp[w]});
+      if (work.tick(spent - before)) report(progress, round, n);
     };
     for (uint32_t a : nb) {
       recount(a);
