@@ -217,11 +217,15 @@ Decomposition decompose(const FactorGraph& g, uint32_t max_width, const Progress
     eliminate_min_fill(std::move(adj), d, max_width, progress, INFINITY);
     return d;
   }
-  Decomposition fill = d;
-  eliminate_min_degree(adj, d, max_width, progress);
-  // Too wide: min-fill may fit, on graphs small enough to count fill-ins
-  // (2^28 pair tests: about a second).
-  if (elimination == Elimination::MinDegree || d.complete || n > kMinFillVariables) return d;
+  // Too wide, min-degree may leave min-fill to try, on graphs small enough to
+  // count fill-ins (2^28 pair tests: about a second): only then is the graph
+  // kept for it (a copy per solve of a million quads would cost more than the
+  // elimination).
+  const bool fallback = elimination == Elimination::Auto && n <= kMinFillVariables;
+  const Decomposition start = fallback ? d : Decomposition{};
+  eliminate_min_degree(fallback ? adj : std::move(adj), d, max_width, progress);
+  if (!fallback || d.complete) return d;
+  Decomposition fill = start;
   if (eliminate_min_fill(std::move(adj), fill, max_width, progress, 268435456.0) && fill.complete) return fill;
   return d;
 }

@@ -116,10 +116,8 @@ class QpboGraph {
   int64_t constant_ = 0;      // of E'
 };
 
-}  // namespace
-
-RoofDual roof_dual(const FactorGraph& g, const Progress& progress) {
-  if (!roof_dual_applies(g)) throw std::logic_error("roof_dual: not a sum of integer terms over at most two variables");
+// roof_dual() once roof_dual_applies(g) is known.
+RoofDual checked_roof_dual(const FactorGraph& g, const Progress& progress) {
   const int64_t sign = g.sense == Sense::Max ? -1 : 1;  // minimise sign * value
   QpboGraph q(g.num_vars);
   for (const Factor& f : g.factors) {
@@ -137,6 +135,13 @@ RoofDual roof_dual(const FactorGraph& g, const Progress& progress) {
   r.fixed = std::move(m.fixed);
   r.num_fixed = static_cast<uint32_t>(std::count_if(r.fixed.begin(), r.fixed.end(), [](int8_t v) { return v >= 0; }));
   return r;
+}
+
+}  // namespace
+
+RoofDual roof_dual(const FactorGraph& g, const Progress& progress) {
+  if (!roof_dual_applies(g)) throw std::logic_error("roof_dual: not a sum of integer terms over at most two variables");
+  return checked_roof_dual(g, progress);
 }
 
 FactorGraph condition(const FactorGraph& g, const std::vector<int8_t>& fixed) {
@@ -169,7 +174,7 @@ ReducedModel reduce_by_roof_dual(FactorGraph model, const Progress& progress) {
     r.model = std::move(model);
     return r;
   }
-  r.roof = roof_dual(model, progress);
+  r.roof = checked_roof_dual(model, progress);
   r.free = condition(model, r.roof->fixed);
   std::vector<uint32_t> renamed(model.num_vars, UINT32_MAX);
   for (uint32_t v = 0; v < model.num_vars; ++v)
