@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
+
+#include "hodt/words_hash.hpp"
 
 namespace hodt {
 
@@ -147,6 +150,66 @@ std::optional<std::vector<std::vector<Tri>>> FillGraph::fills(const std::vector<
     }
   };
   walk(walk, 0);
+  return out;
+}
+
+std::optional<std::vector<std::vector<Tri>>> FillGraph::best_by_entries(const std::vector<uint8_t>& kept,
+                                                                        uint64_t max_fills, uint64_t max_labels) const {
+  // Labels: a path to a node with the entries it took, the least per (node,
+  // entries). Arcs are sorted by parent and lead to later nodes, so a node's
+  // labels are final when its arcs out are read. A label's key: its node, then
+  // its (item, entry) pairs sorted by item.
+  struct Label {
+    uint32_t prev, arc;  // the label it extends (UINT32_MAX: the empty fill), the arc taken
+    double cost;
+    std::vector<uint32_t> key;
+  };
+  std::vector<Label> labels{{UINT32_MAX, UINT32_MAX, 0.0, {0u}}};
+  std::unordered_map<std::vector<uint32_t>, uint32_t, WordsHash> index{{{0u}, 0u}};
+  std::vector<std::vector<uint32_t>> at(nodes);
+  at[0].push_back(0);
+  std::vector<uint32_t> key;
+  std::vector<std::pair<uint32_t, uint32_t>> pairs;
+  for (uint32_t a = 0; a < arcs.size(); ++a) {
+    const Arc& arc = arcs[a];
+    for (size_t i = 0; kept[a] && i < at[arc.parent].size(); ++i) {
+      const uint32_t l = at[arc.parent][i];
+      pairs.clear();
+      for (size_t w = 1; w < labels[l].key.size(); w += 2) pairs.push_back({labels[l].key[w], labels[l].key[w + 1]});
+      pairs.insert(pairs.end(), taken.begin() + arc.first_take, taken.begin() + arc.first_take + arc.takes);
+      std::sort(pairs.begin(), pairs.end());
+      key.assign(1, arc.child);
+      for (auto [item, entry] : pairs) key.push_back(item), key.push_back(entry);
+      const double cost = labels[l].cost + arc.cost;
+      const auto [it, fresh] = index.try_emplace(key, static_cast<uint32_t>(labels.size()));
+      if (fresh) {
+        if (labels.size() >= max_labels) return std::nullopt;
+        labels.push_back({l, a, cost, key});
+        at[arc.child].push_back(it->second);
+      } else if (cost < labels[it->second].cost) {
+        labels[it->second].prev = l, labels[it->second].arc = a, labels[it->second].cost = cost;
+      }
+    }
+    // (The node's last arc out: its labels are read no more.)
+    if (a + 1 == arcs.size() || arcs[a + 1].parent != arc.parent) std::vector<uint32_t>().swap(at[arc.parent]);
+  }
+  // The least per combination over every complete node.
+  std::unordered_map<std::vector<uint32_t>, uint32_t, WordsHash> best;
+  for (uint32_t n : complete)
+    for (uint32_t l : at[n]) {
+      key.assign(labels[l].key.begin() + 1, labels[l].key.end());
+      const auto [it, fresh] = best.try_emplace(key, l);
+      if (!fresh && labels[l].cost < labels[it->second].cost) it->second = l;
+    }
+  if (best.size() > max_fills) return std::nullopt;
+  std::vector<std::vector<Tri>> out;
+  std::vector<uint32_t> path;
+  for (const auto& [k, last] : best) {
+    path.clear();
+    for (uint32_t l = last; labels[l].prev != UINT32_MAX; l = labels[l].prev) path.push_back(labels[l].arc);
+    out.push_back(fill_of(*this, path));
+  }
+  std::sort(out.begin(), out.end());
   return out;
 }
 

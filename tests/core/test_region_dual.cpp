@@ -34,7 +34,7 @@ uint64_t forget_lists(Regions& R) {
 
 }  // namespace
 
-TEST_CASE("fill graph: the region's triangulations, their best by entry, and a fill for each entry") {
+TEST_CASE("fill graph: the region's triangulations, their best by entry and by combination of entries, and a fill for each entry") {
   int graphs = 0, entries = 0;
   for (uint32_t k : {2u, 3u, 4u})
     for (uint64_t seed = 1; seed <= 30; ++seed) {
@@ -91,6 +91,31 @@ TEST_CASE("fill graph: the region's triangulations, their best by entry, and a f
             }
           CHECK(count == want.size());  // (no entry missing, none that no fill takes)
           entries += static_cast<int>(count);
+          // The least fill per combination of entries, over every arc and over
+          // some: against the fills over those arcs, grouped by signature.
+          for (int pass = 0; pass < 2; ++pass) {
+            std::vector<uint8_t> kept(g->arcs.size(), 1);
+            for (size_t a = 0; pass && a < kept.size(); ++a) kept[a] = (a * 2654435761u + seed) % 7 != 0;
+            auto every = g->fills(kept, 1'000'000);
+            REQUIRE(every);
+            std::sort(every->begin(), every->end());
+            std::map<std::vector<SignatureEntry>, double> least_of;
+            for (const auto& fill : *every) {
+              const StateKey key = engine.terms.key(r, fill);
+              const auto [it, fresh] = least_of.try_emplace(key.signature, key.value);
+              if (!fresh) it->second = std::min(it->second, key.value);
+            }
+            const auto by_entries = g->best_by_entries(kept, 1'000'000, 1'000'000);
+            REQUIRE(by_entries);
+            CHECK(by_entries->size() == least_of.size());
+            for (const auto& fill : *by_entries) {
+              CHECK(std::binary_search(every->begin(), every->end(), fill));
+              const StateKey key = engine.terms.key(r, fill);
+              REQUIRE(least_of.count(key.signature));
+              CHECK(key.value == near(least_of.at(key.signature)));
+            }
+            if (!least_of.empty()) CHECK_FALSE(g->best_by_entries(kept, least_of.size() - 1, 1'000'000));
+          }
         }
       }
     }

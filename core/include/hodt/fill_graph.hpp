@@ -47,6 +47,14 @@ struct FillGraph {
   // The complete fills that use only the arcs kept (canonical, sorted), or
   // nothing if there are more than max_fills.
   std::optional<std::vector<std::vector<Tri>>> fills(const std::vector<uint8_t>& kept, uint64_t max_fills) const;
+  // Per combination of entries (one per item) that a complete fill over kept
+  // arcs takes, the least such fill (least own terms: arc costs are read as a
+  // minimised sum), canonical and sorted: the fills the regions beside can
+  // tell apart, each at its best (far fewer than the fills, as a region's
+  // listing by signature is). Nothing if more than max_labels partial
+  // combinations or more than max_fills fills.
+  std::optional<std::vector<std::vector<Tri>>> best_by_entries(const std::vector<uint8_t>& kept, uint64_t max_fills,
+                                                               uint64_t max_labels) const;
   // Per item and entry, a complete fill that takes it (canonical, sorted).
   std::vector<std::vector<std::vector<Tri>>> representatives() const;
 };
