@@ -164,6 +164,11 @@ std::optional<std::vector<std::vector<Tri>>> FillGraph::best_by_entries(const st
     double cost;
     std::vector<uint32_t> key;
   };
+  // (Only arcs on a kept path to a complete fill.)
+  std::vector<uint8_t> ends(nodes, 0);
+  for (uint32_t n : complete) ends[n] = 1;
+  for (size_t a = arcs.size(); a-- > 0;)
+    if (kept[a]) ends[arcs[a].parent] |= ends[arcs[a].child];
   std::vector<Label> labels{{UINT32_MAX, UINT32_MAX, 0.0, {0u}}};
   std::unordered_map<std::vector<uint32_t>, uint32_t, WordsHash> index{{{0u}, 0u}};
   std::vector<std::vector<uint32_t>> at(nodes);
@@ -172,7 +177,7 @@ std::optional<std::vector<std::vector<Tri>>> FillGraph::best_by_entries(const st
   std::vector<std::pair<uint32_t, uint32_t>> pairs;
   for (uint32_t a = 0; a < arcs.size(); ++a) {
     const Arc& arc = arcs[a];
-    for (size_t i = 0; kept[a] && i < at[arc.parent].size(); ++i) {
+    for (size_t i = 0; kept[a] && ends[arc.child] && i < at[arc.parent].size(); ++i) {
       const uint32_t l = at[arc.parent][i];
       pairs.clear();
       for (size_t w = 1; w < labels[l].key.size(); w += 2) pairs.push_back({labels[l].key[w], labels[l].key[w + 1]});

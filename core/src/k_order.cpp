@@ -348,9 +348,11 @@ std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& e
   // Two clusterings in turn: the ascent stops at a fixed point of its own in
   // each, and a proof turns on the bound passing an integer (the pruning keeps
   // every state within one unit of it), so either may prove what the other
-  // cannot; the second runs only if the first did not.
+  // cannot; the second runs only if the first did not. The larger clusters
+  // (the tighter relaxation) first: a 10,000-point DEM sample at k = 4,
+  // max-convex-edges, proven by them alone, 6.3 -> 4.9 s.
   std::optional<double> bound;
-  for (const double clusters : {1024.0, 4096.0}) {
+  for (const double clusters : {4096.0, 1024.0}) {
     dual.cluster_entries = clusters;
     const DualProof proof(model.graph, dual, r.value);
     if (!proof.applies()) return bound;

@@ -147,10 +147,12 @@ void prove(const Mesh& dt, const Regions& R, Objective o, const std::vector<Regi
     std::vector<uint8_t> kept(through->size());
     for (size_t a = 0; a < kept.size(); ++a) kept[a] = red->offset + f.offset + (*through)[a] <= ub - 1;
     const uint64_t room = std::min(limits.max_listed, limits.max_listed_total - out.listed);
-    // (The least fill per combination of entries: what the neighbours see,
-    // each at its best; else every fill.)
-    auto fills = f.graph.best_by_entries(kept, room, limits.max_states);
-    if (!fills) fills = f.graph.fills(kept, room);
+    // Every fill when few are left (often none), else the least fill per
+    // combination of entries (what the regions beside see, each at its best).
+    auto fills = f.graph.fills(kept, room);
+    // (Partial combinations beyond a few per fill listed: a long region's,
+    // whose combinations are past counting.)
+    if (!fills) fills = f.graph.best_by_entries(kept, room, std::min<uint64_t>(4 * room, limits.max_states));
     if (!fills) return;
     out.listed += fills->size();
     auto& states = listed.regions[r].states;
