@@ -62,6 +62,7 @@ struct RegionDual {
   bool proven = false;           // no k-OD triangulation beats the best at hand ...
   std::optional<Mesh> optimum;   // ... or this one, which does (then optimal)
   uint64_t listed = 0;           // fills the proof listed
+  uint32_t tightened = 0;        // units its targets short of the ascent's bound took off it
   uint32_t graphs = 0;    // regions read through their fill graph
   std::vector<uint32_t> graph_nodes;  // ... per region, its graph's partial fills (0: none)
   uint32_t relaxed = 0;   // regions not listed whole left to the relaxation
