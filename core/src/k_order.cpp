@@ -73,8 +73,9 @@ KOrderResult brute_force_k_order(const Mesh& dt, Objective o, uint32_t k, uint64
 
 // Adds to each incomplete region the part of a k-OD triangulation that lies in it
 // (each of its triangles lies in one region: the one beside any of its edges).
-// Returns whether any was added.
-bool add_states_of(Regions& R, const Mesh& dt, const Mesh& m) {
+// Returns whether any was added; marks the regions it added to in `changed`
+// (when given: one flag per region).
+bool add_states_of(Regions& R, const Mesh& dt, const Mesh& m, std::vector<uint8_t>* changed = nullptr) {
   if (!R.incomplete) return false;
   std::unordered_map<uint64_t, uint32_t> delaunay_edge;  // directed edge -> halfedge
   for (uint32_t e = 0; e < dt.triangles.size(); ++e) delaunay_edge[edge_key(dt.origin(e), dt.target(e))] = e;
@@ -98,6 +99,7 @@ bool add_states_of(Regions& R, const Mesh& dt, const Mesh& m) {
     if (std::find(region.states.begin(), region.states.end(), part[r]) == region.states.end()) {
       region.states.push_back(std::move(part[r]));
       added = true;
+      if (changed) (*changed)[r] = 1;
     }
   }
   return added;
@@ -178,6 +180,8 @@ bool list_whole(const Mesh& dt, Objective o, RegionEngine& engine, const Progres
   });
   if (!R.incomplete || !listable) return !R.incomplete;
   Regions listed = R;
+  std::vector<uint8_t> changed(R.regions.size(), 0);
+  for (size_t r = 0; r < R.regions.size(); ++r) changed[r] = !R.regions[r].complete;
   RegionLimits wide = engine.limits;
   wide.only_incomplete = true;
   wide.max_states_per_region = 100'000;
@@ -185,7 +189,7 @@ bool list_whole(const Mesh& dt, Objective o, RegionEngine& engine, const Progres
   wide.max_total_states = 1'500'000;
   enumerate_regions(dt, R, wide);
   if (R.incomplete) R = std::move(listed);
-  else engine.model = region_model(dt, R, o, engine.model_limits, progress);
+  else engine.model = update_region_model(std::move(engine.model), dt, R, o, changed, engine.model_limits, progress);
   return !R.incomplete;
 }
 
@@ -226,7 +230,8 @@ std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEn
   // tightens `bound`; true when it proved r optimal.
   auto read = [&](Regions& R, const RegionTerms& terms, const std::string& glued, RegionDual& d) {
     add_states_of(R, dt, r.triangulation);
-    d = region_dual(dt, R, o, engine.cand, terms, &r.triangulation, limits);
+    // (The engine's model is of its regions, but for those not listed whole.)
+    d = region_dual(dt, R, o, engine.cand, terms, &r.triangulation, limits, &R == &engine.R ? &engine.model : nullptr);
     const std::string what = std::to_string(d.graphs) + " graphs" + glued;
     size_t best = d.found.size();
     for (size_t i = 0; i < d.found.size(); ++i)
@@ -545,15 +550,16 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     return true;
   };
   if (start_proven()) return r;
-  bool added = add_states_of(R, dt, start);
+  std::vector<uint8_t> changed(R.regions.size(), 0);
+  bool added = add_states_of(R, dt, start, &changed);
   solve_lower();
   if (lower) {
-    added = add_states_of(R, dt, lower->triangulation) || added;
+    added = add_states_of(R, dt, lower->triangulation, &changed) || added;
     if (better(sense, lower->value, start_value))
       start = std::move(lower->triangulation), start_value = lower->value, start_name = "answer at order " + std::to_string(k <= 8 ? k - 1 : k / 2);
     if (start_proven()) return r;
   }
-  if (added) model = region_model(dt, R, o, engine.model_limits, options.progress);
+  if (added) model = update_region_model(std::move(model), dt, R, o, changed, engine.model_limits, options.progress);
   const ListedBest listed = engine.best_listed(listed_states(R, start), options.progress);
   if (bounded && listed.bound_only && !R.incomplete && !model.graph.relaxed_terms &&
       !better(sense, listed.listed_value, start_value)) {

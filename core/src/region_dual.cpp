@@ -140,7 +140,7 @@ struct Probe {
 
 Probe probe(const Mesh& dt, const Regions& R, Objective o, const std::vector<RegionFactor>& factors,
             const std::vector<uint32_t>& region_of_factor, const DualProof& proof, double target,
-            const RegionDualLimits& limits) {
+            const RegionDualLimits& limits, const RegionModel* model) {
   Probe out;
   const Sense sense = info(o).sense;
   const double ub = (sense == Sense::Min ? 1.0 : -1.0) * target;  // (min form)
@@ -171,7 +171,10 @@ Probe probe(const Mesh& dt, const Regions& R, Objective o, const std::vector<Reg
     listed.regions[r].complete = true;
   }
   listed.incomplete = 0;
-  const RegionModel whole = region_model(dt, listed, o, limits.model, limits.dual.progress);
+  std::vector<uint8_t> changed(R.regions.size(), 0);
+  for (uint32_t r : region_of_factor) changed[r] = 1;
+  const RegionModel whole = model ? update_region_model(*model, dt, listed, o, changed, limits.model, limits.dual.progress)
+                                  : region_model(dt, listed, o, limits.model, limits.dual.progress);
   const DualProof again(whole.graph, limits.dual, target);
   if (!again.applies()) return out;
   const DualProof::Proof p = again.prove(target, limits.dp);
@@ -188,14 +191,14 @@ Probe probe(const Mesh& dt, const Regions& R, Objective o, const std::vector<Reg
 // the proof of 20021 did not fit its lists, of 20026 did, and found 20027.)
 void prove(const Mesh& dt, const Regions& R, Objective o, const std::vector<RegionFactor>& factors,
            const std::vector<uint32_t>& region_of_factor, const DualProof& proof, double best,
-           const RegionDualLimits& limits, RegionDual& out) {
+           const RegionDualLimits& limits, const RegionModel* model, RegionDual& out) {
   const Sense sense = info(o).sense;
   constexpr int kShortRounds = 3;
   for (int round = 0;; ++round) {
     const double short_of_bound = sense == Sense::Min ? *out.bound + 1 : *out.bound - 1;
     const bool last = round >= kShortRounds || !better(sense, short_of_bound, best);
     const double target = last ? best : short_of_bound;
-    Probe p = probe(dt, R, o, factors, region_of_factor, proof, target, limits);
+    Probe p = probe(dt, R, o, factors, region_of_factor, proof, target, limits, model);
     out.listed = p.listed;
     if (!p.proven) return;
     if (p.better || last) {
@@ -308,7 +311,7 @@ std::optional<GraphModel> graph_model(const Mesh& dt, const Regions& R, Objectiv
 }  // namespace
 
 RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Candidates& cand, const RegionTerms& terms,
-                       const Mesh* start, const RegionDualLimits& limits) {
+                       const Mesh* start, const RegionDualLimits& limits, const RegionModel* model_of_R) {
   RegionDual out;
   std::optional<GraphModel> built = graph_model(dt, R, o, cand, terms, limits);
   if (!built) {
@@ -378,7 +381,7 @@ RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Cand
   const double v = found(state, fills);
   if (better(sense, v, best)) best = v;
   if (better(sense, *stop_at, best)) best = *stop_at;
-  if (!out.relaxed) prove(dt, R, o, factors, region_of_factor, proof, best, limits, out);
+  if (!out.relaxed) prove(dt, R, o, factors, region_of_factor, proof, best, limits, model_of_R, out);
   return out;
 }
 

@@ -112,6 +112,10 @@ struct Builder {
   std::vector<Source> src;
   std::vector<uint32_t> first_src;    // per region: its first source (its own terms)
   std::vector<int32_t> var_of_src;    // -1 for a source with one state
+  // Per region, whether its terms are built (null: every region's): an update
+  // rebuilds only the terms that read a changed region.
+  const std::vector<uint8_t>* only = nullptr;
+  bool built(uint32_t r) const { return !only || (*only)[r]; }
   uint64_t work = 0;
   // Reports every few thousand terms (a term may cost a vertex class test).
   void tick(double done, double total) {
@@ -137,6 +141,7 @@ struct Builder {
 
   void triangle_terms() {
     for (uint32_t r = 0; r < R.regions.size(); ++r) {
+      if (!built(r)) continue;
       const uint32_t i = first_src[r];
       for (uint32_t s = 0; s < states(i).size(); ++s)
         for (const Tri& t : states(i)[s]) add_unary(i, s, triangle_term(d, dt, t), s == 0);
@@ -154,7 +159,7 @@ struct Builder {
     }
     // Edges inside a region: both triangles are the region's.
     for (uint32_t r = 0; r < R.regions.size(); ++r)
-      for (uint32_t s = 0, i = first_src[r]; s < states(i).size(); ++s) {
+      for (uint32_t s = 0, i = first_src[r]; built(r) && s < states(i).size(); ++s) {
         tick(r, static_cast<double>(R.regions.size()));
         const auto& tris = states(i)[s];
         for (const Tri& t : tris)
@@ -171,7 +176,7 @@ struct Builder {
       const int32_t f = dt.halfedges[e];
       const uint32_t u = dt.origin(e), v = dt.target(e), r1 = R.region_of_triangle[e / 3];
       if (f < 0) {
-        if (interior_only(d.site)) continue;
+        if (interior_only(d.site) || !built(r1)) continue;
         const auto& s1 = states(first_src[r1]);
         for (uint32_t s = 0; s < s1.size(); ++s)
           add_unary(first_src[r1], s, edge_term(d, dt, u, v, apex_of(s1[s], u, v), kNoApex), s == 0);
@@ -179,6 +184,7 @@ struct Builder {
       }
       const uint32_t r2 = R.region_of_triangle[static_cast<uint32_t>(f) / 3];
       if (f < static_cast<int32_t>(e) || (r1 == r2 && !R.fixed[e])) continue;  // once; inside a region: done above
+      if (!built(r1) && !built(r2)) continue;
       const uint32_t i1 = source(r1, RegionTerms::edge_item(u, v)), i2 = source(r2, RegionTerms::edge_item(v, u));
       const auto &s1 = states(i1), &s2 = states(i2);
       if (i1 == i2) {  // both sides read from the same states
@@ -240,6 +246,7 @@ struct Builder {
       for (uint32_t i = st.tri_offset[v]; i < st.tri_offset[v + 1]; ++i) around.push_back(R.region_of_triangle[st.triangle[i]]);
       std::sort(around.begin(), around.end());
       around.erase(std::unique(around.begin(), around.end()), around.end());
+      if (only && std::none_of(around.begin(), around.end(), [&](uint32_t r) { return built(r); })) continue;
       for (uint32_t& r : around) r = source(r, RegionTerms::vertex_item(v));  // (regions become sources)
       // Fixed fans, and the regions with a choice with their fan classes.
       std::vector<Tri> fixed;
@@ -337,6 +344,52 @@ RegionModel region_model(const Mesh& dt, const Regions& R, Objective o, const Re
       g.partial.push_back(partial);
     }
   }
+  if (vertex_site(d.site)) b.vertex_terms(limits.max_factor, limits.memo);
+  else if (edge_site(d.site)) b.edge_terms();
+  else b.triangle_terms();
+  return M;
+}
+
+RegionModel update_region_model(RegionModel M, const Mesh& dt, const Regions& R, Objective o,
+                                const std::vector<uint8_t>& changed, const RegionModelLimits& limits,
+                                const Progress& progress) {
+  auto whole = [&] { return region_model(dt, R, o, limits, progress); };
+  // (Relaxed terms are counted, not listed: whether one is still relaxed is not known.)
+  if (M.graph.relaxed_terms || M.variable_of_region.size() != R.regions.size() ||
+      std::any_of(M.view_of_variable.begin(), M.view_of_variable.end(), [](uint32_t v) { return v != 0; }))
+    return whole();
+  const ObjectiveTerms& d = objective_terms(o, dt);
+  StateGraph& g = M.graph;
+  Builder b{dt, R, d, M, g, progress, {}, {}, {}};
+  std::vector<uint8_t> var_changed(g.domain.size(), 0);
+  for (uint32_t r = 0; r < R.regions.size(); ++r) {
+    const Region& region = R.regions[r];
+    const size_t n = region.states.size();
+    const bool partial = !region.complete;
+    const int32_t x = M.variable_of_region[r];
+    // Each region keeps its variable or its lack of one (a changed region left
+    // with one triangulation keeps its variable, of one state), and only changed
+    // ones change: else the numbering, or the constant, would move.
+    const bool kept_with_one = changed[r] && x >= 0 && n == 1;
+    if (((n >= 2 || partial) != (x >= 0) && !kept_with_one) || (changed[r] && x < 0) ||
+        (!changed[r] && x >= 0 && g.domain[x] != n))
+      return whole();
+    b.first_src.push_back(r);
+    b.src.push_back({r, &region.states, nullptr});
+    b.var_of_src.push_back(x);
+    if (!changed[r]) continue;
+    g.domain[x] = static_cast<uint32_t>(n);
+    g.unary[x].assign(n, 0.0);
+    g.unary_terms[x] = 0;
+    g.partial[x] = partial;
+    var_changed[x] = 1;
+  }
+  // The terms that read a changed region, built again: every factor over one
+  // goes, and each one's unary (its terms alone) starts over.
+  std::erase_if(g.factors, [&](const StateFactor& f) {
+    return std::any_of(f.scope.begin(), f.scope.end(), [&](uint32_t x) { return var_changed[x] != 0; });
+  });
+  b.only = &changed;
   if (vertex_site(d.site)) b.vertex_terms(limits.max_factor, limits.memo);
   else if (edge_site(d.site)) b.edge_terms();
   else b.triangle_terms();

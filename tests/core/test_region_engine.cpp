@@ -109,6 +109,62 @@ TEST_CASE("exact at order k equals brute force for every objective (k = 2, 3, 4)
   }
 }
 
+TEST_CASE("an updated model (some regions' triangulations changed) equals the model built whole") {
+  int updates = 0, factors = 0;
+  for_small_k_instances({2u, 3u, 4u}, 40, 13, [&](uint32_t k, uint64_t seed, const FirstOrder& fo, const KOrderStructure& structure) {
+    const Mesh& dt = fo.base;
+    for (const auto& oi : objectives()) {
+      const RegionEngine engine(dt, oi.objective, structure, k, RegionLimits{}, {});
+      // Every other region of three or more triangulations loses its last, and
+      // every third of those is marked incomplete; then the other way back.
+      Regions fewer = engine.R;
+      std::vector<uint8_t> changed(fewer.regions.size(), 0);
+      uint32_t picked = 0;
+      for (size_t r = 0; r < fewer.regions.size(); ++r) {
+        Region& g = fewer.regions[r];
+        if (g.states.size() < 2 || (++picked + seed) % 2) continue;
+        // (Down to one: it keeps its variable, of one state, when updated.)
+        g.states.resize(picked % 5 == 0 ? 1 : g.states.size() - 1);
+        if (picked % 3 == 0) g.complete = false, ++fewer.incomplete;
+        changed[r] = 1;
+      }
+      if (!picked) continue;
+      CAPTURE(k);
+      CAPTURE(seed);
+      CAPTURE(oi.id);
+      for (int way = 0; way < 2; ++way) {
+        const Regions& from = way ? fewer : engine.R;
+        const Regions& to = way ? engine.R : fewer;
+        const RegionModel whole = region_model(dt, to, oi.objective);
+        const RegionModel updated = update_region_model(region_model(dt, from, oi.objective), dt, to, oi.objective, changed);
+        const StateGraph &a = whole.graph, &b = updated.graph;
+        CHECK(a.relaxed_terms == b.relaxed_terms);
+        for (size_t r = 0; r < to.regions.size(); ++r) {
+          const int32_t x = whole.variable_of_region[r], y = updated.variable_of_region[r];
+          // (A variable of the same states, or of one state where a region kept it.)
+          if (x < 0 && y >= 0) CHECK(b.domain[static_cast<size_t>(y)] == 1);
+          if (x < 0) continue;
+          REQUIRE(y >= 0);
+          CHECK(a.domain[static_cast<size_t>(x)] == b.domain[static_cast<size_t>(y)]);
+          CHECK(a.partial[static_cast<size_t>(x)] == b.partial[static_cast<size_t>(y)]);
+        }
+        // Equal values on every assignment tried.
+        Rng rng(seed * 31 + k);
+        for (int t = 0; t < 20; ++t) {
+          std::vector<uint32_t> state(to.regions.size());
+          for (size_t r = 0; r < state.size(); ++r) state[r] = static_cast<uint32_t>(rng.below(to.regions[r].states.size()));
+          CHECK(close(evaluate_states(a, whole.variable_states(state)), evaluate_states(b, updated.variable_states(state))));
+        }
+        ++updates;
+        factors += static_cast<int>(a.factors.size());
+      }
+    }
+  });
+  MESSAGE(updates << " models updated, " << factors << " factors");
+  CHECK(updates > 200);
+  CHECK(factors > 500);
+}
+
 TEST_CASE("grids of non-square cells: every region at order k a quad, solved as at order 1, equals brute force") {
   // Cells of 1 x 1.3 and 1.3 x 1: the useful edges of orders 2 and 3 are the
   // cells' diagonals, so the k-OD triangulations are a diagonal per cell.

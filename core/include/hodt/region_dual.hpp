@@ -70,8 +70,11 @@ struct RegionDual {
 
 // start: a k-OD triangulation whose part in every region is listed (add_states_of),
 // its value the ascent's stop (it stops once that is proven optimal).
+// model_of_R (when given): a model of these regions, or of the same ones but for
+// some not listed whole (region_model.hpp): the proof's models are its updates.
 RegionDual region_dual(const Mesh& delaunay, const Regions& regions, Objective o, const Candidates& candidates,
-                       const RegionTerms& terms, const Mesh* start = nullptr, const RegionDualLimits& limits = {});
+                       const RegionTerms& terms, const Mesh* start = nullptr, const RegionDualLimits& limits = {},
+                       const RegionModel* model_of_R = nullptr);
 
 // Min-max objectives (terms combined by max, minimised) by thresholds: at a
 // threshold t, how many terms exceed t is a count over the same model (each
