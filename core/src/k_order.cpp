@@ -77,12 +77,20 @@ KOrderResult brute_force_k_order(const Mesh& dt, Objective o, uint32_t k, uint64
 // (when given: one flag per region).
 bool add_states_of(Regions& R, const Mesh& dt, const Mesh& m, std::vector<uint8_t>* changed = nullptr) {
   if (!R.incomplete) return false;
+  // (Only the incomplete regions' corners: a triangle in a region has its corners there.)
+  std::vector<uint8_t> corner(dt.num_vertices(), 0);
+  for (const Region& region : R.regions)
+    if (!region.complete)
+      for (uint32_t t : region.delaunay_triangles)
+        for (uint32_t i = 0; i < 3; ++i) corner[dt.triangles[3 * t + i]] = 1;
   std::unordered_map<uint64_t, uint32_t> delaunay_edge;  // directed edge -> halfedge
-  for (uint32_t e = 0; e < dt.triangles.size(); ++e) delaunay_edge[edge_key(dt.origin(e), dt.target(e))] = e;
+  for (uint32_t e = 0; e < dt.triangles.size(); ++e)
+    if (corner[dt.origin(e)]) delaunay_edge[edge_key(dt.origin(e), dt.target(e))] = e;
   const std::vector<int32_t> start = vertex_halfedges(dt);
   std::vector<std::vector<Tri>> part(R.regions.size());
   for (uint32_t t = 0; t < m.num_triangles(); ++t) {
     Tri c = base_triangle(m, t);
+    if (!corner[c[0]] || !corner[c[1]] || !corner[c[2]]) continue;
     const auto it = delaunay_edge.find(edge_key(c[0], c[1]));
     // A Delaunay edge: the Delaunay triangle on the same side. Else the segment's
     // first Delaunay triangle, which it splits (the region has it on both sides).
