@@ -224,13 +224,9 @@ constexpr uint32_t kRungDualSweeps = 150;
 // max-convex-edges 6923 with bound 6940 unglued; glued twice, 6939 proven.
 // A 20k-cell DEM at k = 5: 33881 with bound 34391; glued once, 34051 with
 // bound 34227.)
-// every_region (when given): set when each region not listed whole was read
-// through its graph (the regions' views could then add nothing: a 10k-point DEM
-// sample at k = 4 and 5, min-mixed-vertices, views 1215 and 584 for 1219 and
-// 960 from the graphs, 4.8 s and more each).
 std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEngine& engine, KOrderResult& r,
                                            std::string& how, const Progress& progress, uint32_t max_glue = 0,
-                                           uint32_t max_sweeps = kDualSweeps, bool* every_region = nullptr) {
+                                           uint32_t max_sweeps = kDualSweeps) {
   const Sense sense = info(o).sense;
   RegionDualLimits limits;
   limits.dual.progress = limits.dp.progress = progress;
@@ -319,9 +315,7 @@ std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEn
   };
   auto gap = [&] { return bound && better(sense, *bound, r.value); };
   RegionDual d;
-  const bool proven = read(engine.R, engine.terms, "", d);
-  if (every_region) *every_region = d.bound && !d.relaxed;
-  if (proven) return bound;
+  if (read(engine.R, engine.terms, "", d)) return bound;
   const Regions* parent = &engine.R;
   std::unique_ptr<Level> level;
   // (Each level costs a dual as large as the first: on hundreds of strips, a
@@ -352,9 +346,8 @@ std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEn
 // optimum, by pruning and the DP over what is left. It needs every region
 // listed whole (list_whole); else the regions not listed whole are read through
 // their fill graphs. Returns the bound (nothing if it does not apply).
-// every_region: as for bound_by_fill_graphs (set too when every region is listed whole).
 std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& engine, KOrderResult& r, std::string& how,
-                                    const std::string& refused, const Progress& progress, bool* every_region) {
+                                    const std::string& refused, const Progress& progress) {
   Regions& R = engine.R;
   RegionModel& model = engine.model;
   const Sense sense = info(o).sense;
@@ -362,8 +355,7 @@ std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& e
   DualLimits dual;
   dual.progress = progress;
   dual.max_rounds = 2;
-  if (R.incomplete) return bound_by_fill_graphs(dt, o, engine, r, how, progress, 2, kDualSweeps, every_region);
-  if (every_region) *every_region = true;
+  if (R.incomplete) return bound_by_fill_graphs(dt, o, engine, r, how, progress, 2);
   StateDpLimits dl;
   dl.progress = progress;
   // Two clusterings in turn: the ascent stops at a fixed point of its own in
@@ -637,9 +629,8 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // Counts: the dual before the views (it proves most instances on its own: a
   // 131k-cell DEM at k = 4, max-convex-vertices, where the views cost twice the
   // dual and proved nothing).
-  bool every_region = false;  // (read exactly by the dual: the views below could add nothing)
   if (provable && better(sense, bound, r.value)) {
-    if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, options.progress, &every_region)) {
+    if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, options.progress)) {
       if (r.optimal) return r;
       bound = tighter(sense, bound, *d);
     }
@@ -648,7 +639,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   ViewBoundLimits vl;
   vl.views.progress = vl.dp.progress = options.progress;
   vl.model = engine.model_limits;
-  const bool met = !better(sense, bound, r.value) || every_region;
+  const bool met = !better(sense, bound, r.value);
   if (const auto vb = met ? std::nullopt : view_bound(dt, R, o, cand, terms, engine.limits.max_region_triangles, r.value, vl)) {
     bound = tighter(sense, bound, vb->bound);
     if (vb->realised && !better(sense, r.value, vb->bound)) {
