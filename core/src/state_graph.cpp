@@ -635,8 +635,10 @@ double independent_bound(const StateGraph& g) {
 
 StateGraph relaxation(const StateGraph& g) {
   const Ops ops{g.combine, g.sense};
-  StateGraph h = g;
-  h.factors.clear();
+  StateGraph h;  // (g but its factors: those are copied once, below)
+  h.combine = g.combine, h.sense = g.sense, h.term_max = g.term_max;
+  h.domain = g.domain, h.unary = g.unary, h.unary_terms = g.unary_terms, h.partial = g.partial;
+  h.factors.reserve(g.factors.size());
   h.constant = ops.add(g.constant, unknown(g, g.relaxed_terms));
   h.relaxed_terms = 0;
   for (size_t x = 0; x < g.domain.size(); ++x) {
