@@ -7,7 +7,9 @@
 #include <set>
 
 #include "generators.hpp"
+#include "hodt/circle_count.hpp"
 #include "hodt/delaunay.hpp"
+#include "hodt/flip_search.hpp"
 #include "hodt/higher_order.hpp"
 #include "hodt/k_order.hpp"
 #include "hodt/points.hpp"
@@ -156,4 +158,50 @@ TEST_CASE("large instances: every objective answers, k-OD, never worse than firs
       if (s1.optimal && r.optimal) CHECK(!better(oi.sense, s1.value, r.value));
     }
   }
+}
+
+TEST_CASE("k-OD flips: valid, never worse, and a local optimum (no single k-OD flip improves)") {
+  // One pass of the definition over every edge: a strictly convex quad whose
+  // two new triangles are k-OD and whose flip strictly improves the objective
+  // (counts: the change of the whole equals that of the terms around the quad).
+  auto improving_flips = [](Mesh m, const Mesh& dt, uint32_t k, Objective o) {
+    CircleCounter circles(dt);
+    uint32_t found = 0;
+    const double value = evaluate(o, m);
+    for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
+      const int32_t f = m.halfedges[e];
+      if (f < static_cast<int32_t>(e)) continue;
+      const uint32_t a = m.origin(e), b = m.target(e), c = m.apex(e), x = m.apex(static_cast<uint32_t>(f));
+      const int sa = orient2d(m.point(c), m.point(x), m.point(a)), sb = orient2d(m.point(c), m.point(x), m.point(b));
+      if (sa == 0 || sb == 0 || sa == sb) continue;
+      if (circles.count(a, x, c, k) > k || circles.count(x, b, c, k) > k) continue;
+      flip_edge(m, e);
+      found += better(info(o).sense, evaluate(o, m), value);
+      flip_edge(m, e);
+    }
+    return found;
+  };
+  int runs = 0, flipped = 0;
+  for (uint64_t seed = 1; seed <= 40; ++seed)
+    for (uint32_t k : {1u, 2u, 3u}) {
+      const std::vector<double> p = seed % 3 == 0 ? grid_points(10, 12, seed, true) : seed % 3 == 1 ? dem_points(150, seed) : uniform_points(150, seed);
+      const Mesh dt = delaunay(validate_points(p).xyz);
+      for (Objective o : {Objective::MaxConvexVertices, Objective::MaxConvexEdges, Objective::MinMixedVertices,
+                          Objective::MinLocalMinima, Objective::MinLocalExtrema}) {
+        CAPTURE(seed);
+        CAPTURE(k);
+        const std::string id = info(o).id;
+        CAPTURE(id);
+        Mesh got = dt;
+        const uint32_t flips = improve_by_flips(got, dt, k, o);
+        CHECK(validate(got) == "");
+        CHECK(is_k_order(got, dt, k));
+        CHECK_FALSE(better(info(o).sense, evaluate(o, dt), evaluate(o, got)));
+        CHECK(improving_flips(got, dt, k, o) == 0);
+        ++runs;
+        flipped += flips > 0;
+      }
+    }
+  MESSAGE(runs << " local searches, " << flipped << " with flips");
+  CHECK(flipped > runs / 3);
 }
