@@ -91,8 +91,8 @@ uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o
   Local local{m, d, on_hull, memo, {}, {}, {}};
   uint32_t flips = 0;
   // An edge is tried again only when a kept flip touched its quad's corners (the
-  // terms it reads are theirs, its circles its quad's): the same flips as
-  // passes over every edge, in the same order, at a fraction of the tests.
+  // terms it reads are theirs, its circles its quad's: untouched, it would not
+  // flip now either), at a fraction of the tests of passes over every edge.
   // Edges are known by their ends (a flip, even undone, moves edges between
   // halfedge slots).
   std::unordered_set<uint64_t> settled;  // tried since their corners last changed

@@ -11,8 +11,9 @@
 
 namespace hodt {
 
-// Improves the k-OD triangulation m (same points as `delaunay`) in place; returns
-// the number of flips made. memo: vertex terms of the solve's stars (for this
+// Improves the k-OD triangulation m (same points as `delaunay`) in place, to a
+// local optimum (no single such flip improves, unless 30 passes did not reach
+// one); returns the number of flips made. memo: vertex terms of the solve's stars (for this
 // objective; none within a domain: vertex_term_memo.hpp).
 uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o, const Progress& progress = {},
                           VertexTermMemo* memo = nullptr);
