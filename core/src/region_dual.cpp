@@ -138,13 +138,14 @@ struct Probe {
   uint64_t listed = 0;
 };
 
-Probe probe(const Mesh& dt, const Regions& R, Objective o, const std::vector<RegionFactor>& factors,
-            const std::vector<uint32_t>& region_of_factor, const DualProof& proof, double target,
-            const RegionDualLimits& limits, const RegionModel* model) {
+// listed: the regions, those read through graphs listed anew here; model: its
+// model from the last target (or the caller's, or nothing), updated here.
+Probe probe(const Mesh& dt, Regions& listed, Objective o, const std::vector<RegionFactor>& factors,
+            const std::vector<uint32_t>& region_of_factor, const std::vector<uint8_t>& changed, const DualProof& proof,
+            double target, const RegionDualLimits& limits, std::optional<RegionModel>& model) {
   Probe out;
   const Sense sense = info(o).sense;
   const double ub = (sense == Sense::Min ? 1.0 : -1.0) * target;  // (min form)
-  Regions listed = R;
   for (size_t i = 0; i < region_of_factor.size(); ++i) {
     const uint32_t r = region_of_factor[i];
     const RegionFactor& f = factors[r];
@@ -171,15 +172,13 @@ Probe probe(const Mesh& dt, const Regions& R, Objective o, const std::vector<Reg
     listed.regions[r].complete = true;
   }
   listed.incomplete = 0;
-  std::vector<uint8_t> changed(R.regions.size(), 0);
-  for (uint32_t r : region_of_factor) changed[r] = 1;
-  const RegionModel whole = model ? update_region_model(*model, dt, listed, o, changed, limits.model, limits.dual.progress)
-                                  : region_model(dt, listed, o, limits.model, limits.dual.progress);
-  const DualProof again(whole.graph, limits.dual, target);
+  model = model ? update_region_model(std::move(*model), dt, listed, o, changed, limits.model, limits.dual.progress)
+                : region_model(dt, listed, o, limits.model, limits.dual.progress);
+  const DualProof again(model->graph, limits.dual, target);
   if (!again.applies()) return out;
   const DualProof::Proof p = again.prove(target, limits.dp);
   out.proven = p.proven;
-  if (p.proven && p.better) out.better = listed.triangulation(dt, whole.region_states(*p.better));
+  if (p.proven && p.better) out.better = listed.triangulation(dt, model->region_states(*p.better));
   return out;
 }
 
@@ -189,16 +188,22 @@ Probe probe(const Mesh& dt, const Regions& R, Objective o, const std::vector<Reg
 // optimum found is one. Then the best at hand itself. (A 10,000-point DEM
 // sample at k = 4, max-convex-edges: the bound met by no triangulation found,
 // the proof of 20021 did not fit its lists, of 20026 did, and found 20027.)
+// The targets share one copy of the regions and one model, updated in turn.
 void prove(const Mesh& dt, const Regions& R, Objective o, const std::vector<RegionFactor>& factors,
            const std::vector<uint32_t>& region_of_factor, const DualProof& proof, double best,
-           const RegionDualLimits& limits, const RegionModel* model, RegionDual& out) {
+           const RegionDualLimits& limits, const RegionModel* model_of_R, RegionDual& out) {
   const Sense sense = info(o).sense;
   constexpr int kShortRounds = 3;
+  Regions listed = R;
+  std::optional<RegionModel> model;
+  if (model_of_R) model = *model_of_R;
+  std::vector<uint8_t> changed(R.regions.size(), 0);
+  for (uint32_t r : region_of_factor) changed[r] = 1;
   for (int round = 0;; ++round) {
     const double short_of_bound = sense == Sense::Min ? *out.bound + 1 : *out.bound - 1;
     const bool last = round >= kShortRounds || !better(sense, short_of_bound, best);
     const double target = last ? best : short_of_bound;
-    Probe p = probe(dt, R, o, factors, region_of_factor, proof, target, limits, model);
+    Probe p = probe(dt, listed, o, factors, region_of_factor, changed, proof, target, limits, model);
     out.listed = p.listed;
     if (!p.proven) return;
     if (p.better || last) {
