@@ -14,6 +14,25 @@ namespace hodt {
 
 namespace {
 
+// Calls visit(h) for every halfedge h leaving v, counterclockwise from the
+// boundary (if v is on one), given one of them; returns the last (its
+// previous halfedge has no twin when v's star is open).
+template <class Visit>
+uint32_t for_star(const Mesh& m, uint32_t h, Visit visit) {
+  const uint32_t start = h;
+  while (m.halfedges[h] >= 0) {  // clockwise to the boundary, if any
+    const uint32_t g = next_halfedge(static_cast<uint32_t>(m.halfedges[h]));
+    if (g == start) break;
+    h = g;
+  }
+  for (const uint32_t first = h;;) {
+    visit(h);
+    const int32_t t = m.halfedges[prev_halfedge(h)];
+    if (t < 0 || static_cast<uint32_t>(t) == first) return h;
+    h = static_cast<uint32_t>(t);
+  }
+}
+
 struct Local {
   const Mesh& m;
   const ObjectiveTerms& d;
@@ -27,27 +46,13 @@ struct Local {
   // The vertex term of v, from an outgoing halfedge h.
   double vertex(uint32_t v, uint32_t h) {
     if (interior_only(d.site) && on_hull[v]) return 0;
-    // Clockwise to the boundary (if any), then counterclockwise through the star.
-    const uint32_t start = h;
-    while (m.halfedges[h] >= 0) {
-      const uint32_t g = next_halfedge(static_cast<uint32_t>(m.halfedges[h]));
-      if (g == start) break;
-      h = g;
-    }
-    const uint32_t first = h;
     nb.clear();
     tris.clear();
-    for (;;) {
-      nb.push_back(m.target(h));
-      tris.push_back({m.origin(h), m.target(h), m.apex(h)});
-      const int32_t t = m.halfedges[prev_halfedge(h)];
-      if (t < 0) {
-        nb.push_back(m.apex(h));
-        break;
-      }
-      h = static_cast<uint32_t>(t);
-      if (h == first) break;
-    }
+    const uint32_t last = for_star(m, h, [&](uint32_t g) {
+      nb.push_back(m.target(g));
+      tris.push_back({m.origin(g), m.target(g), m.apex(g)});
+    });
+    if (m.halfedges[prev_halfedge(last)] < 0) nb.push_back(m.apex(last));  // (an open star's last neighbour)
     auto eval = [&] { return vertex_term(d, m, Star(v, nb, tris)); };
     if (!memo) return eval();
     sorted = nb;
@@ -97,16 +102,10 @@ uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o
   // halfedge slots).
   std::unordered_set<uint64_t> settled;  // tried since their corners last changed
   auto key = [&](uint32_t h) { return edge_key(std::min(m.origin(h), m.target(h)), std::max(m.origin(h), m.target(h))); };
-  auto touch = [&](uint32_t v, uint32_t h) {  // every triangle around v, from its outgoing halfedge h
-    for (int way = 0; way < 2; ++way)
-      for (uint32_t g = h;;) {
-        const uint32_t t = g / 3;
-        for (uint32_t i = 0; i < 3; ++i) settled.erase(key(3 * t + i));
-        const int32_t twin = way ? m.halfedges[g] : m.halfedges[prev_halfedge(g)];
-        if (twin < 0) break;
-        g = way ? next_halfedge(static_cast<uint32_t>(twin)) : static_cast<uint32_t>(twin);
-        if (g == h) break;
-      }
+  auto touch = [&](uint32_t h) {  // every triangle around h's origin
+    for_star(m, h, [&](uint32_t g) {
+      for (uint32_t i = 0; i < 3; ++i) settled.erase(key(3 * (g / 3) + i));
+    });
   };
   for (int pass = 0; pass < 30; ++pass) {
     if (progress && !progress(pass, 30)) throw Cancelled();
@@ -129,7 +128,7 @@ uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o
         changed = true, ++flips;
         // (The quad's corners: the new diagonal's ends and its two apexes.)
         const uint32_t g = static_cast<uint32_t>(m.halfedges[e]);
-        for (uint32_t h : {e, next_halfedge(e), prev_halfedge(e), prev_halfedge(g)}) touch(m.origin(h), h);
+        for (uint32_t h : {e, next_halfedge(e), prev_halfedge(e), prev_halfedge(g)}) touch(h);
       } else {
         flip_edge(m, e);  // undo
       }
