@@ -124,12 +124,21 @@ std::optional<std::vector<double>> FillGraph::through(const std::vector<std::vec
   return out;
 }
 
+namespace {
+
+// Per node, its paths to a complete fill over kept arcs (counted up to 1e18).
+std::vector<double> kept_paths(const FillGraph& g, const std::vector<uint8_t>& kept) {
+  std::vector<double> paths(g.nodes, 0);
+  for (uint32_t n : g.complete) paths[n] = 1;
+  for (size_t a = g.arcs.size(); a-- > 0;)
+    if (kept[a]) paths[g.arcs[a].parent] = std::min(paths[g.arcs[a].parent] + paths[g.arcs[a].child], 1e18);
+  return paths;
+}
+
+}  // namespace
+
 std::optional<std::vector<std::vector<Tri>>> FillGraph::fills(const std::vector<uint8_t>& kept, uint64_t max_fills) const {
-  // Paths to a complete fill over kept arcs, counted from each node (capped).
-  std::vector<double> paths(nodes, 0);
-  for (uint32_t n : complete) paths[n] = 1;
-  for (size_t a = arcs.size(); a-- > 0;)
-    if (kept[a]) paths[arcs[a].parent] = std::min(paths[arcs[a].parent] + paths[arcs[a].child], 1e18);
+  const std::vector<double> paths = kept_paths(*this, kept);
   if (paths[0] > static_cast<double>(max_fills)) return std::nullopt;
   // Arcs out of each node (arcs are sorted by parent).
   std::vector<uint32_t> first(nodes + 1, 0);
@@ -162,25 +171,23 @@ std::optional<std::vector<std::vector<Tri>>> FillGraph::best_by_entries(const st
   struct Label {
     uint32_t prev, arc;  // the label it extends (UINT32_MAX: the empty fill), the arc taken
     double cost;
-    std::vector<uint32_t> key;
+    const std::vector<uint32_t>* key;  // (held by `index`: its elements stay put)
   };
   // (Only arcs on a kept path to a complete fill.)
-  std::vector<uint8_t> ends(nodes, 0);
-  for (uint32_t n : complete) ends[n] = 1;
-  for (size_t a = arcs.size(); a-- > 0;)
-    if (kept[a]) ends[arcs[a].parent] |= ends[arcs[a].child];
-  std::vector<Label> labels{{UINT32_MAX, UINT32_MAX, 0.0, {0u}}};
+  const std::vector<double> ends = kept_paths(*this, kept);
   std::unordered_map<std::vector<uint32_t>, uint32_t, WordsHash> index{{{0u}, 0u}};
+  std::vector<Label> labels{{UINT32_MAX, UINT32_MAX, 0.0, &index.begin()->first}};
   std::vector<std::vector<uint32_t>> at(nodes);
   at[0].push_back(0);
   std::vector<uint32_t> key;
   std::vector<std::pair<uint32_t, uint32_t>> pairs;
   for (uint32_t a = 0; a < arcs.size(); ++a) {
     const Arc& arc = arcs[a];
-    for (size_t i = 0; kept[a] && ends[arc.child] && i < at[arc.parent].size(); ++i) {
+    for (size_t i = 0; kept[a] && ends[arc.child] > 0 && i < at[arc.parent].size(); ++i) {
       const uint32_t l = at[arc.parent][i];
+      const std::vector<uint32_t>& from = *labels[l].key;
       pairs.clear();
-      for (size_t w = 1; w < labels[l].key.size(); w += 2) pairs.push_back({labels[l].key[w], labels[l].key[w + 1]});
+      for (size_t w = 1; w < from.size(); w += 2) pairs.push_back({from[w], from[w + 1]});
       pairs.insert(pairs.end(), taken.begin() + arc.first_take, taken.begin() + arc.first_take + arc.takes);
       std::sort(pairs.begin(), pairs.end());
       key.assign(1, arc.child);
@@ -189,7 +196,7 @@ std::optional<std::vector<std::vector<Tri>>> FillGraph::best_by_entries(const st
       const auto [it, fresh] = index.try_emplace(key, static_cast<uint32_t>(labels.size()));
       if (fresh) {
         if (labels.size() >= max_labels) return std::nullopt;
-        labels.push_back({l, a, cost, key});
+        labels.push_back({l, a, cost, &it->first});
         at[arc.child].push_back(it->second);
       } else if (cost < labels[it->second].cost) {
         labels[it->second].prev = l, labels[it->second].arc = a, labels[it->second].cost = cost;
@@ -202,7 +209,7 @@ std::optional<std::vector<std::vector<Tri>>> FillGraph::best_by_entries(const st
   std::unordered_map<std::vector<uint32_t>, uint32_t, WordsHash> best;
   for (uint32_t n : complete)
     for (uint32_t l : at[n]) {
-      key.assign(labels[l].key.begin() + 1, labels[l].key.end());
+      key.assign(labels[l].key->begin() + 1, labels[l].key->end());
       const auto [it, fresh] = best.try_emplace(key, l);
       if (!fresh && labels[l].cost < labels[it->second].cost) it->second = l;
     }
