@@ -200,7 +200,8 @@ describe('CLI (npm bin)', () => {
 
 describe('npx hodt demo', () => {
   it('serves the teaching demo from the installed package: it renders, solves, and a copied link reproduces it', async () => {
-    const child = spawn('npx', ['--no', 'hodt', 'demo', '--port', '0', '--no-open'], { cwd: project.dir, env: { ...process.env, NODE_OPTIONS: '' } });
+    // (Its own process group: npx does not pass a signal on to the server it starts.)
+    const child = spawn('npx', ['--no', 'hodt', 'demo', '--port', '0', '--no-open'], { cwd: project.dir, env: { ...process.env, NODE_OPTIONS: '' }, detached: true });
     try {
       const url = await new Promise<string>((resolve, reject) => {
         let out = '';
@@ -242,7 +243,7 @@ describe('npx hodt demo', () => {
       await first.page.close();
       await second.page.close();
     } finally {
-      child.kill('SIGINT');
+      process.kill(-child.pid!, 'SIGINT');
     }
   }, 120_000);
 
