@@ -253,6 +253,7 @@ std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEn
     if (d.optimum) {
       r.value = evaluate(o, *d.optimum);
       r.triangulation = std::move(*d.optimum);
+      if (r.value != d.optimum_value) throw std::logic_error("order k: the fill graphs' model value differs from the triangulation's");
     }
     r.optimal = true;
     r.bound.reset();

@@ -135,6 +135,7 @@ struct Descent {
 struct Probe {
   bool proven = false;
   std::optional<Mesh> better;
+  double better_value = 0;  // (the model's)
   uint64_t listed = 0;
 };
 
@@ -178,7 +179,10 @@ Probe probe(const Mesh& dt, Regions& listed, Objective o, const std::vector<Regi
   if (!again.applies()) return out;
   const DualProof::Proof p = again.prove(target, limits.dp);
   out.proven = p.proven;
-  if (p.proven && p.better) out.better = listed.triangulation(dt, model->region_states(*p.better));
+  if (p.proven && p.better) {
+    out.better = listed.triangulation(dt, model->region_states(*p.better));
+    out.better_value = p.better_value;
+  }
   return out;
 }
 
@@ -209,6 +213,7 @@ void prove(const Mesh& dt, const Regions& R, Objective o, const std::vector<Regi
     if (p.better || last) {
       out.proven = true;
       out.optimum = std::move(p.better);
+      out.optimum_value = p.better_value;
       return;
     }
     out.bound = target;  // (no triangulation beats it)

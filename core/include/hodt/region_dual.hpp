@@ -61,6 +61,7 @@ struct RegionDual {
   // dual proof (its pruning and exact DP) over the model, now whole.
   bool proven = false;           // no k-OD triangulation beats the best at hand ...
   std::optional<Mesh> optimum;   // ... or this one, which does (then optimal)
+  double optimum_value = 0;      // (its value in the model: the caller checks it against the mesh)
   uint64_t listed = 0;           // fills the proof listed
   uint32_t tightened = 0;        // units its targets short of the ascent's bound took off it
   uint32_t graphs = 0;    // regions read through their fill graph
