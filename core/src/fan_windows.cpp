@@ -116,6 +116,8 @@ std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, 
   FanTrees t;
   FanLister lister(dt, cand, t, false);
   uint64_t listed_nodes = 0;
+  const uint64_t budget = std::max(limits.max_nodes, limits.max_nodes_per_point * n);
+  double gained = 0;  // (sign form)
   std::vector<int32_t> slot(n, -1);  // a vertex's place in the window
   std::vector<uint32_t> scratch, fan;
   // What the current rings say: v's fan must say this of u (u outside the window).
@@ -131,7 +133,7 @@ std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, 
       keyed[v] = {cell(1) << 32 | cell(0), v};
     }
     std::sort(keyed.begin(), keyed.end());
-    for (size_t i = 0; i < n && listed_nodes < limits.max_nodes;) {
+    for (size_t i = 0; i < n && listed_nodes < budget && gained < limits.enough;) {
       Window w;
       size_t j = i;
       for (; j < n && keyed[j].first == keyed[i].first; ++j) w.member.push_back(keyed[j].second);
@@ -174,7 +176,11 @@ std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, 
       // (counts: a gain of 1 at least; lengths: beyond the rounding of their sums)
       const double min_gain = integral ? 0.5 : 1e-9 * std::fabs(current);
       if (choice && w.best(current, min_gain, limits.max_steps)) {
-        for (size_t a = 0; a < m; ++a) ring[w.member[a]] = w.rings[a][w.found[a]];
+        for (size_t a = 0; a < m; ++a) {
+          ring[w.member[a]] = w.rings[a][w.found[a]];
+          gained += w.value[a][w.found[a]];
+        }
+        gained -= current;
         improved = true;
       }
       for (uint32_t v : w.member) slot[v] = -1;

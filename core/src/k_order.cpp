@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <unordered_set>
 
@@ -442,6 +443,7 @@ double by_stars(const Mesh& dt, Objective o, uint32_t k, const Candidates& cand,
   WindowLimits windows;
   windows.progress = progress;
   for (int round = 0; round < 4 && better(sense, bound, r.value); ++round) {
+    windows.enough = std::fabs(bound - r.value);  // (then the value meets the bound)
     const auto improved = improve_by_windows(dt, o, cand, r.triangulation, windows);
     if (!improved || !adopt(*improved)) break;
     windowed = true;
