@@ -31,7 +31,7 @@ struct WindowLimits {
   // DEMs (2,000 to 5,300 nodes per point on the volcano, a 10,000-point sample
   // and a crop of a real DEM). The 131,753-point DEM at k = 8, max-convex-vertices
   // from the Delaunay triangulation: 44,433 with 16 million nodes (3 s), 71,767
-  // with all (about 500 million, 81 s).
+  // with all (81 s).
   uint64_t max_nodes = 16'000'000;
   uint64_t max_nodes_per_point = 8'192;
   // Stop once the windows improved the start by this much (the objective's
