@@ -42,6 +42,7 @@ struct Window {
   std::vector<std::vector<std::vector<uint32_t>>> rings;  // per member, its fans, best first
   std::vector<std::vector<double>> value;                 // the same order
   std::vector<uint32_t> found;                            // per member, the fan index of the best found
+  double found_value = 0;                                 // its value (the sum of the members')
 
   // Better than `current` by more than min_gain.
   bool best(double current, double min_gain, uint64_t max_steps) {
@@ -60,7 +61,7 @@ struct Window {
     };
     auto dfs = [&](auto& self, size_t a, double sum) -> void {
       if (a == m) {
-        if (sum > best) best = sum, found = pick, improved = true;
+        if (sum > best) best = found_value = sum, found = pick, improved = true;
         return;
       }
       double rest = 0;
@@ -176,11 +177,8 @@ std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, 
       // (counts: a gain of 1 at least; lengths: beyond the rounding of their sums)
       const double min_gain = integral ? 0.5 : 1e-9 * std::fabs(current);
       if (choice && w.best(current, min_gain, limits.max_steps)) {
-        for (size_t a = 0; a < m; ++a) {
-          ring[w.member[a]] = w.rings[a][w.found[a]];
-          gained += w.value[a][w.found[a]];
-        }
-        gained -= current;
+        for (size_t a = 0; a < m; ++a) ring[w.member[a]] = w.rings[a][w.found[a]];
+        gained += w.found_value - current;
         improved = true;
       }
       for (uint32_t v : w.member) slot[v] = -1;
