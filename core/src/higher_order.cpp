@@ -68,10 +68,11 @@ struct Walker {
   }
 };
 
-// Is the triangle a, b, s (counterclockwise) k-OD, with s the smallest cap on its
-// side of ab? Walks the points inside its circle; a point inside on s's side of ab
-// means s was not the smallest cap: move to it and look again.
-bool cap_is_k_order(const Mesh& m, CircleCounter& circles, uint32_t a, uint32_t b, uint32_t s, uint32_t k) {
+// The points in the circle through a, b and the smallest cap on s's side of ab
+// (a, b, s counterclockwise), or k + 1 if over k: walks the points inside the
+// circle through s; a point inside on s's side of ab means s was not the smallest
+// cap: move to it and look again. (Within k the walk sees every point inside.)
+uint32_t cap_order(const Mesh& m, CircleCounter& circles, uint32_t a, uint32_t b, uint32_t s, uint32_t k) {
   for (;;) {
     const uint32_t count = circles.count(a, b, s, k);
     uint32_t better = s;
@@ -79,42 +80,57 @@ bool cap_is_k_order(const Mesh& m, CircleCounter& circles, uint32_t a, uint32_t 
       if (orient2d(m.point(a), m.point(b), m.point(w)) > 0 &&
           (better == s || in_circle(m.point(a), m.point(b), m.point(better), m.point(w))))
         better = w;
-    if (better == s) return count <= k;
+    if (better == s) return std::min(count, k + 1);
     s = better;
   }
 }
 
 }  // namespace
 
-std::vector<std::pair<uint32_t, uint32_t>> useful_edges(const Mesh& m, uint32_t k, const Progress& progress) {
+UsefulEdges useful_edges_by_order(const Mesh& m, uint32_t k, const Progress& progress) {
   const uint32_t n = m.num_vertices();
   const std::vector<int32_t> start = vertex_halfedges(m);
   CircleCounter circles(m);
-  std::vector<std::pair<uint32_t, uint32_t>> out;
+  std::vector<std::pair<std::pair<uint32_t, uint32_t>, uint32_t>> out;  // (edge, order)
   for (uint32_t u = 0; u < n; ++u) {
     if (progress && (u & 255) == 0 && !progress(u, n)) throw Cancelled();
     Walker walk{m, u, k == 0 ? 0 : 2 * k - 1, {}, {}, {}};
     uint32_t e = static_cast<uint32_t>(start[u]);
     for (;;) {  // every triangle around u: u, a, b counterclockwise
       const uint32_t a = m.target(e), b = m.apex(e);
-      if (a > u) out.push_back({u, a});  // a Delaunay edge: useful for every k >= 0 (found from the smaller end)
+      if (a > u) out.push_back({{u, a}, 0});  // a Delaunay edge: useful for every k >= 0 (found from the smaller end)
       walk.cross(next_halfedge(e), a, b);
       const int32_t t = m.halfedges[prev_halfedge(e)];
       if (t < 0) {
-        if (b > u) out.push_back({u, b});
+        if (b > u) out.push_back({{u, b}, 0});
         break;
       }
       e = static_cast<uint32_t>(t);
       if (e == static_cast<uint32_t>(start[u])) break;
     }
     // Lemma 1 on each side (both sides have points: uw crosses edges).
-    for (const Walker::Found& f : walk.found)
-      if (cap_is_k_order(m, circles, u, f.w, f.left_cap, k) && cap_is_k_order(m, circles, f.w, u, f.right_cap, k))
-        out.push_back({u, f.w});
+    for (const Walker::Found& f : walk.found) {
+      const uint32_t left = cap_order(m, circles, u, f.w, f.left_cap, k);
+      const uint32_t order = left > k ? left : std::max(left, cap_order(m, circles, f.w, u, f.right_cap, k));
+      if (order <= k) out.push_back({{u, f.w}, order});
+    }
   }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
+  std::sort(out.begin(), out.end());  // (an edge found twice: its order once, the least first)
+  UsefulEdges r;
+  for (const auto& [edge, order] : out)
+    if (r.edges.empty() || r.edges.back() != edge) r.edges.push_back(edge), r.order.push_back(static_cast<uint8_t>(order));
+  return r;
+}
+
+std::vector<std::pair<uint32_t, uint32_t>> UsefulEdges::at(uint32_t j) const {
+  std::vector<std::pair<uint32_t, uint32_t>> r;
+  for (size_t i = 0; i < edges.size(); ++i)
+    if (order[i] <= j) r.push_back(edges[i]);
+  return r;
+}
+
+std::vector<std::pair<uint32_t, uint32_t>> useful_edges(const Mesh& m, uint32_t k, const Progress& progress) {
+  return useful_edges_by_order(m, k, progress).edges;
 }
 
 std::vector<std::array<uint32_t, 3>> useful_triangles(const Mesh& m, uint32_t k,

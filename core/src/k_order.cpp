@@ -456,7 +456,8 @@ double by_stars(const Mesh& dt, Objective o, uint32_t k, const Candidates& cand,
 // bounded: whether a heuristic answer needs its bound (the ladder's lower
 // orders serve only as starts).
 KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes,
-                           FirstOrderStart& first_order, VertexTermMemo* memo, bool bounded = true) {
+                           FirstOrderStart& first_order, VertexTermMemo* memo, bool bounded = true,
+                           const UsefulEdges* above = nullptr) {
   const Mesh& dt = fo.base;
   if (options.method == Method::BruteForce) {
     return brute_force_k_order(dt, o, k, max_nodes, options.progress);
@@ -475,7 +476,10 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     r.details = "the first order optimum meets the bound that every triangulation of the points meets";
     return r;
   }
-  std::vector<std::pair<uint32_t, uint32_t>> useful = useful_edges(dt, k, options.progress);
+  // (The ladder's rungs read their useful edges from the top order's.)
+  const UsefulEdges by_order = above ? UsefulEdges{} : useful_edges_by_order(dt, k, options.progress);
+  const UsefulEdges& orders = above ? *above : by_order;
+  std::vector<std::pair<uint32_t, uint32_t>> useful = orders.at(k);
   Regions skeleton = k_order_skeleton(dt, k, useful, options.progress);
   if (k >= 2)  // (order 1 stays on the general engine: solve() takes the first order paths itself)
     if (auto quads = solve_as_quads(dt, o, skeleton, options, first_order)) return *quads;
@@ -493,7 +497,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     if (lower || k < 3) return;
     SolveOptions lower_options = options;
     lower_options.method = Method::Auto;
-    lower = solve_regions(fo, o, k <= 8 ? k - 1 : k / 2, lower_options, max_nodes, first_order, memo, false);
+    lower = solve_regions(fo, o, k <= 8 ? k - 1 : k / 2, lower_options, max_nodes, first_order, memo, false, &orders);
   };
   if (k >= 5) solve_lower();
   RegionLimits budgets;

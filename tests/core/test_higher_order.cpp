@@ -85,6 +85,14 @@ TEST_CASE("useful k-OD edges and triangles equal a brute force on 500 instances 
           }
       CHECK(useful_triangles(dt, k, edges).size() == expect);
     }
+    // The orders at which edges become useful give every lower order's edges.
+    const UsefulEdges by_order = useful_edges_by_order(dt, 6);
+    for (uint32_t j = 0; j <= 6; ++j) {
+      const auto at = by_order.at(j);
+      const auto brute = brute_useful_edges(dt, j);
+      CHECK(std::set<std::pair<uint32_t, uint32_t>>(at.begin(), at.end()) == brute);
+      CHECK(at.size() == brute.size());
+    }
     // k = 1: the Delaunay edges and the flipped diagonals.
     const FirstOrder fo = first_order(dt);
     CHECK(useful_edges(dt, 1).size() == (dt.triangles.size() + dt.hull.size()) / 2 + fo.num_quads());

@@ -25,6 +25,16 @@ namespace hodt {
 // progress (if given) is called every few hundred vertices or edges; false cancels.
 std::vector<std::pair<uint32_t, uint32_t>> useful_edges(const Mesh& delaunay, uint32_t k, const Progress& progress = {});
 
+// The same with the least order at which each edge is useful (0: the Delaunay
+// edges): Lemma 1's caps do not depend on k, so the useful j-OD edges for any
+// j <= k are those of order at most j (the ladder's lower orders read them so).
+struct UsefulEdges {
+  std::vector<std::pair<uint32_t, uint32_t>> edges;  // sorted, u < v
+  std::vector<uint8_t> order;                        // per edge
+  std::vector<std::pair<uint32_t, uint32_t>> at(uint32_t j) const;
+};
+UsefulEdges useful_edges_by_order(const Mesh& delaunay, uint32_t k, const Progress& progress = {});
+
 // k-OD triangles all of whose edges are useful k-OD edges, as sorted triples.
 std::vector<std::array<uint32_t, 3>> useful_triangles(const Mesh& delaunay, uint32_t k,
                                                       const std::vector<std::pair<uint32_t, uint32_t>>& edges,
