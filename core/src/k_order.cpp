@@ -414,15 +414,6 @@ std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& e
 double by_stars(const Mesh& dt, Objective o, uint32_t k, const Candidates& cand, KOrderResult& r, double bound,
                 std::string& how, const Progress& progress, VertexTermMemo* memo) {
   const Sense sense = info(o).sense;
-  StarBoundLimits stars;
-  stars.progress = progress;
-  stars.decode = true;
-  stars.known_bound = bound;
-  const auto b = star_bound(dt, o, cand, r.value, stars);
-  if (b && better(sense, bound, b->bound)) {
-    bound = b->bound;
-    how += ", bound from the vertices' stars";
-  }
   bool decoded = false, windowed = false;
   auto adopt = [&](const std::vector<Tri>& tris) {
     Mesh m = mesh_of(dt.coords, tris);
@@ -432,14 +423,28 @@ double by_stars(const Mesh& dt, Objective o, uint32_t k, const Candidates& cand,
     r.triangulation = std::move(m), r.value = v;
     return true;
   };
-  if (b && b->decoder) {
-    for (const std::vector<Tri>& tris : b->decoder->sweeps()) decoded = adopt(tris) || decoded;
+  auto decode = [&](const StarDecoder& d) {
+    for (const std::vector<Tri>& tris : d.sweeps()) decoded = adopt(tris) || decoded;
     for (int round = 0; round < 8 && better(sense, bound, r.value); ++round) {
-      const auto repaired = b->decoder->repair(r.triangulation);
+      const auto repaired = d.repair(r.triangulation);
       if (!repaired || !adopt(*repaired)) break;
       decoded = true;
     }
+  };
+  StarBoundLimits stars;
+  stars.progress = progress;
+  stars.decode = true;
+  stars.known_bound = bound;
+  // (Tiles of many, as the 131k-cell DEM at k = 8 has, decode one by one, the
+  // rest held at the best at hand.)
+  stars.start = &r.triangulation;
+  stars.decoded_tile = decode;
+  const auto b = star_bound(dt, o, cand, r.value, stars);
+  if (b && better(sense, bound, b->bound)) {
+    bound = b->bound;
+    how += ", bound from the vertices' stars";
   }
+  if (b && b->decoder) decode(*b->decoder);
   WindowLimits windows;
   windows.progress = progress;
   for (int round = 0; round < 4 && better(sense, bound, r.value); ++round) {

@@ -19,6 +19,46 @@ constexpr int64_t kUnit = 4096;  // multipliers in units of 2^-12: every sum exa
 
 int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
 
+// Each vertex's fan in a triangulation as a path the way FanLister lists it:
+// round an interior vertex from its smallest neighbour back to it; at a hull
+// vertex from the next hull vertex round to the previous.
+class MeshFans {
+ public:
+  MeshFans(const Mesh& m, const Mesh& dt) : first_(m.num_vertices() + 1, 0), hull_at_(m.num_vertices(), -1), dt_(dt) {
+    const uint32_t nt = m.num_triangles();
+    for (uint32_t i = 0; i < 3 * nt; ++i) ++first_[m.triangles[i] + 1];
+    for (size_t v = 0; v + 1 < first_.size(); ++v) first_[v + 1] += first_[v];
+    steps_.resize(3 * size_t{nt});
+    std::vector<uint32_t> at(first_.begin(), first_.end() - 1);
+    for (uint32_t t = 0; t < nt; ++t)
+      for (int j = 0; j < 3; ++j)  // (counterclockwise: after a comes b round v)
+        steps_[at[m.triangles[3 * t + j]]++] = {m.triangles[3 * t + (j + 1) % 3], m.triangles[3 * t + (j + 2) % 3]};
+    for (size_t i = 0; i < dt.hull.size(); ++i) hull_at_[dt.hull[i]] = static_cast<int64_t>(i);
+  }
+  // Empty when v's triangles are not one fan.
+  void path(uint32_t v, std::vector<uint32_t>& out) const {
+    out.clear();
+    const auto* b = steps_.data() + first_[v];
+    const auto* e = steps_.data() + first_[v + 1];
+    if (b == e) return;
+    const size_t h = dt_.hull.size();
+    uint32_t from = hull_at_[v] < 0 ? std::min_element(b, e)->first : dt_.hull[(static_cast<size_t>(hull_at_[v]) + 1) % h];
+    out.push_back(from);
+    for (size_t n = 0; n < static_cast<size_t>(e - b); ++n) {
+      const auto* s = std::find_if(b, e, [&](const auto& p) { return p.first == from; });
+      if (s == e) return out.clear();
+      out.push_back(from = s->second);
+    }
+    if (out.back() != (hull_at_[v] < 0 ? out.front() : dt_.hull[(static_cast<size_t>(hull_at_[v]) + h - 1) % h])) out.clear();
+  }
+
+ private:
+  std::vector<uint32_t> first_;
+  std::vector<std::pair<uint32_t, uint32_t>> steps_;
+  std::vector<int64_t> hull_at_;
+  const Mesh& dt_;
+};
+
 }  // namespace
 
 std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidates& cand, double incumbent,
@@ -189,7 +229,7 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     // The tile's share of the work left (by its vertices), then the sweeps stop.
     const uint64_t stop_at = visits + static_cast<uint64_t>(static_cast<double>(limits.max_visits - std::min(limits.max_visits, visits)) * m / (n - done));
     int64_t best = bound_now();
-    if (whole && limits.decode) best_lambda = lambda;  // (the multipliers of `best`)
+    if (limits.decode) best_lambda = lambda;  // (the multipliers of `best`)
     constexpr double kCap = double(int64_t{1} << 32);  // (a corner every fan takes: its margin is capped)
     for (uint32_t sweep = 0; sweep < limits.iterations && (!whole || relaxed(total + best) > target); ++sweep) {
       for (size_t tri = 0; tri < tris.size() && visits < stop_at; ++tri) {
@@ -226,7 +266,7 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
       if (limits.progress && !limits.progress(v + done + static_cast<double>(sweep + 1) * m / limits.iterations, 2.0 * n))
         throw Cancelled();
       const int64_t gained = best - now;
-      if (now < best && whole && limits.decode) best_lambda = lambda;
+      if (now < best && limits.decode) best_lambda = lambda;
       best = std::min(best, now);
       // Stop once the last sweep's gain, kept up for every sweep left, would not
       // reach the next value the bound can prove (the next integer for counts, or
@@ -245,6 +285,41 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     }
     total += best;
     done += m;
+    // A tile of many, decoding: its members' fans under the tile's best
+    // multipliers, every other vertex held at its fan in *start.
+    if (!whole && limits.decode && limits.start && limits.decoded_tile) {
+      const MeshFans held(*limits.start, dt);
+      const uint32_t lo = members.front(), hi = v;  // (the tile: vertices lo .. hi - 1)
+      FanTrees d;
+      std::vector<int64_t> value;
+      std::vector<uint32_t> path;
+      for (uint32_t u = 0; u < n; ++u) {
+        d.first_node.push_back(d.corner.size()), d.first_leaf.push_back(d.leaf.size());
+        if (u < lo || u >= hi || !in[u]) {  // (held: one fan, its corners unnumbered)
+          held.path(u, path);
+          uint32_t parent = kNoFanNode;
+          for (const uint32_t w : path) {
+            d.corner.push_back(kNoFanNode), d.neighbor.push_back(w), d.parent.push_back(parent);
+            parent = static_cast<uint32_t>(d.corner.size() - 1);
+          }
+          if (parent != kNoFanNode) d.leaf.push_back(parent), value.push_back(0);
+          continue;
+        }
+        const uint32_t i = u - lo;
+        const uint64_t base = t.first_node[i], to = d.corner.size();
+        for (uint64_t x = base; x < t.first_node[i + 1]; ++x) {
+          const bool root = t.parent[x] == kNoFanNode;
+          acc[x - base] = (root ? 0 : acc[t.parent[x] - base]) + (t.corner[x] == kNoFanNode ? 0 : best_lambda[t.corner[x]]);
+          d.corner.push_back(t.corner[x]), d.neighbor.push_back(t.neighbor[x]);
+          d.parent.push_back(root ? kNoFanNode : static_cast<uint32_t>(t.parent[x] - base + to));
+        }
+        for (uint64_t f = t.first_leaf[i]; f < t.first_leaf[i + 1]; ++f)
+          d.leaf.push_back(t.leaf[f] - base + to), value.push_back(weight[f] + acc[t.leaf[f] - base]);
+      }
+      d.first_node.push_back(d.corner.size()), d.first_leaf.push_back(d.leaf.size());
+      // (Its steps: the tile's share, and one per held vertex.)
+      limits.decoded_tile(StarDecoder(dt, std::move(d), lister.triangles(), std::move(value), limits.decode_steps_per_vertex * m + n));
+    }
     // A gap left: a triangulation from the fans best under the multipliers.
     if (whole && limits.decode && out.left_out == 0 && relaxed(total) > target) {
       std::vector<int64_t> value(t.leaf.size());

@@ -100,6 +100,9 @@ std::optional<std::vector<Tri>> StarDecoder::search(const std::vector<int64_t>& 
   std::vector<double> along(n);
   for (uint32_t v = 0; v < n; ++v) along[v] = axis[0] * dt.point(v)[0] + axis[1] * dt.point(v)[1];
   std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return along[a] < along[b]; });
+  // Vertices with one fan first (those a tile's decoder holds): their
+  // neighbours then meet what they force before choosing, not after.
+  std::stable_partition(order.begin(), order.end(), [&](uint32_t v) { return domain[v].size() == 1; });
 
   std::vector<uint64_t> chosen(n, kNoFan), trail;
   std::vector<uint8_t> alive(t.leaf.size(), 1);

@@ -77,8 +77,10 @@ TEST_CASE("star bound: sums only (counts, lengths); a triangulation's value is n
 // triangulation of the points, so never past the brute-force optimum; on these
 // small instances, whose relaxations are mostly tight, most reach it. Tiny step
 // budgets stop the search part way (then nothing, never a partial answer).
-TEST_CASE("star decode: k-OD triangulations, never past the optimum, mostly at it") {
-  int decoded = 0, optimal = 0, runs = 0;
+// In tiles (each a half to a quarter of the instance's nodes), each tile's
+// decoder holds the vertices of the others at their fans in the start.
+TEST_CASE("star decode: k-OD triangulations, never past the optimum, mostly at it; in tiles too") {
+  int decoded = 0, optimal = 0, runs = 0, tiled = 0, tiled_decoded = 0;
   for_small_k_instances({2u, 3u, 4u}, 60, 23, [&](uint32_t k, uint64_t seed, const FirstOrder& fo, const KOrderStructure& structure) {
     const Mesh& dt = fo.base;
     for (const auto& oi : objectives()) {
@@ -86,13 +88,29 @@ TEST_CASE("star decode: k-OD triangulations, never past the optimum, mostly at i
       StarBoundLimits limits;
       limits.decode = true;
       if (seed % 5 == 0) limits.decode_steps_per_vertex = 1;
+      std::vector<std::vector<Tri>> found;
+      auto decode = [&](const StarDecoder& d) {
+        for (std::vector<Tri>& tris : d.sweeps()) found.push_back(std::move(tris));
+        if (auto tris = d.repair(dt)) found.push_back(std::move(*tris));
+      };
+      if (seed % 3 == 1) {  // (tiles)
+        StarBoundLimits whole;
+        whole.iterations = 0;
+        const auto all = star_bound(dt, oi.objective, structure.candidates, evaluate(oi.objective, dt), whole);
+        if (!all) continue;
+        limits.max_nodes = limits.max_nodes_per_vertex = std::max<uint64_t>(1, all->nodes / (2 + seed % 3));
+        limits.max_left_out = 1;  // (a vertex over a tile's budget: left out, held in its tile's decoder)
+        limits.start = &dt;
+        limits.decoded_tile = decode;
+      }
       const double delaunay_value = evaluate(oi.objective, dt);
       const auto b = star_bound(dt, oi.objective, structure.candidates, delaunay_value, limits);
       if (!b) continue;
       ++runs;
-      if (!b->decoder) continue;
-      std::vector<std::vector<Tri>> found = b->decoder->sweeps();
-      if (auto d = b->decoder->repair(dt)) found.push_back(std::move(*d));
+      tiled += b->tiles > 1;
+      CHECK((b->tiles == 1 || !b->decoder));
+      tiled_decoded += static_cast<int>(found.size());
+      if (b->decoder) decode(*b->decoder);
       if (found.empty()) continue;
       const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
       CAPTURE(k);
@@ -110,9 +128,12 @@ TEST_CASE("star decode: k-OD triangulations, never past the optimum, mostly at i
       }
     }
   });
-  MESSAGE(runs << " star bounds with a gap to Delaunay, " << decoded << " triangulations decoded, " << optimal << " optimal");
+  MESSAGE(runs << " star bounds with a gap to Delaunay, " << decoded << " triangulations decoded, " << optimal << " optimal; "
+               << tiled << " in tiles, " << tiled_decoded << " of those decoded");
   CHECK(decoded > 200);
   CHECK(optimal > decoded / 2);
+  CHECK(tiled > 200);
+  CHECK(tiled_decoded > 100);
 }
 
 TEST_CASE("star decode: a DEM at k = 8, every sweep a k-OD triangulation") {

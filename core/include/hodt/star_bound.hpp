@@ -21,6 +21,7 @@
 #pragma once
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -58,13 +59,19 @@ struct StarBoundLimits {
   // triangulations off them (StarDecoder), within this many fans tried per vertex.
   bool decode = false;
   uint64_t decode_steps_per_vertex = 64;
+  // Decoding over tiles of many (their trees are not all in memory at once):
+  // after each tile's sweeps, a decoder over its vertices' fans with every
+  // other vertex held at its fan in *start (a k-OD triangulation of the
+  // points), passed to decoded_tile, which may change *start before the next.
+  const Mesh* start = nullptr;
+  std::function<void(const StarDecoder&)> decoded_tile;
   Progress progress;
 };
 
 struct StarBound {
   double bound;           // no k-OD triangulation is better
   uint64_t nodes = 0;     // of the fans' prefix trees (the largest tile's)
-  uint32_t tiles = 1;     // (more than one: no decoder)
+  uint32_t tiles = 1;     // (more than one: no decoder; decoded_tile had each tile's)
   uint32_t left_out = 0;  // vertices whose fans were over the budgets
   std::shared_ptr<const StarDecoder> decoder;  // (decode, a gap left, no vertex left out)
 };
