@@ -285,8 +285,14 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     }
     total += best;
     done += m;
-    // A tile of many, decoding: its members' fans under the tile's best
-    // multipliers, every other vertex held at its fan in *start.
+    // Decoding: each fan valued by its terms and the best multipliers.
+    auto reduced = [&](uint64_t f) {
+      int64_t value = weight[f];
+      for (uint64_t x = t.leaf[f]; x != kNoFanNode; x = t.parent[x])
+        if (t.corner[x] != kNoFanNode) value += best_lambda[t.corner[x]];
+      return value;
+    };
+    // A tile of many: its members' fans, every other vertex held at its fan in *start.
     if (!whole && limits.decode && limits.start && limits.decoded_tile) {
       const MeshFans held(*limits.start, dt);
       const uint32_t lo = members.front(), hi = v;  // (the tile: vertices lo .. hi - 1)
@@ -308,13 +314,10 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
         const uint32_t i = u - lo;
         const uint64_t base = t.first_node[i], to = d.corner.size();
         for (uint64_t x = base; x < t.first_node[i + 1]; ++x) {
-          const bool root = t.parent[x] == kNoFanNode;
-          acc[x - base] = (root ? 0 : acc[t.parent[x] - base]) + (t.corner[x] == kNoFanNode ? 0 : best_lambda[t.corner[x]]);
           d.corner.push_back(t.corner[x]), d.neighbor.push_back(t.neighbor[x]);
-          d.parent.push_back(root ? kNoFanNode : static_cast<uint32_t>(t.parent[x] - base + to));
+          d.parent.push_back(t.parent[x] == kNoFanNode ? kNoFanNode : static_cast<uint32_t>(t.parent[x] - base + to));
         }
-        for (uint64_t f = t.first_leaf[i]; f < t.first_leaf[i + 1]; ++f)
-          d.leaf.push_back(t.leaf[f] - base + to), value.push_back(weight[f] + acc[t.leaf[f] - base]);
+        for (uint64_t f = t.first_leaf[i]; f < t.first_leaf[i + 1]; ++f) d.leaf.push_back(t.leaf[f] - base + to), value.push_back(reduced(f));
       }
       d.first_node.push_back(d.corner.size()), d.first_leaf.push_back(d.leaf.size());
       // (Its steps: the tile's share, and one per held vertex.)
@@ -323,11 +326,7 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     // A gap left: a triangulation from the fans best under the multipliers.
     if (whole && limits.decode && out.left_out == 0 && relaxed(total) > target) {
       std::vector<int64_t> value(t.leaf.size());
-      for (uint64_t f = 0; f < t.leaf.size(); ++f) {
-        value[f] = weight[f];
-        for (uint64_t x = t.leaf[f]; x != kNoFanNode; x = t.parent[x])
-          if (t.corner[x] != kNoFanNode) value[f] += best_lambda[t.corner[x]];
-      }
+      for (uint64_t f = 0; f < t.leaf.size(); ++f) value[f] = reduced(f);
       out.decoder = std::make_shared<const StarDecoder>(dt, std::move(t), tris, std::move(value),
                                                         limits.decode_steps_per_vertex * n);
     }
