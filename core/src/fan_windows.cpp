@@ -14,24 +14,6 @@ namespace hodt {
 
 namespace {
 
-// Each vertex's neighbours in m, counterclockwise (at a hull vertex, from the
-// next hull vertex round to the previous: as the fans are listed).
-std::vector<std::vector<uint32_t>> rings_of(const Mesh& m) {
-  const std::vector<int32_t> out = vertex_halfedges(m);
-  std::vector<std::vector<uint32_t>> ring(m.num_vertices());
-  for (uint32_t v = 0; v < m.num_vertices(); ++v) {
-    if (out[v] < 0) continue;
-    for (int32_t e = out[v];;) {
-      ring[v].push_back(m.target(static_cast<uint32_t>(e)));
-      const uint32_t p = prev_halfedge(static_cast<uint32_t>(e));
-      e = m.halfedges[p];
-      if (e < 0) ring[v].push_back(m.origin(p));  // (round to the hull edge before v)
-      if (e < 0 || e == out[v]) break;
-    }
-  }
-  return ring;
-}
-
 // One window's members, their candidate fans (rings) and values, and a branch
 // and bound over them: forward checking (a choice removes the later members'
 // fans that disagree), a branch ending when its value plus each later member's

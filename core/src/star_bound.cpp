@@ -19,46 +19,6 @@ constexpr int64_t kUnit = 4096;  // multipliers in units of 2^-12: every sum exa
 
 int64_t floor_div(int64_t a, int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
 
-// Each vertex's fan in a triangulation as a path the way FanLister lists it:
-// round an interior vertex from its smallest neighbour back to it; at a hull
-// vertex from the next hull vertex round to the previous.
-class MeshFans {
- public:
-  MeshFans(const Mesh& m, const Mesh& dt) : first_(m.num_vertices() + 1, 0), hull_at_(m.num_vertices(), -1), dt_(dt) {
-    const uint32_t nt = m.num_triangles();
-    for (uint32_t i = 0; i < 3 * nt; ++i) ++first_[m.triangles[i] + 1];
-    for (size_t v = 0; v + 1 < first_.size(); ++v) first_[v + 1] += first_[v];
-    steps_.resize(3 * size_t{nt});
-    std::vector<uint32_t> at(first_.begin(), first_.end() - 1);
-    for (uint32_t t = 0; t < nt; ++t)
-      for (int j = 0; j < 3; ++j)  // (counterclockwise: after a comes b round v)
-        steps_[at[m.triangles[3 * t + j]]++] = {m.triangles[3 * t + (j + 1) % 3], m.triangles[3 * t + (j + 2) % 3]};
-    for (size_t i = 0; i < dt.hull.size(); ++i) hull_at_[dt.hull[i]] = static_cast<int64_t>(i);
-  }
-  // Empty when v's triangles are not one fan.
-  void path(uint32_t v, std::vector<uint32_t>& out) const {
-    out.clear();
-    const auto* b = steps_.data() + first_[v];
-    const auto* e = steps_.data() + first_[v + 1];
-    if (b == e) return;
-    const size_t h = dt_.hull.size();
-    uint32_t from = hull_at_[v] < 0 ? std::min_element(b, e)->first : dt_.hull[(static_cast<size_t>(hull_at_[v]) + 1) % h];
-    out.push_back(from);
-    for (size_t n = 0; n < static_cast<size_t>(e - b); ++n) {
-      const auto* s = std::find_if(b, e, [&](const auto& p) { return p.first == from; });
-      if (s == e) return out.clear();
-      out.push_back(from = s->second);
-    }
-    if (out.back() != (hull_at_[v] < 0 ? out.front() : dt_.hull[(static_cast<size_t>(hull_at_[v]) + h - 1) % h])) out.clear();
-  }
-
- private:
-  std::vector<uint32_t> first_;
-  std::vector<std::pair<uint32_t, uint32_t>> steps_;
-  std::vector<int64_t> hull_at_;
-  const Mesh& dt_;
-};
-
 }  // namespace
 
 std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidates& cand, double incumbent,
@@ -294,20 +254,20 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     };
     // A tile of many: its members' fans, every other vertex held at its fan in *start.
     if (!whole && limits.decode && limits.start && limits.decoded_tile) {
-      const MeshFans held(*limits.start, dt);
+      const std::vector<std::vector<uint32_t>> held = rings_of(*limits.start);
       const uint32_t lo = members.front(), hi = v;  // (the tile: vertices lo .. hi - 1)
       FanTrees d;
       std::vector<int64_t> value;
-      std::vector<uint32_t> path;
       for (uint32_t u = 0; u < n; ++u) {
         d.first_node.push_back(d.corner.size()), d.first_leaf.push_back(d.leaf.size());
-        if (u < lo || u >= hi || !in[u]) {  // (held: one fan, its corners unnumbered)
-          held.path(u, path);
+        if (u < lo || u >= hi || !in[u]) {  // (held: one fan, a path round its ring, its corners unnumbered)
           uint32_t parent = kNoFanNode;
-          for (const uint32_t w : path) {
+          auto push = [&](uint32_t w) {
             d.corner.push_back(kNoFanNode), d.neighbor.push_back(w), d.parent.push_back(parent);
             parent = static_cast<uint32_t>(d.corner.size() - 1);
-          }
+          };
+          for (const uint32_t w : held[u]) push(w);
+          if (lister.interior(u) && !held[u].empty()) push(held[u][0]);  // (closed round an interior vertex)
           if (parent != kNoFanNode) d.leaf.push_back(parent), value.push_back(0);
           continue;
         }

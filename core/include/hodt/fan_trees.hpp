@@ -53,6 +53,25 @@ inline FanSide side_in_ring(const std::vector<uint32_t>& ring, bool cyclic, uint
 // seen from the other end. Fans that all agree so are a triangulation.
 inline FanSide mirrored(const FanSide& said) { return said.present ? FanSide{true, said.after, said.before} : FanSide{}; }
 
+// Each vertex's fan in a triangulation m, as its ring: its neighbours
+// counterclockwise (at a hull vertex, from the next hull vertex round to the
+// previous: as the fans are listed).
+inline std::vector<std::vector<uint32_t>> rings_of(const Mesh& m) {
+  const std::vector<int32_t> out = vertex_halfedges(m);
+  std::vector<std::vector<uint32_t>> ring(m.num_vertices());
+  for (uint32_t v = 0; v < m.num_vertices(); ++v) {
+    if (out[v] < 0) continue;
+    for (int32_t e = out[v];;) {
+      ring[v].push_back(m.target(static_cast<uint32_t>(e)));
+      const uint32_t p = prev_halfedge(static_cast<uint32_t>(e));
+      e = m.halfedges[p];
+      if (e < 0) ring[v].push_back(m.origin(p));  // (round to the hull edge before v)
+      if (e < 0 || e == out[v]) break;
+    }
+  }
+  return ring;
+}
+
 // The triangles of v's fan (canonical), appended.
 inline void append_fan_triangles(uint32_t v, const std::vector<uint32_t>& ring, bool cyclic, std::vector<Tri>& out) {
   const size_t m = ring.size(), last = cyclic ? m : m - 1;
