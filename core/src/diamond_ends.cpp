@@ -44,12 +44,13 @@ DiamondEnds::DiamondEnds(const FanTrees& t, const std::vector<uint32_t>& members
   const uint32_t lo = members.empty() ? 0 : members.front();
   for (uint32_t e = 1; e < member_.size(); ++e) {
     const uint32_t a = members[member_[e]], b = key[e][0];
-    if (b < lo || b - lo >= members.size() || !in[b]) continue;
+    if (b < a || b - lo >= members.size() || !in[b]) continue;  // (each pair once, from its smaller end)
     const uint32_t j = b - lo;
-    const Key mirror{a, key[e][2], key[e][1]};
+    const FanSide seen = mirrored({true, key[e][1], key[e][2]});
+    const Key mirror{a, seen.before, seen.after};
     const auto from = key.begin() + first_end[j], to = key.begin() + first_end[j + 1];
     const auto it = std::lower_bound(from, to, mirror);
-    if (a < b && it != to && *it == mirror) pairs_.push_back({e, static_cast<uint32_t>(it - key.begin())});
+    if (it != to && *it == mirror) pairs_.push_back({e, static_cast<uint32_t>(it - key.begin())});
   }
 }
 

@@ -138,14 +138,8 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
         });
     if (!counts) return std::nullopt;
 
-    // The multipliers sit on diamonds: an edge with the triangles on either
-    // side (one at a hull edge). In v's fan a diamond is a neighbour u with the
-    // neighbours before and after it (FanSide), and u's fan holds it too, seen
-    // from the other end (mirrored), or neither does: one multiplier per end,
-    // the two summing to 0. Agreement on diamonds implies agreement on
-    // triangles (each lies in the diamonds of its three edges), and binds
-    // tighter: a 30 x 30 DEM crop at k = 5, min-mixed-vertices, 30 from the
-    // triangles' relaxation, 33 (the optimum) from the diamonds'.
+    // One multiplier per diamond end (diamond_ends.hpp), a diamond's two
+    // summing to 0: both fans hold it or neither does.
     const std::vector<Tri>& tris = lister.triangles();
     const DiamondEnds ends(t, members, in, lister);
     lambda.assign(ends.size(), 0);

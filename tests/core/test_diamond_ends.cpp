@@ -1,7 +1,8 @@
 // The diamonds the star bound's multipliers sit on (diamond_ends.hpp): every
-// k-OD triangulation's fans hold, at each interior edge, the two ends of one
-// diamond paired (else the multipliers would not cancel on it, and the bound
-// could pass the optimum). Against every k-OD triangulation of small instances.
+// k-OD triangulation's fans hold one end per neighbour, and at each edge the two
+// ends of one pair. So each pair's two multipliers, summing to 0, are both in a
+// triangulation or neither, and the bound holds for it. Against every k-OD
+// triangulation of small instances.
 #include <doctest/doctest.h>
 
 #include <algorithm>

@@ -2,9 +2,10 @@
 // either side of it (one at a hull edge). In v's fan a diamond is a neighbour u
 // with the neighbours before and after it (FanSide); u's fan holds the same
 // diamond seen from the other end (mirrored), or neither fan does. Each vertex's
-// view of a diamond is an end, numbered per tile; a fan holds an end at the
-// node that closes it (the triangle after u) or, round an interior vertex, at
-// its leaf for its first neighbour.
+// view of a diamond is an end, numbered per tile. A fan holds the end at u at
+// the node of the triangle after u, but at its leaf for the leaf's own
+// neighbour (round an interior vertex the first, whose triangle after is the
+// fan's first; at a hull vertex the last, with none after).
 #pragma once
 #include <array>
 #include <cstdint>
