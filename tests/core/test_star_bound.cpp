@@ -3,6 +3,9 @@
 // out, and tight where the stars see enough.
 #include <doctest/doctest.h>
 
+#include <fstream>
+#include <string>
+
 #include "generators.hpp"
 #include "k_order_reference.hpp"
 #include "hodt/delaunay.hpp"
@@ -50,6 +53,26 @@ TEST_CASE("star bound: never past the brute-force optimum (k = 1 to 4), with fan
   CHECK(tight > runs / 2);
   CHECK(partial > 50);
   CHECK(tiled > 100);
+}
+
+// The volcano sampled on a jittered 60 x 60 grid (tests/fixtures/make.mjs) at
+// k = 5: its least number of mixed vertices is 443 (`hodt solve
+// volcano-jittered-60x60.txt --objective min-mixed-vertices --order 5`, proven).
+// The stars agreeing on diamonds bound it at 443; agreeing on triangles alone
+// they stopped at 439.
+TEST_CASE("star bound: diamonds meet the optimum of min-mixed-vertices on the jittered volcano at k = 5 (443)") {
+  std::ifstream in(std::string(HODT_FIXTURES) + "/volcano-jittered-60x60.txt");
+  std::string header;
+  REQUIRE(std::getline(in, header));
+  std::vector<double> xyz;
+  for (double a; in >> a;) xyz.push_back(a);
+  REQUIRE(xyz.size() == 3 * 3600);
+  const FirstOrder fo = first_order(delaunay(validate_points(xyz, Dedupe::KeepFirst, {}, PointOrder::Spatial).xyz));
+  const KOrderStructure structure(fo.base, 5, {});
+  const auto b = star_bound(fo.base, Objective::MinMixedVertices, structure.candidates, 443);
+  REQUIRE(b);
+  CHECK(b->tiles == 1);
+  CHECK(b->bound == 443);
 }
 
 TEST_CASE("star bound: sums only (counts, lengths); a triangulation's value is never past it on a large instance") {
