@@ -224,12 +224,14 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     }
     total += best;
     done += m;
-    // Decoding: each fan valued by its terms and the best multipliers.
-    auto reduced = [&](uint64_t f) {
-      int64_t value = weight[f];
-      for (uint64_t x = t.leaf[f]; x != kNoFanNode; x = t.parent[x])
-        value += best_lambda[ends.at_node(x)];
-      return value + best_lambda[ends.at_leaf(f)];
+    // Decoding: member i's fans valued by their terms and the best
+    // multipliers, appended (one pass over its trees, as split's).
+    auto reduced = [&](uint32_t i, std::vector<int64_t>& value) {
+      const uint64_t base = t.first_node[i];
+      for (uint64_t x = base; x < t.first_node[i + 1]; ++x)
+        acc[x - base] = (t.parent[x] == kNoFanNode ? 0 : acc[t.parent[x] - base]) + best_lambda[ends.at_node(x)];
+      for (uint64_t f = t.first_leaf[i]; f < t.first_leaf[i + 1]; ++f)
+        value.push_back(weight[f] + acc[t.leaf[f] - base] + best_lambda[ends.at_leaf(f)]);
     };
     // A tile of many: its members' fans, every other vertex held at its fan in *start.
     if (!whole && limits.decode && limits.start && limits.decoded_tile) {
@@ -256,7 +258,8 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
           d.corner.push_back(t.corner[x]), d.neighbor.push_back(t.neighbor[x]);
           d.parent.push_back(t.parent[x] == kNoFanNode ? kNoFanNode : static_cast<uint32_t>(t.parent[x] - base + to));
         }
-        for (uint64_t f = t.first_leaf[i]; f < t.first_leaf[i + 1]; ++f) d.leaf.push_back(t.leaf[f] - base + to), value.push_back(reduced(f));
+        for (uint64_t f = t.first_leaf[i]; f < t.first_leaf[i + 1]; ++f) d.leaf.push_back(t.leaf[f] - base + to);
+        reduced(i, value);
       }
       d.first_node.push_back(d.corner.size()), d.first_leaf.push_back(d.leaf.size());
       // (Its steps: the tile's share, and one per held vertex.)
@@ -264,8 +267,9 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     }
     // A gap left: a triangulation from the fans best under the multipliers.
     if (whole && limits.decode && out.left_out == 0 && relaxed(total) > target) {
-      std::vector<int64_t> value(t.leaf.size());
-      for (uint64_t f = 0; f < t.leaf.size(); ++f) value[f] = reduced(f);
+      std::vector<int64_t> value;
+      value.reserve(t.leaf.size());
+      for (uint32_t i = 0; i < m; ++i) reduced(i, value);
       out.decoder = std::make_shared<const StarDecoder>(dt, std::move(t), tris, std::move(value),
                                                         limits.decode_steps_per_vertex * n);
     }
