@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <span>
 
 #include "hodt/error.hpp"
 #include "hodt/fill_graph.hpp"
@@ -24,6 +25,15 @@ struct Partial {
   uint32_t node = UINT32_MAX;  // how it was reached (Node)
 };
 
+// A kept partial fill as it is expanded: its frontier unpacked, the rest read
+// where its layer holds it (its children copy what they change).
+struct Kept {
+  std::vector<uint64_t> open;
+  std::span<const uint32_t> behind, around, signature;
+  double value = 0;
+  uint32_t node = UINT32_MAX;
+};
+
 // The partial fills of one layer, one per key, as words in one array (a layer
 // holds up to hundreds of thousands: one allocation each would dominate).
 class Layer {
@@ -38,15 +48,17 @@ class Layer {
   std::vector<Stored> states;
 
   // Keeps c if no state has its key, or in place of that state if c is better;
-  // returns the index of the state with its key.
+  // returns the index of the state with its key (hashed and compared in its
+  // pieces: most children merge, and need no copy).
   template <class Better>
   uint32_t offer(const Partial& c, Better&& better) {
-    key_.clear();
-    for (uint64_t e : c.open) key_.push_back(static_cast<uint32_t>(e >> 32)), key_.push_back(static_cast<uint32_t>(e));
-    const uint32_t sizes[4] = {static_cast<uint32_t>(key_.size()), static_cast<uint32_t>(c.behind.size()),
+    const uint32_t sizes[4] = {static_cast<uint32_t>(2 * c.open.size()), static_cast<uint32_t>(c.behind.size()),
                                static_cast<uint32_t>(c.around.size()), static_cast<uint32_t>(c.signature.size())};
-    for (const auto* part : {&c.behind, &c.around, &c.signature}) key_.insert(key_.end(), part->begin(), part->end());
-    size_t hash = WordsHash{}(key_);
+    WordsHasher hasher;
+    for (uint64_t e : c.open) hasher.add(static_cast<uint32_t>(e >> 32)), hasher.add(static_cast<uint32_t>(e));
+    for (const auto* part : {&c.behind, &c.around, &c.signature})
+      for (uint32_t x : *part) hasher.add(x);
+    size_t hash = hasher.done();
     for (uint32_t n : sizes) hash = hash * 31 + n;
     if (2 * (states.size() + 1) > slots_.size()) grow();
     const size_t mask = slots_.size() - 1;
@@ -55,36 +67,63 @@ class Layer {
       if (s == kEmpty) {
         slots_[i] = static_cast<uint32_t>(states.size());
         states.push_back({words_.size(), {sizes[0], sizes[1], sizes[2], sizes[3]}, c.value, c.node, hash});
-        words_.insert(words_.end(), key_.begin(), key_.end());
+        for (uint64_t e : c.open) words_.push_back(static_cast<uint32_t>(e >> 32)), words_.push_back(static_cast<uint32_t>(e));
+        for (const auto* part : {&c.behind, &c.around, &c.signature}) words_.insert(words_.end(), part->begin(), part->end());
         return slots_[i];
       }
       Stored& t = states[s];
-      if (t.hash == hash && std::equal(t.sizes, t.sizes + 4, sizes) &&
-          std::equal(key_.begin(), key_.end(), words_.begin() + static_cast<std::ptrdiff_t>(t.at))) {
+      if (t.hash == hash && std::equal(t.sizes, t.sizes + 4, sizes) && same_key(t, c)) {
         if (better(c.value, t.value)) t.value = c.value, t.node = c.node;  // (the same key: only these differ)
         return s;
       }
     }
   }
 
-  // State i, unpacked into p.
-  void load(size_t i, Partial& p) const {
+  // State i, its frontier unpacked into p (the rest valid while this layer is
+  // not changed).
+  void load(size_t i, Kept& p) const {
     const Stored& t = states[i];
     const uint32_t* w = words_.data() + t.at;
     p.open.clear();
     for (uint32_t j = 0; j < t.sizes[0]; j += 2) p.open.push_back(uint64_t{w[j]} << 32 | w[j + 1]);
     w += t.sizes[0];
     for (auto [part, n] : {std::pair{&p.behind, t.sizes[1]}, {&p.around, t.sizes[2]}, {&p.signature, t.sizes[3]}}) {
-      part->assign(w, w + n);
+      *part = {w, n};
       w += n;
     }
     p.value = t.value;
     p.node = t.node;
   }
 
+  // Empty, its memory kept for the next layer (a fresh one per layer spent a
+  // fifth of a DEM sample's time at k = 4 in page faults and regrowth).
+  void clear() {
+    const size_t mask = slots_.size() - 1;
+    for (uint32_t s = 0; s < states.size(); ++s) {
+      size_t i = states[s].hash & mask;
+      while (slots_[i] != s) i = (i + 1) & mask;
+      slots_[i] = kEmpty;
+    }
+    states.clear();
+    words_.clear();
+  }
+
  private:
   static constexpr uint32_t kEmpty = UINT32_MAX;
-  std::vector<uint32_t> words_, slots_, key_;
+  std::vector<uint32_t> words_, slots_;
+  // Whether t's key is c's (their sizes equal).
+  bool same_key(const Stored& t, const Partial& c) const {
+    const uint32_t* w = words_.data() + t.at;
+    for (uint64_t e : c.open) {
+      if (w[0] != static_cast<uint32_t>(e >> 32) || w[1] != static_cast<uint32_t>(e)) return false;
+      w += 2;
+    }
+    for (const auto* part : {&c.behind, &c.around, &c.signature}) {
+      if (!std::equal(part->begin(), part->end(), w)) return false;
+      w += part->size();
+    }
+    return true;
+  }
   void grow() {
     slots_.assign(std::max<size_t>(64, 2 * slots_.size()), kEmpty);
     const size_t mask = slots_.size() - 1;
@@ -136,17 +175,18 @@ class FillDp {
     std::sort(start.open.begin(), start.open.end());
     set_axis(start.open);
     if (T_.reads_apexes()) start.behind.assign(start.open.size(), kNoApex);  // (the outside: never read)
-    Layer layer;
-    layer.offer(start, [](double, double) { return false; });
+    Layer layers[2];
+    Layer *layer = &layers[0], *next = &layers[1];
+    layer->offer(start, [](double, double) { return false; });
     std::vector<BestFill> out;
     uint64_t states = 1, generated = 0, work = 0;
     uint32_t base = 0;  // the layer's first node (when recording)
-    Partial& p = parent_;
-    while (!layer.states.empty()) {
-      Layer next;
-      const uint32_t next_base = base + static_cast<uint32_t>(layer.states.size());
-      for (size_t i = 0; i < layer.states.size(); ++i) {
-        layer.load(i, p);
+    Kept& p = parent_;
+    while (!layer->states.empty()) {
+      next->clear();
+      const uint32_t next_base = base + static_cast<uint32_t>(layer->states.size());
+      for (size_t i = 0; i < layer->states.size(); ++i) {
+        layer->load(i, p);
         if (p.open.empty()) {
           if (record_) record_->graph.complete.push_back(base + static_cast<uint32_t>(i));
           else out.push_back({triangles_of(p.node), p.value});
@@ -159,7 +199,7 @@ class FillDp {
         if ((states + generated / 4) > max_states || work > kWorkPerState * max_states) return std::nullopt;
         expand(p, [&](const Partial& child) {
           ++generated;
-          const uint32_t at = next.offer(child, [&](double a, double b) { return T_.better(a, b); });
+          const uint32_t at = next->offer(child, [&](double a, double b) { return T_.better(a, b); });
           if (!record_) return;
           FillGraph& g = record_->graph;
           const Node& step = pending_[child.node];
@@ -169,18 +209,18 @@ class FillDp {
         });
       }
       base = next_base;
-      if (record_) record_->graph.nodes = base + static_cast<uint32_t>(next.states.size());
-      states += next.states.size();
-      if (used) *used += next.states.size();
+      if (record_) record_->graph.nodes = base + static_cast<uint32_t>(next->states.size());
+      states += next->states.size();
+      if (used) *used += next->states.size();
       if (states > max_states) return std::nullopt;
       if (progress && !progress(static_cast<double>(states), static_cast<double>(max_states))) throw Cancelled();
       // Record how each kept state was reached.
-      for (Layer::Stored& t : next.states) {
+      for (Layer::Stored& t : next->states) {
         nodes_.push_back(pending_[t.node]);
         t.node = static_cast<uint32_t>(nodes_.size() - 1);
       }
       pending_.clear();
-      layer = std::move(next);
+      std::swap(layer, next);
     }
     return out;
   }
@@ -196,7 +236,8 @@ class FillDp {
   std::vector<Node> pending_;  // this layer's children, before merging
   SignatureEntry entry_;
   std::vector<uint32_t> fan_;  // the fan being extended
-  Partial parent_, child_;     // the state being expanded, the child being built
+  Kept parent_;                // the state being expanded
+  Partial child_;              // the child being built
   mutable FlatIndex counts_;  // open edge -> its candidate triangles
   double origin_[2] = {0, 0}, axis_[2] = {1, 0};  // the sweep (see expand)
 
@@ -240,7 +281,7 @@ class FillDp {
     return n;
   }
 
-  bool on_frontier(const Partial& p, uint32_t v) const {
+  static bool on_frontier(const Partial& p, uint32_t v) {
     for (uint64_t e : p.open)
       if (from(e) == v || to(e) == v) return true;
     return false;
@@ -298,7 +339,7 @@ class FillDp {
   }
 
   template <class Emit>
-  void expand(const Partial& p, Emit&& emit) {
+  void expand(const Kept& p, Emit&& emit) {
     // The open edge to grow from, a function of the frontier so that equal
     // frontiers expand alike: a forced one (a single candidate) first, else the
     // one furthest back along the region's principal axis (ties: the fewest

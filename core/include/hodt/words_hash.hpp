@@ -7,12 +7,19 @@
 
 namespace hodt {
 
+// The same hash fed word by word (a key held in pieces).
+struct WordsHasher {
+  uint64_t h = 1469598103934665603ull;
+  void add(uint32_t x) { h = (h ^ x) * 1099511628211ull; }
+  size_t done() const { return static_cast<size_t>(h ^ (h >> 29)); }
+};
+
 struct WordsHash {
   template <class Words>
   size_t operator()(const Words& k) const {
-    uint64_t h = 1469598103934665603ull;
-    for (uint32_t x : k) h = (h ^ x) * 1099511628211ull;
-    return static_cast<size_t>(h ^ (h >> 29));
+    WordsHasher h;
+    for (uint32_t x : k) h.add(x);
+    return h.done();
   }
 };
 
