@@ -212,6 +212,7 @@ constexpr uint32_t kDualSweeps = 1500;
 // vertices either way, in 141 s instead of 173, and 68854 convex edges for 68861,
 // in 147 s instead of 166 (without the dual: 19679 and 68854).
 constexpr uint32_t kRungDualSweeps = 150;
+constexpr uint32_t kMaxGlue = 2;
 
 // Counts over regions not listed whole: the dual reads them through their fill
 // graphs (region_dual.hpp); the best triangulation its descents found replaces
@@ -224,10 +225,10 @@ constexpr uint32_t kRungDualSweeps = 150;
 // (The volcano at k = 4, 86 strips each of one column of cells:
 // max-convex-edges 6923 with bound 6940 unglued; glued twice, 6939 proven.
 // A 20k-cell DEM at k = 5: 33881 with bound 34391; glued once, 34051 with
-// bound 34227.)
+// bound 34227.) gluable: whether a gap left unglued might be glued.
 std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEngine& engine, KOrderResult& r,
                                            std::string& how, const Progress& progress, uint32_t max_glue = 0,
-                                           uint32_t max_sweeps = kDualSweeps) {
+                                           uint32_t max_sweeps = kDualSweeps, bool* gluable = nullptr) {
   const Sense sense = info(o).sense;
   RegionDualLimits limits;
   limits.dual.progress = limits.dp.progress = progress;
@@ -324,6 +325,7 @@ std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEn
   // 131k-cell DEM at k = 5 has 358, that is minutes per level, for gaps already
   // under 2 %.)
   constexpr uint32_t kMaxGlued = 128;
+  if (gluable) *gluable = gap() && !d.relaxed && d.graphs >= 2 && d.graphs <= kMaxGlued;
   for (uint32_t times = 1; times <= max_glue && gap() && !d.relaxed && d.graphs >= 2 && d.graphs <= kMaxGlued; ++times) {
     std::unique_ptr<Level> first = glue(*parent, d, {});
     if (!first) break;
@@ -347,9 +349,10 @@ std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEn
 // best triangulation found optimal (r.optimal, r.method "exact") or finds the
 // optimum, by pruning and the DP over what is left. It needs every region
 // listed whole (list_whole); else the regions not listed whole are read through
-// their fill graphs. Returns the bound (nothing if it does not apply).
+// their fill graphs, unglued (*gluable: whether gluing might tighten the bound).
+// Returns the bound (nothing if it does not apply).
 std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& engine, KOrderResult& r, std::string& how,
-                                    const std::string& refused, const Progress& progress) {
+                                    const std::string& refused, const Progress& progress, bool& gluable) {
   Regions& R = engine.R;
   RegionModel& model = engine.model;
   const Sense sense = info(o).sense;
@@ -357,7 +360,7 @@ std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& e
   DualLimits dual;
   dual.progress = progress;
   dual.max_rounds = 2;
-  if (R.incomplete) return bound_by_fill_graphs(dt, o, engine, r, how, progress, 2);
+  if (R.incomplete) return bound_by_fill_graphs(dt, o, engine, r, how, progress, 0, kDualSweeps, &gluable);
   StateDpLimits dl;
   dl.progress = progress;
   // Two clusterings in turn: the ascent stops at a fixed point of its own in
@@ -636,17 +639,36 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // max-convex-edges, 1.1 s.)
   auto relaxed = [&] { return tighter(sense, relaxation_bound(model.graph, dl), global); };
   const bool dual_first = provable && options.method != Method::Approx;
+  bool gluable = false;
   double bound = refuted ? r.value : dual_first ? global : relaxed();
   if (description.combine == TermCombine::Max) bound = tighter(sense, bound, terms.floor());
   // Counts: the dual before the views (it proves most instances on its own: a
   // 131k-cell DEM at k = 4, max-convex-vertices, where the views cost twice the
   // dual and proved nothing).
   if (provable && better(sense, bound, r.value)) {
-    if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, options.progress)) {
+    if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, options.progress, gluable)) {
       if (r.optimal) return r;
       bound = tighter(sense, bound, *d);
     }
     if (dual_first) bound = tighter(sense, bound, relaxed());
+  }
+  // Counts and lengths: the bound from the vertices' stars, which lists no
+  // region (one region of thousands of triangles, as from k = 6 on the volcano,
+  // too); the views below only where it leaves a gap (a 10,000-point DEM sample
+  // at k = 4, min-mixed-vertices: the stars prove 1221, the views, a fifth of
+  // the time when they came first, proved nothing; on the volcano at k = 5 to 8
+  // every count and length ends the same either way).
+  if (description.combine == TermCombine::Sum && better(sense, bound, r.value))
+    bound = by_stars(dt, o, k, cand, r, bound, how, options.progress, memo);
+  // The regions' fill graphs glued in pairs only now, where the stars left a gap
+  // (the first reading again, then the glued ones: 10,000 DEM points at k = 4,
+  // min-mixed-vertices, 26 -> 21 s, the stars prove what two levels of glue
+  // did not; the volcano at k = 4, max-convex-edges, 9.3 -> 7.0 s).
+  if (gluable && better(sense, bound, r.value)) {
+    if (const std::optional<double> d = bound_by_fill_graphs(dt, o, engine, r, how, options.progress, kMaxGlue)) {
+      if (r.optimal) return r;
+      bound = tighter(sense, bound, *d);
+    }
   }
   ViewBoundLimits vl;
   vl.views.progress = vl.dp.progress = options.progress;
@@ -683,10 +705,6 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
       how += ", bound from the vertices' fans";
     }
   }
-  // Counts and lengths: the bound from the vertices' stars, which lists no
-  // region (one region of thousands of triangles, as from k = 6 on the volcano, too).
-  if (description.combine == TermCombine::Sum && better(sense, bound, r.value))
-    bound = by_stars(dt, o, k, cand, r, bound, how, options.progress, memo);
   r.bound = sense == Sense::Min ? std::min(bound, r.value) : std::max(bound, r.value);
   r.optimal = *r.bound == r.value;
   if (options.method == Method::Exact && !r.optimal)
