@@ -225,10 +225,13 @@ constexpr uint32_t kMaxGlue = 2;
 // (The volcano at k = 4, 86 strips each of one column of cells:
 // max-convex-edges 6923 with bound 6940 unglued; glued twice, 6939 proven.
 // A 20k-cell DEM at k = 5: 33881 with bound 34391; glued once, 34051 with
-// bound 34227.) gluable: whether a gap left unglued might be glued.
+// bound 34227.) unglued (when given): with max_glue 0, the first reading, kept
+// when a gap is left that glue might close; given back with it, the levels
+// start from it instead of reading R again.
 std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEngine& engine, KOrderResult& r,
                                            std::string& how, const Progress& progress, uint32_t max_glue = 0,
-                                           uint32_t max_sweeps = kDualSweeps, bool* gluable = nullptr) {
+                                           uint32_t max_sweeps = kDualSweeps,
+                                           std::optional<RegionDual>* unglued = nullptr) {
   const Sense sense = info(o).sense;
   RegionDualLimits limits;
   limits.dual.progress = limits.dp.progress = progress;
@@ -318,15 +321,24 @@ std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEn
   };
   auto gap = [&] { return bound && better(sense, *bound, r.value); };
   RegionDual d;
-  if (read(engine.R, engine.terms, "", d)) return bound;
+  if (unglued && *unglued) {
+    d = std::move(**unglued), bound = d.bound;
+    unglued->reset();
+  } else if (read(engine.R, engine.terms, "", d)) {
+    return bound;
+  }
   const Regions* parent = &engine.R;
   std::unique_ptr<Level> level;
   // (Each level costs a dual as large as the first: on hundreds of strips, a
   // 131k-cell DEM at k = 5 has 358, that is minutes per level, for gaps already
   // under 2 %.)
   constexpr uint32_t kMaxGlued = 128;
-  if (gluable) *gluable = gap() && !d.relaxed && d.graphs >= 2 && d.graphs <= kMaxGlued;
-  for (uint32_t times = 1; times <= max_glue && gap() && !d.relaxed && d.graphs >= 2 && d.graphs <= kMaxGlued; ++times) {
+  auto gluable = [&] { return gap() && !d.relaxed && d.graphs >= 2 && d.graphs <= kMaxGlued; };
+  if (unglued && max_glue == 0 && gluable()) {
+    d.found.clear(), d.values.clear();  // (the glue reads only the graphs' sizes: no triangulations held meanwhile)
+    *unglued = std::move(d);
+  }
+  for (uint32_t times = 1; times <= max_glue && gluable(); ++times) {
     std::unique_ptr<Level> first = glue(*parent, d, {});
     if (!first) break;
     const std::string glued = ", the regions glued in pairs " + std::to_string(times) + " times";
@@ -349,10 +361,11 @@ std::optional<double> bound_by_fill_graphs(const Mesh& dt, Objective o, RegionEn
 // best triangulation found optimal (r.optimal, r.method "exact") or finds the
 // optimum, by pruning and the DP over what is left. It needs every region
 // listed whole (list_whole); else the regions not listed whole are read through
-// their fill graphs, unglued (*gluable: whether gluing might tighten the bound).
-// Returns the bound (nothing if it does not apply).
+// their fill graphs, unglued (`unglued`: that reading, when gluing might tighten
+// its bound). Returns the bound (nothing if it does not apply).
 std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& engine, KOrderResult& r, std::string& how,
-                                    const std::string& refused, const Progress& progress, bool& gluable) {
+                                    const std::string& refused, const Progress& progress,
+                                    std::optional<RegionDual>& unglued) {
   Regions& R = engine.R;
   RegionModel& model = engine.model;
   const Sense sense = info(o).sense;
@@ -360,7 +373,7 @@ std::optional<double> prove_by_dual(const Mesh& dt, Objective o, RegionEngine& e
   DualLimits dual;
   dual.progress = progress;
   dual.max_rounds = 2;
-  if (R.incomplete) return bound_by_fill_graphs(dt, o, engine, r, how, progress, 0, kDualSweeps, &gluable);
+  if (R.incomplete) return bound_by_fill_graphs(dt, o, engine, r, how, progress, 0, kDualSweeps, &unglued);
   StateDpLimits dl;
   dl.progress = progress;
   // Two clusterings in turn: the ascent stops at a fixed point of its own in
@@ -639,36 +652,18 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // max-convex-edges, 1.1 s.)
   auto relaxed = [&] { return tighter(sense, relaxation_bound(model.graph, dl), global); };
   const bool dual_first = provable && options.method != Method::Approx;
-  bool gluable = false;
+  std::optional<RegionDual> unglued;  // (the fill graphs' first reading, when glue might tighten it)
   double bound = refuted ? r.value : dual_first ? global : relaxed();
   if (description.combine == TermCombine::Max) bound = tighter(sense, bound, terms.floor());
   // Counts: the dual before the views (it proves most instances on its own: a
   // 131k-cell DEM at k = 4, max-convex-vertices, where the views cost twice the
   // dual and proved nothing).
   if (provable && better(sense, bound, r.value)) {
-    if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, options.progress, gluable)) {
+    if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, options.progress, unglued)) {
       if (r.optimal) return r;
       bound = tighter(sense, bound, *d);
     }
     if (dual_first) bound = tighter(sense, bound, relaxed());
-  }
-  // Counts and lengths: the bound from the vertices' stars, which lists no
-  // region (one region of thousands of triangles, as from k = 6 on the volcano,
-  // too); the views below only where it leaves a gap (a 10,000-point DEM sample
-  // at k = 4, min-mixed-vertices: the stars prove 1221, the views, a fifth of
-  // the time when they came first, proved nothing; on the volcano at k = 5 to 8
-  // every count and length ends the same either way).
-  if (description.combine == TermCombine::Sum && better(sense, bound, r.value))
-    bound = by_stars(dt, o, k, cand, r, bound, how, options.progress, memo);
-  // The regions' fill graphs glued in pairs only now, where the stars left a gap
-  // (the first reading again, then the glued ones: 10,000 DEM points at k = 4,
-  // min-mixed-vertices, 26 -> 21 s, the stars prove what two levels of glue
-  // did not; the volcano at k = 4, max-convex-edges, 9.3 -> 7.0 s).
-  if (gluable && better(sense, bound, r.value)) {
-    if (const std::optional<double> d = bound_by_fill_graphs(dt, o, engine, r, how, options.progress, kMaxGlue)) {
-      if (r.optimal) return r;
-      bound = tighter(sense, bound, *d);
-    }
   }
   ViewBoundLimits vl;
   vl.views.progress = vl.dp.progress = options.progress;
@@ -703,6 +698,19 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     if (const auto f = star_floor(dt, o, cand, stars); f && better(sense, bound, *f)) {
       bound = *f;
       how += ", bound from the vertices' fans";
+    }
+  }
+  // Counts and lengths: the bound from the vertices' stars, which lists no
+  // region (one region of thousands of triangles, as from k = 6 on the volcano, too).
+  if (description.combine == TermCombine::Sum && better(sense, bound, r.value))
+    bound = by_stars(dt, o, k, cand, r, bound, how, options.progress, memo);
+  // The regions' fill graphs glued in pairs only now, where the stars left a gap
+  // (10,000 DEM points at k = 4, min-mixed-vertices, 30 -> 25 s, and the 131k-cell
+  // DEM, 78 -> 70 s: the stars prove what two levels of glue did not).
+  if (unglued && better(sense, bound, r.value)) {
+    if (const std::optional<double> d = bound_by_fill_graphs(dt, o, engine, r, how, options.progress, kMaxGlue, kDualSweeps, &unglued)) {
+      if (r.optimal) return r;
+      bound = tighter(sense, bound, *d);
     }
   }
   r.bound = sense == Sense::Min ? std::min(bound, r.value) : std::max(bound, r.value);
