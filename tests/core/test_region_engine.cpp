@@ -376,9 +376,9 @@ TEST_CASE("long regions glued: counts on a gridded DEM at order 4 read through g
   // Column strips of 2 x 60 vertices coupled along whole sides: the dual over
   // their fill graphs leaves a gap, and gluing them in pairs is tried (on 2 x 40,
   // the proof's targets short of the bound (region_dual.cpp) prove every
-  // objective unglued). The vertices' stars, which come first, prove all three;
-  // within a domain that holds every triangle (the same measures) they do not
-  // apply, and the glue is what is left.
+  // objective unglued). The vertices' stars, which come before the glue, prove
+  // all three; within a domain that holds every triangle (the same measures)
+  // they do not apply, and the glue is what is left.
   FirstOrder fo = first_order(delaunay(validate_points(cone_grid(12, 61)).xyz));
   int glued = 0;
   for (const double max_edge : {double(INFINITY), 1e9})
