@@ -55,9 +55,7 @@ class Layer {
     const uint32_t sizes[4] = {static_cast<uint32_t>(2 * c.open.size()), static_cast<uint32_t>(c.behind.size()),
                                static_cast<uint32_t>(c.around.size()), static_cast<uint32_t>(c.signature.size())};
     WordsHasher hasher;
-    for (uint64_t e : c.open) hasher.add(static_cast<uint32_t>(e >> 32)), hasher.add(static_cast<uint32_t>(e));
-    for (const auto* part : {&c.behind, &c.around, &c.signature})
-      for (uint32_t x : *part) hasher.add(x);
+    key_words(c, [&](uint32_t x) { return hasher.add(x), true; });
     size_t hash = hasher.done();
     for (uint32_t n : sizes) hash = hash * 31 + n;
     if (2 * (states.size() + 1) > slots_.size()) grow();
@@ -67,8 +65,7 @@ class Layer {
       if (s == kEmpty) {
         slots_[i] = static_cast<uint32_t>(states.size());
         states.push_back({words_.size(), {sizes[0], sizes[1], sizes[2], sizes[3]}, c.value, c.node, hash});
-        for (uint64_t e : c.open) words_.push_back(static_cast<uint32_t>(e >> 32)), words_.push_back(static_cast<uint32_t>(e));
-        for (const auto* part : {&c.behind, &c.around, &c.signature}) words_.insert(words_.end(), part->begin(), part->end());
+        key_words(c, [&](uint32_t x) { return words_.push_back(x), true; });
         return slots_[i];
       }
       Stored& t = states[s];
@@ -111,18 +108,21 @@ class Layer {
  private:
   static constexpr uint32_t kEmpty = UINT32_MAX;
   std::vector<uint32_t> words_, slots_;
+  // c's key word by word, as stored (each open edge: its ends), while
+  // visit(word) returns true; returns whether it did to the end.
+  template <class Visit>
+  static bool key_words(const Partial& c, Visit&& visit) {
+    for (uint64_t e : c.open)
+      if (!visit(static_cast<uint32_t>(e >> 32)) || !visit(static_cast<uint32_t>(e))) return false;
+    for (const auto* part : {&c.behind, &c.around, &c.signature})
+      for (uint32_t x : *part)
+        if (!visit(x)) return false;
+    return true;
+  }
   // Whether t's key is c's (their sizes equal).
   bool same_key(const Stored& t, const Partial& c) const {
     const uint32_t* w = words_.data() + t.at;
-    for (uint64_t e : c.open) {
-      if (w[0] != static_cast<uint32_t>(e >> 32) || w[1] != static_cast<uint32_t>(e)) return false;
-      w += 2;
-    }
-    for (const auto* part : {&c.behind, &c.around, &c.signature}) {
-      if (!std::equal(part->begin(), part->end(), w)) return false;
-      w += part->size();
-    }
-    return true;
+    return key_words(c, [&](uint32_t x) { return *w++ == x; });
   }
   void grow() {
     slots_.assign(std::max<size_t>(64, 2 * slots_.size()), kEmpty);
