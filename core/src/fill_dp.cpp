@@ -169,6 +169,7 @@ class FillDp {
          Recorder* record = nullptr)
       : dt_(dt), cand_(cand), T_(terms), r_(r), keep_(keep), record_(record) {}
 
+  // (layers_: the layers done, every kept partial fill that many triangles in)
   std::optional<std::vector<BestFill>> run(uint64_t max_states, const Progress& progress, uint64_t* used) {
     Partial start;
     for (auto [a, b] : T_.regions().regions[r_].boundary) start.open.push_back(edge_key(a, b));
@@ -209,6 +210,7 @@ class FillDp {
         });
       }
       base = next_base;
+      ++layers_;
       if (record_) record_->graph.nodes = base + static_cast<uint32_t>(next->states.size());
       states += next->states.size();
       if (used) *used += next->states.size();
@@ -225,6 +227,8 @@ class FillDp {
     return out;
   }
 
+  uint32_t layers() const { return layers_; }
+
  private:
   const Mesh& dt_;
   const Candidates& cand_;
@@ -232,6 +236,7 @@ class FillDp {
   uint32_t r_;
   const std::vector<Tri>* keep_;  // sorted items whose entries are kept (all if null)
   Recorder* record_;              // records the fill graph (with keep_ empty)
+  uint32_t layers_ = 0;
   std::vector<Node> nodes_;    // kept states' (parent, last triangle)
   std::vector<Node> pending_;  // this layer's children, before merging
   SignatureEntry entry_;
@@ -433,9 +438,14 @@ class FillDp {
 
 std::optional<std::vector<BestFill>> best_fills(const Mesh& dt, const Candidates& candidates, const RegionTerms& terms,
                                                 uint32_t region, uint64_t max_states, const Progress& progress,
-                                                uint64_t* states_used, const std::vector<Tri>* keep_items) {
+                                                uint64_t* states_used, const std::vector<Tri>* keep_items,
+                                                double* swept) {
   FillDp dp(dt, candidates, terms, region, keep_items);
-  return dp.run(max_states, progress, states_used);
+  auto fills = dp.run(max_states, progress, states_used);
+  if (swept)
+    *swept = fills ? 1.0
+                   : dp.layers() / static_cast<double>(terms.regions().regions[region].delaunay_triangles.size());
+  return fills;
 }
 
 }  // namespace hodt

@@ -156,7 +156,7 @@ void enumerate_regions(const Mesh& dt, Regions& out, const RegionLimits& limits)
   // The best triangulation per signature, by dynamic programming: false when
   // it needs more than `budget` partial fills.
   auto by_dp = [&](Region& region, uint32_t r, uint64_t budget) {
-    auto fills = best_fills(dt, candidates, *terms, r, budget, limits.progress, &dp_used);
+    auto fills = best_fills(dt, candidates, *terms, r, budget, limits.progress, &dp_used, nullptr, &region.swept);
     if (!fills) return false;
     std::stable_sort(fills->begin(), fills->end(),
                      [&](const BestFill& a, const BestFill& b) { return terms->better(a.value, b.value); });

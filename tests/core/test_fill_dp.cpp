@@ -74,8 +74,15 @@ TEST_CASE("fill DP: a budget too small is reported, not answered") {
   const Candidates cand = k_order_candidates(dt, 4, R.useful);
   const RegionTerms T(dt, R, Objective::MinmaxEdgeAreaRatio);
   bool refused = false;
-  for (uint32_t r = 0; r < R.regions.size(); ++r)
-    if (R.regions[r].delaunay_triangles.size() > 6) refused = refused || !best_fills(dt, cand, T, r, 10);
+  for (uint32_t r = 0; r < R.regions.size(); ++r) {
+    if (R.regions[r].delaunay_triangles.size() <= 6) continue;
+    // How far the sweep got: a share of the triangles, 1 only when it fits.
+    double tight = -1, wide = -1;
+    const bool fits = best_fills(dt, cand, T, r, 10, {}, nullptr, nullptr, &tight).has_value();
+    refused = refused || !fits;
+    CHECK((fits ? tight == 1 : tight >= 0 && tight < 1));
+    if (!fits && best_fills(dt, cand, T, r, 2'000'000, {}, nullptr, nullptr, &wide)) CHECK(wide == 1);
+  }
   CHECK(refused);
 }
 

@@ -31,9 +31,11 @@ struct BestFill {
 // fills would be kept in all (*states_used counts them either way).
 // keep_items (sorted RegionTerms items): signatures keep only the entries about
 // these, the others' terms count as 0 (region_views.hpp); all when null.
+// *swept (when given): the share of the region's triangles that the kept
+// partial fills had placed when the budget ran out (1 when it did not).
 std::optional<std::vector<BestFill>> best_fills(const Mesh& delaunay, const Candidates& candidates,
                                                 const RegionTerms& terms, uint32_t region, uint64_t max_states,
                                                 const Progress& progress = {}, uint64_t* states_used = nullptr,
-                                                const std::vector<Tri>* keep_items = nullptr);
+                                                const std::vector<Tri>* keep_items = nullptr, double* swept = nullptr);
 
 }  // namespace hodt

@@ -26,6 +26,9 @@ struct Region {
   // triangles counterclockwise, starting at their smallest vertex, sorted.
   std::vector<std::vector<Tri>> states;
   bool complete = true;  // every k-OD triangulation of the region is in states
+  // How far the DP by signature (fill_dp.hpp) got when its budget ran out: the
+  // share of the region's triangles placed (1: it did not run out).
+  double swept = 1;
 };
 
 struct Regions {
