@@ -547,12 +547,13 @@ std::vector<uint32_t> improve_by_windows(const StateGraph& g, std::vector<uint32
   const Ops ops{g.combine, g.sense};
   const bool max_only = g.combine == TermCombine::Max;
   double whole = max_only ? evaluate_states(g, x) : 0.0;
-  for (int pass = 0; pass < 2; ++pass) {
+  for (int pass = 0;; ++pass) {
     bool improved = false;
+    const double whole_before = whole;
     std::vector<uint8_t> covered(n, 0);
     for (uint32_t seed = 0; seed < n; ++seed) {
       if (covered[seed] || g.domain[seed] < 2) continue;
-      if (limits.progress && !limits.progress(pass * double(n) + seed, 2.0 * n)) throw Cancelled();
+      if (limits.progress && !limits.progress(std::min(pass, 1) * double(n) + seed, 2.0 * n)) throw Cancelled();
       // The window: a breadth-first ball of variables with a choice.
       std::vector<uint32_t> ball = {seed};
       local[seed] = 0;
@@ -609,7 +610,9 @@ std::vector<uint32_t> improve_by_windows(const StateGraph& g, std::vector<uint32
       for (uint32_t v : ball) covered[v] = 1, local[v] = UINT32_MAX;
       for (uint32_t w : fixed) local[w] = UINT32_MAX;
     }
-    if (!improved) break;
+    // Two passes; min-max, more while a pass lowers the whole's worst term (the
+    // windows it skipped before may hold it now; it takes finitely many values).
+    if (!improved || (pass >= 1 && !(max_only && ops.better(whole, whole_before)))) break;
   }
   return x;
 }

@@ -108,8 +108,27 @@ TEST_CASE("state graph: min-max over independent components is the largest of th
     const StateDpResult r = solve_states(g);
     CHECK(r.value == want);
     CHECK(evaluate_states(g, r.state) == r.value);
+    // Windows over whole components from any start: each component's worst
+    // term is lowered in turn, as the whole's worst moves from one to the next.
+    std::vector<uint32_t> start(g.domain.size());
+    for (size_t x = 0; x < start.size(); ++x) start[x] = static_cast<uint32_t>(rng() % g.domain[x]);
+    CHECK(evaluate_states(g, improve_by_windows(g, start, {}, 64)) == want);
   }
   CHECK(split > 1000);
+}
+
+TEST_CASE("state graph: min-max windows follow the worst term from component to component") {
+  // Three variables alone, each at its worse state: the worst term is lowered in
+  // turn at the third, the second, then the first (windows before the worst term
+  // cannot lower it, so a pass skips them; another pass comes back).
+  StateGraph g;
+  g.combine = TermCombine::Max;
+  g.sense = Sense::Min;
+  g.domain = {2, 2, 2};
+  g.unary = {{8, 1}, {9, 2}, {10, 3}};
+  g.unary_terms.assign(3, 1);
+  g.partial.assign(3, 0);
+  CHECK(evaluate_states(g, improve_by_windows(g, {0, 0, 0}, {}, 1)) == 3);
 }
 
 TEST_CASE("state graph: arc consistency refutes a min-max threshold only at or below the optimum") {
