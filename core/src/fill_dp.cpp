@@ -169,7 +169,6 @@ class FillDp {
          Recorder* record = nullptr)
       : dt_(dt), cand_(cand), T_(terms), r_(r), keep_(keep), record_(record) {}
 
-  // (layers_: the layers done, every kept partial fill that many triangles in)
   std::optional<std::vector<BestFill>> run(uint64_t max_states, const Progress& progress, uint64_t* used) {
     Partial start;
     for (auto [a, b] : T_.regions().regions[r_].boundary) start.open.push_back(edge_key(a, b));
@@ -236,7 +235,7 @@ class FillDp {
   uint32_t r_;
   const std::vector<Tri>* keep_;  // sorted items whose entries are kept (all if null)
   Recorder* record_;              // records the fill graph (with keep_ empty)
-  uint32_t layers_ = 0;
+  uint32_t layers_ = 0;            // layers done: every kept partial fill has that many triangles
   std::vector<Node> nodes_;    // kept states' (parent, last triangle)
   std::vector<Node> pending_;  // this layer's children, before merging
   SignatureEntry entry_;

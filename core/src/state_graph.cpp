@@ -563,8 +563,26 @@ std::vector<uint32_t> improve_by_windows(const StateGraph& g, std::vector<uint32
             local[w] = static_cast<uint32_t>(ball.size());
             ball.push_back(w);
           }
-      // Its graph: the ball's variables, and the factors that read them with every
-      // other variable fixed at x (a variable of one state).
+      // The factors that read the ball, and what the ball's terms come to now
+      // (read off g: a window that is skipped builds nothing).
+      ++window_id;
+      std::vector<uint32_t> read;
+      double now = ops.zero();
+      for (uint32_t v : ball) {
+        now = ops.add(now, g.unary[v][x[v]]);
+        for (uint32_t i : factors_of[v])
+          if (in_window[i] != window_id) {
+            in_window[i] = window_id;
+            read.push_back(i);
+            now = ops.add(now, g.factors[i].table[factor_index(g.factors[i], x)]);
+          }
+      }
+      if (max_only && ops.better(now, whole)) {
+        for (uint32_t v : ball) covered[v] = 1, local[v] = UINT32_MAX;
+        continue;
+      }
+      // Its graph: the ball's variables, and those factors with every other
+      // variable fixed at x (a variable of one state).
       StateGraph h;
       h.combine = g.combine, h.sense = g.sense, h.term_max = g.term_max;
       for (uint32_t v : ball) {
@@ -572,41 +590,34 @@ std::vector<uint32_t> improve_by_windows(const StateGraph& g, std::vector<uint32
         h.unary.push_back(g.unary[v]);
       }
       std::vector<uint32_t> fixed;
-      ++window_id;
-      for (uint32_t v : ball)
-        for (uint32_t i : factors_of[v]) {
-          if (in_window[i] == window_id) continue;
-          in_window[i] = window_id;
-          StateFactor f = g.factors[i];
-          for (size_t j = 0; j < f.scope.size(); ++j) {
-            uint32_t& w = f.scope[j];
-            if (local[w] == UINT32_MAX) {
-              f.project[j] = {f.project[j][x[w]]};
-              fixed.push_back(w);
-              local[w] = static_cast<uint32_t>(h.domain.size());
-              h.domain.push_back(1);
-              h.unary.push_back({0.0});
-            } else if (local[w] >= ball.size()) {
-              f.project[j] = {f.project[j][x[w]]};
-            }
-            w = local[w];
+      for (uint32_t i : read) {
+        StateFactor f = g.factors[i];
+        for (size_t j = 0; j < f.scope.size(); ++j) {
+          uint32_t& w = f.scope[j];
+          if (local[w] == UINT32_MAX) {
+            f.project[j] = {f.project[j][x[w]]};
+            fixed.push_back(w);
+            local[w] = static_cast<uint32_t>(h.domain.size());
+            h.domain.push_back(1);
+            h.unary.push_back({0.0});
+          } else if (local[w] >= ball.size()) {
+            f.project[j] = {f.project[j][x[w]]};
           }
-          h.factors.push_back(std::move(f));
+          w = local[w];
         }
+        h.factors.push_back(std::move(f));
+      }
       h.unary_terms.assign(h.domain.size(), 0);
       h.partial.assign(h.domain.size(), 0);
-      std::vector<uint32_t> current(h.domain.size(), 0);
-      for (size_t i = 0; i < ball.size(); ++i) current[i] = x[ball[i]];
-      const double now = evaluate_states(h, current);
-      if (!max_only || !ops.better(now, whole)) try {
-          const StateDpResult r = solve_states(h, limits);
-          if (ops.better(r.value, now)) {
-            for (size_t i = 0; i < ball.size(); ++i) x[ball[i]] = r.state[i];
-            improved = true;
-            if (max_only) whole = evaluate_states(g, x);
-          }
-        } catch (const LimitError&) {
+      try {
+        const StateDpResult r = solve_states(h, limits);
+        if (ops.better(r.value, now)) {
+          for (size_t i = 0; i < ball.size(); ++i) x[ball[i]] = r.state[i];
+          improved = true;
+          if (max_only) whole = evaluate_states(g, x);
         }
+      } catch (const LimitError&) {
+      }
       for (uint32_t v : ball) covered[v] = 1, local[v] = UINT32_MAX;
       for (uint32_t w : fixed) local[w] = UINT32_MAX;
     }
