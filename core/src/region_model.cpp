@@ -7,6 +7,7 @@
 
 #include "hodt/error.hpp"
 #include "hodt/measures.hpp"
+#include "hodt/neighbor_filter.hpp"
 #include "hodt/region_terms.hpp"
 
 namespace hodt {
@@ -32,6 +33,7 @@ struct Fans {
   std::vector<uint32_t> vertices;                  // sorted
   std::vector<std::vector<uint32_t>> class_of;     // per local vertex, per state
   std::vector<std::vector<std::vector<Tri>>> fan;  // per local vertex, per class
+  std::vector<uint8_t> merged;                     // per local vertex: merge_classes ran
   uint32_t local(uint32_t v) const {
     return static_cast<uint32_t>(std::lower_bound(vertices.begin(), vertices.end(), v) - vertices.begin());
   }
@@ -84,6 +86,28 @@ Fans fans_of(const Mesh& dt, const ObjectiveTerms& d, const std::vector<std::vec
     }
   }
   return f;
+}
+
+// Classes at local vertex i whose neighbour sets no other neighbours can tell
+// apart (NeighborFilter: the same cone of neighbours) made one: fewer entries
+// in the tables of a vertex that regions share. (Not worth its cost for a
+// vertex that one region decides alone.)
+void merge_classes(const NeighborFilter& filter, Fans& f, uint32_t i) {
+  if (f.merged.empty()) f.merged.assign(f.vertices.size(), 0);
+  if (f.merged[i] || !filter.active()) return;
+  f.merged[i] = 1;
+  std::map<std::vector<uint32_t>, uint32_t> reduced;
+  std::vector<uint32_t> to(f.fan[i].size()), nb;
+  std::vector<std::vector<Tri>> kept;
+  for (uint32_t c = 0; c < f.fan[i].size(); ++c) {
+    star_neighbors(f.vertices[i], f.fan[i][c], nb);
+    filter.reduce(f.vertices[i], nb);
+    const auto [it, fresh] = reduced.try_emplace(nb, static_cast<uint32_t>(kept.size()));
+    if (fresh) kept.push_back(std::move(f.fan[i][c]));
+    to[c] = it->second;
+  }
+  f.fan[i] = std::move(kept);
+  for (uint32_t& c : f.class_of[i]) c = to[c];
 }
 
 // The apex of directed edge u -> v in a list of counterclockwise triangles.
@@ -227,6 +251,8 @@ struct Builder {
   void vertex_terms(double max_factor, VertexTermMemo* memo) {
     std::vector<Fans> fans(src.size());
     std::vector<uint8_t> have(src.size(), 0);
+    const NeighborFilter filter(dt, R, d);
+    const bool by_neighbors = !reads_star_triangles(d) && !d.neighbor_class && !d.term_of_degree;
     auto fans_at = [&](uint32_t i) -> const Fans& {
       if (!have[i]) {
         const std::vector<Tri>* items = i == first_src[src[i].region] ? nullptr : src[i].items;
@@ -260,8 +286,11 @@ struct Builder {
           fixed.insert(fixed.end(), fan.begin(), fan.end());
         } else {
           choice_regions.push_back(r), local.push_back(lv);
-          size *= static_cast<double>(f.fan[lv].size());
         }
+      }
+      for (size_t j = 0; j < choice_regions.size(); ++j) {
+        if (choice_regions.size() > 1 && by_neighbors) merge_classes(filter, fans[choice_regions[j]], local[j]);
+        size *= static_cast<double>(fans[choice_regions[j]].fan[local[j]].size());
       }
       auto term = [&](const std::vector<uint32_t>& cls) {
         tris = fixed;
