@@ -598,6 +598,14 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     return true;
   };
   if (start_proven()) return r;
+  // r: the best combination of the regions' listed triangulations, or the start
+  // when better (relaxed terms can mislead the search); returns how it was found.
+  auto take_listed = [&](const ListedBest& listed) {
+    r.triangulation = R.triangulation(dt, listed.regions);
+    r.value = evaluate(o, r.triangulation);
+    if (better(sense, start_value, r.value)) r.triangulation = start, r.value = start_value;
+    return listed.how;
+  };
   std::vector<uint8_t> changed(R.regions.size(), 0);
   bool added = add_states_of(R, dt, start, &changed);
   // Counts up to order 4 with regions not listed whole: a short reading of their
@@ -612,16 +620,12 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   if (provable && k < 5 && R.incomplete && options.method != Method::Approx) {
     if (added) model = update_region_model(std::move(model), dt, R, o, changed, engine.model_limits, options.progress);
     changed.assign(R.regions.size(), 0), added = false;
-    std::vector<size_t> listed(R.regions.size());
-    for (size_t i = 0; i < R.regions.size(); ++i) listed[i] = R.regions[i].states.size();
-    const ListedBest quick = engine.best_listed(listed_states(R, start), options.progress);
-    r.triangulation = R.triangulation(dt, quick.regions);
-    r.value = evaluate(o, r.triangulation);
-    if (better(sense, start_value, r.value)) r.triangulation = start, r.value = start_value;
-    std::string how = quick.how;
+    std::vector<size_t> counts(R.regions.size());
+    for (size_t i = 0; i < R.regions.size(); ++i) counts[i] = R.regions[i].states.size();
+    std::string how = take_listed(engine.best_listed(listed_states(R, start), options.progress));
     bound_by_fill_graphs(dt, o, engine, r, how, options.progress, 0, kQuickSweeps);
     if (r.optimal) return r;
-    for (size_t i = 0; i < R.regions.size(); ++i) R.regions[i].states.resize(listed[i]);
+    for (size_t i = 0; i < R.regions.size(); ++i) R.regions[i].states.resize(counts[i]);
   }
   solve_lower();
   if (lower) {
@@ -643,13 +647,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     r.details = region_summary(R) + "; the start meets the mini-bucket bound (exact refused: " + refused + ")";
     return r;
   }
-  std::string how = listed.how;
-  r.triangulation = R.triangulation(dt, listed.regions);
-  r.value = evaluate(o, r.triangulation);
-  if (better(sense, start_value, r.value)) {  // (relaxed terms can mislead the search)
-    r.triangulation = std::move(start);
-    r.value = start_value;
-  }
+  std::string how = take_listed(listed);
   const std::string proof = min_max_proof(r.value);
   const bool refuted = !proof.empty();
   if (refuted) how += "; " + proof;
