@@ -611,9 +611,10 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // Counts up to order 4 with regions not listed whole: a short reading of their
   // fill graphs from the best listed combination, before the ladder's lower
   // order, which can cost as much as this order's engine. It proves most real
-  // terrains (10,000 DEM points at k = 4, max-convex-vertices, 4.3 -> 2.9 s; the
-  // 131k-cell DEM, 24 -> 19 s) and costs about a second where it does not (a
-  // smooth DEM sample, the volcano). Proof or nothing: else the regions are left
+  // terrains (10,000 DEM points at k = 4, max-convex-vertices, 4.3 -> 2.6 s in
+  // the benchmark; the 131k-cell DEM, 17 s either way) and costs about a second
+  // where it does not (a smooth DEM sample, the volcano; min-mixed-vertices,
+  // which the stars prove, if anything). Proof or nothing: else the regions are left
   // as they were (what its descents find can be a worse start for the rest: on
   // the smooth sample, max-convex-vertices, 4711 for a bound of 4712 led the rest
   // to a bound in 21 s, the rung's start to the proof in 4).
