@@ -58,6 +58,7 @@ Fans fans_of(const Mesh& dt, const ObjectiveTerms& d, const std::vector<std::vec
   const size_t nv = f.vertices.size();
   f.class_of.assign(nv, std::vector<uint32_t>(states.size()));
   f.fan.assign(nv, {});
+  f.merged.assign(nv, 0);
   std::vector<std::map<std::vector<Tri>, uint32_t>> ids(nv);
   std::vector<std::vector<Tri>> around(nv);
   std::vector<Tri> key;
@@ -93,8 +94,7 @@ Fans fans_of(const Mesh& dt, const ObjectiveTerms& d, const std::vector<std::vec
 // in the tables of a vertex that regions share. (Not worth its cost for a
 // vertex that one region decides alone.)
 void merge_classes(const NeighborFilter& filter, Fans& f, uint32_t i) {
-  if (f.merged.empty()) f.merged.assign(f.vertices.size(), 0);
-  if (f.merged[i] || !filter.active()) return;
+  if (f.merged[i] || !filter.active()) return;  // (active: terms over neighbour sets, drop_neighbors)
   f.merged[i] = 1;
   std::map<std::vector<uint32_t>, uint32_t> reduced;
   std::vector<uint32_t> to(f.fan[i].size()), nb;
@@ -252,7 +252,6 @@ struct Builder {
     std::vector<Fans> fans(src.size());
     std::vector<uint8_t> have(src.size(), 0);
     const NeighborFilter filter(dt, R, d);
-    const bool by_neighbors = !reads_star_triangles(d) && !d.neighbor_class && !d.term_of_degree;
     auto fans_at = [&](uint32_t i) -> const Fans& {
       if (!have[i]) {
         const std::vector<Tri>* items = i == first_src[src[i].region] ? nullptr : src[i].items;
@@ -289,7 +288,7 @@ struct Builder {
         }
       }
       for (size_t j = 0; j < choice_regions.size(); ++j) {
-        if (choice_regions.size() > 1 && by_neighbors) merge_classes(filter, fans[choice_regions[j]], local[j]);
+        if (choice_regions.size() > 1) merge_classes(filter, fans[choice_regions[j]], local[j]);
         size *= static_cast<double>(fans[choice_regions[j]].fan[local[j]].size());
       }
       auto term = [&](const std::vector<uint32_t>& cls) {
