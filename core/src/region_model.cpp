@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <optional>
 #include <unordered_set>
 
 #include "hodt/error.hpp"
@@ -94,7 +95,7 @@ Fans fans_of(const Mesh& dt, const ObjectiveTerms& d, const std::vector<std::vec
 // in the tables of a vertex that regions share. (Not worth its cost for a
 // vertex that one region decides alone.)
 void merge_classes(const NeighborFilter& filter, Fans& f, uint32_t i) {
-  if (f.merged[i] || !filter.active()) return;  // (active: terms over neighbour sets, drop_neighbors)
+  if (f.merged[i]) return;
   f.merged[i] = 1;
   std::map<std::vector<uint32_t>, uint32_t> reduced;
   std::vector<uint32_t> to(f.fan[i].size()), nb;
@@ -251,7 +252,9 @@ struct Builder {
   void vertex_terms(double max_factor, VertexTermMemo* memo) {
     std::vector<Fans> fans(src.size());
     std::vector<uint8_t> have(src.size(), 0);
-    const NeighborFilter filter(dt, R, d);
+    // (Only terms over neighbour sets drop neighbours: a filter for them alone.)
+    const std::optional<NeighborFilter> filter =
+        d.drop_neighbors ? std::optional<NeighborFilter>(std::in_place, dt, R, d) : std::nullopt;
     auto fans_at = [&](uint32_t i) -> const Fans& {
       if (!have[i]) {
         const std::vector<Tri>* items = i == first_src[src[i].region] ? nullptr : src[i].items;
@@ -288,7 +291,7 @@ struct Builder {
         }
       }
       for (size_t j = 0; j < choice_regions.size(); ++j) {
-        if (choice_regions.size() > 1) merge_classes(filter, fans[choice_regions[j]], local[j]);
+        if (filter && choice_regions.size() > 1) merge_classes(*filter, fans[choice_regions[j]], local[j]);
         size *= static_cast<double>(fans[choice_regions[j]].fan[local[j]].size());
       }
       auto term = [&](const std::vector<uint32_t>& cls) {
