@@ -4,7 +4,7 @@
 
 namespace hodt {
 
-DiamondEnds::DiamondEnds(const FanTrees& t, const std::vector<uint32_t>& members, const std::vector<uint8_t>& in,
+DiamondEnds::DiamondEnds(const FanTrees& t, const std::vector<uint32_t>& members, const std::vector<uint32_t>& position,
                          const FanLister& lister)
     : at_node_(t.corner.size(), kNone), at_leaf_(t.leaf.size(), kNone), member_(1, kNoFanNode) {
   using Key = std::array<uint32_t, 3>;  // (the neighbour, the one before it, the one after)
@@ -41,11 +41,10 @@ DiamondEnds::DiamondEnds(const FanTrees& t, const std::vector<uint32_t>& members
   }
   first_end[members.size()] = static_cast<uint32_t>(member_.size());
   // Each end's other end: at the neighbour, the diamond mirrored.
-  const uint32_t lo = members.empty() ? 0 : members.front();
   for (uint32_t e = 1; e < member_.size(); ++e) {
     const uint32_t a = members[member_[e]], b = key[e][0];
-    if (b < a || b - lo >= members.size() || !in[b]) continue;  // (each pair once, from its smaller end)
-    const uint32_t j = b - lo;
+    if (b < a || position[b] == kNoFanNode) continue;  // (each pair once, from its smaller end)
+    const uint32_t j = position[b];  // (no fans listed: no ends, none found)
     const FanSide seen = mirrored({true, key[e][1], key[e][2]});
     const Key mirror{a, seen.before, seen.after};
     const auto from = key.begin() + first_end[j], to = key.begin() + first_end[j + 1];

@@ -19,17 +19,17 @@ class DiamondEnds {
  public:
   static constexpr uint32_t kNone = 0;  // (no end: its multiplier stays 0)
 
-  // members: the tile's vertices, consecutive numbers, their trees in t in
-  // order; in: whether each vertex's fans are listed.
-  DiamondEnds(const FanTrees& t, const std::vector<uint32_t>& members, const std::vector<uint8_t>& in,
+  // members: the tile's vertices, their trees in t in order; position: per
+  // vertex, its place in members (kNoFanNode: not a member).
+  DiamondEnds(const FanTrees& t, const std::vector<uint32_t>& members, const std::vector<uint32_t>& position,
               const FanLister& lister);
 
   uint32_t at_node(uint64_t x) const { return at_node_[x]; }
   uint32_t at_leaf(uint64_t f) const { return at_leaf_[f]; }
   uint32_t member(uint32_t e) const { return member_[e]; }  // (its position in members)
   size_t size() const { return member_.size(); }             // (kNone included)
-  // The two ends of every diamond both ends' vertices hold, in the tile and
-  // listed (the end at the smaller first). An end without its other stays
+  // The two ends of every diamond both ends' vertices hold, members with fans
+  // listed (the end at the smaller vertex first). An end without its other stays
   // unpaired, its multiplier 0.
   const std::vector<std::array<uint32_t, 2>>& pairs() const { return pairs_; }
 
