@@ -1,8 +1,10 @@
 #include "hodt/star_bound.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
 #include "hodt/diamond_ends.hpp"
 #include "hodt/domain.hpp"
@@ -85,10 +87,9 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     return integral ? static_cast<double>(floor_div(sum, kUnit)) : static_cast<double>(-floor_div(-sum, kUnit)) / scale;
   };
   uint32_t tiles = 0, done = 0;  // (done: the vertices of the tiles swept; progress: listed + swept)
-  uint64_t visits = 0;  // (fan tree nodes, by the sweeps: their work)
+  uint64_t visits = 0;  // (fans read by the sweeps: their work)
   std::vector<uint32_t> seq, scratch;
   std::vector<int64_t> acc, lambda, best_lambda;
-  std::vector<uint8_t> has;
   uint32_t v = 0;  // (the next vertex to list)
   do {
     // List the next tile.
@@ -174,31 +175,76 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     // is as large as the largest vertex's trees, not all of them).
     uint64_t widest = 0;
     for (uint32_t i = 0; i < m; ++i) widest = std::max(widest, t.first_node[i + 1] - t.first_node[i]);
-    acc.assign(widest, 0), has.assign(widest, 0);
-    // The best fan of member i with end e and the best without (e's own
-    // multiplier left out; INT64_MIN: none).
-    auto split = [&](uint32_t i, uint32_t e) {
-      int64_t with = INT64_MIN, without = INT64_MIN;
-      const uint64_t base = t.first_node[i];
-      visits += t.first_node[i + 1] - base;
-      for (uint64_t x = base; x < t.first_node[i + 1]; ++x) {
-        const bool root = t.parent[x] == kNoFanNode, own = e != DiamondEnds::kNone && ends.at_node(x) == e;
-        has[x - base] = own || (!root && has[t.parent[x] - base]);
-        acc[x - base] = (root ? 0 : acc[t.parent[x] - base]) + (own ? 0 : lambda[ends.at_node(x)]);
+    acc.assign(widest, 0);
+    // The fans holding each end: intervals of its vertex's leaves (a node's
+    // subtree, or one leaf), disjoint (a fan holds an end once), in order.
+    std::vector<uint32_t> first_span(ends.size() + 1, 0);
+    std::vector<std::array<uint32_t, 2>> spans;
+    {
+      std::vector<std::array<uint32_t, 3>> found;  // (end, first leaf, one past the last)
+      std::vector<std::array<uint32_t, 2>> below(widest);  // (per node: its subtree's leaves)
+      for (uint32_t i = 0; i < m; ++i) {
+        const uint64_t base = t.first_node[i], leaf0 = t.first_leaf[i];
+        std::fill(below.begin(), below.begin() + static_cast<int64_t>(t.first_node[i + 1] - base), std::array<uint32_t, 2>{UINT32_MAX, 0});
+        for (uint64_t f = leaf0; f < t.first_leaf[i + 1]; ++f) {
+          const uint32_t at = static_cast<uint32_t>(f - leaf0);
+          below[t.leaf[f] - base] = {at, at + 1};
+          if (ends.at_leaf(f) != DiamondEnds::kNone) found.push_back({ends.at_leaf(f), at, at + 1});
+        }
+        for (uint64_t x = t.first_node[i + 1]; x-- > base;) {  // (children after their parents)
+          if (t.parent[x] == kNoFanNode) continue;
+          auto& up = below[t.parent[x] - base];
+          up = {std::min(up[0], below[x - base][0]), std::max(up[1], below[x - base][1])};
+        }
+        for (uint64_t x = base; x < t.first_node[i + 1]; ++x)
+          if (ends.at_node(x) != DiamondEnds::kNone) found.push_back({ends.at_node(x), below[x - base][0], below[x - base][1]});
       }
-      for (uint64_t f = t.first_leaf[i]; f < t.first_leaf[i + 1]; ++f) {
-        const bool own = e != DiamondEnds::kNone && ends.at_leaf(f) == e;
-        int64_t& side = own || has[t.leaf[f] - base] ? with : without;
-        side = std::max(side, weight[f] + acc[t.leaf[f] - base] + (own ? 0 : lambda[ends.at_leaf(f)]));
+      std::sort(found.begin(), found.end());
+      spans.reserve(found.size());
+      for (const auto& [e, lo, hi] : found) {
+        if (first_span[e + 1]++ && spans.back()[1] > lo) throw std::logic_error("star bound: a fan holds an end twice");
+        spans.push_back({lo, hi});
       }
-      return std::pair{with, without};
+      for (size_t e = 0; e < ends.size(); ++e) first_span[e + 1] += first_span[e];
+    }
+    // Each fan's value under the multipliers (a multiplier's change: an add
+    // over its end's intervals; the best fan with or without an end: the most
+    // over them or between them, in one pass over the vertex's fans, not its
+    // trees; on 10,000 DEM points at k = 4, min-mixed-vertices, the sweeps
+    // 7.5 -> 1.7 s).
+    std::vector<int64_t> current = weight;
+    constexpr double kCap = double(int64_t{1} << 32);  // (an end every fan holds: its margin capped)
+    auto most = [&](uint64_t from, uint64_t to) {
+      int64_t best = INT64_MIN;
+      for (uint64_t f = from; f < to; ++f) best = std::max(best, current[f]);
+      return best;
     };
-    // The tile's relaxation: per member its best fan (with no end set apart,
-    // all fans are "without").
+    // How much more member i's best fan with end e is than its best without
+    // (e's own multiplier left out).
+    auto margin = [&](uint32_t i, uint32_t e) {
+      const uint64_t base = t.first_leaf[i];
+      int64_t with = INT64_MIN, without = INT64_MIN;
+      uint64_t at = base;
+      for (uint32_t s = first_span[e]; s < first_span[e + 1]; ++s) {
+        without = std::max(without, most(at, base + spans[s][0]));
+        with = std::max(with, most(base + spans[s][0], base + spans[s][1]));
+        at = base + spans[s][1];
+      }
+      without = std::max(without, most(at, t.first_leaf[i + 1]));
+      visits += t.first_leaf[i + 1] - base;
+      return without == INT64_MIN ? kCap : std::clamp(static_cast<double>(with - lambda[e]) - static_cast<double>(without), -kCap, kCap);
+    };
+    auto set = [&](uint32_t i, uint32_t e, int64_t to) {
+      const uint64_t base = t.first_leaf[i];
+      for (uint32_t s = first_span[e]; s < first_span[e + 1]; ++s)
+        for (uint64_t f = base + spans[s][0]; f < base + spans[s][1]; ++f) current[f] += to - lambda[e];
+      lambda[e] = to;
+    };
+    // The tile's relaxation: per member its best fan.
     auto bound_now = [&] {
       int64_t sum = 0;
       for (uint32_t i = 0; i < m; ++i)
-        if (in[members[i]]) sum += split(i, DiamondEnds::kNone).second;
+        if (in[members[i]]) sum += most(t.first_leaf[i], t.first_leaf[i + 1]);
       return sum;
     };
     // A diamond's update depends only on the multipliers at its two ends'
@@ -210,7 +256,6 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     const uint64_t stop_at = visits + static_cast<uint64_t>(static_cast<double>(limits.max_visits - std::min(limits.max_visits, visits)) * fresh / (n - done));
     int64_t best = bound_now();
     best_lambda = lambda;  // (the multipliers of `best`)
-    constexpr double kCap = double(int64_t{1} << 32);  // (an end every fan takes: its margin is capped)
     for (uint32_t sweep = 0; sweep < limits.iterations && (!whole || relaxed(total + best) > target); ++sweep) {
       for (size_t p = 0; p < ends.pairs().size() && visits < stop_at; ++p) {
         const std::array<uint32_t, 2>& pair = ends.pairs()[p];
@@ -218,14 +263,9 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
         if (seen[p] != UINT32_MAX && changed[i] <= seen[p] && changed[j] <= seen[p]) continue;
         // MPLP over the two ends: each end's vertex then prefers its fans with
         // the diamond over those without by the same margin (their mean).
-        double margin[2];
-        for (int side = 0; side < 2; ++side) {
-          const auto [with, without] = split(side ? j : i, pair[side]);
-          margin[side] = std::clamp(without == INT64_MIN ? kCap : static_cast<double>(with) - static_cast<double>(without), -kCap, kCap);
-        }
-        const int64_t to = std::llround((margin[1] - margin[0]) / 2);
+        const int64_t to = std::llround((margin(j, pair[1]) - margin(i, pair[0])) / 2);
         ++clock;
-        if (lambda[pair[0]] != to) lambda[pair[0]] = to, lambda[pair[1]] = -to, changed[i] = changed[j] = clock;
+        if (lambda[pair[0]] != to) set(i, pair[0], to), set(j, pair[1], -to), changed[i] = changed[j] = clock;
         seen[p] = clock;
       }
       const int64_t now = bound_now();

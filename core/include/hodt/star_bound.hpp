@@ -53,10 +53,10 @@ struct StarBoundLimits {
   // A bound proven already (as the objective's, not the relaxation's sign; NAN
   // for none): for counts, sweeps also stop once they cannot pass it.
   double known_bound = NAN;
-  // Fan tree nodes the sweeps visit, in all (each end's update passes over
-  // its vertex's trees: about 3e8 a second natively), shared among the tiles by
+  // Fans the sweeps read, in all (each end's update reads the values of its
+  // vertex's fans: about 6e8 a second natively), shared among the tiles by
   // their vertices: the bound's time.
-  uint64_t max_visits = 60'000'000'000;
+  uint64_t max_visits = 120'000'000'000;
   // A gap left: keep the fans and their values under the multipliers, to read
   // triangulations off them (StarDecoder), within this many fans tried per vertex.
   bool decode = false;
