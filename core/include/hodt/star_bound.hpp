@@ -38,8 +38,9 @@ namespace hodt {
 class StarDecoder;  // (star_decode.hpp)
 
 struct StarBoundLimits {
-  // Fans as prefix trees (a node per triangle, 16 bytes with its diamond end;
-  // 20 more per fan, 16 per end, and with decode 37 more per fan): per vertex
+  // Fans as prefix trees (a node per triangle, 24 bytes with its diamond end
+  // and the interval of fans under it; 36 more per fan, 24 per end, and with
+  // decode 37 more per fan): per vertex
   // (vertices beyond are left out, their terms at their best; when more than
   // max_left_out of them are, the bound is not worth its steps), and per tile
   // (more in all: tiles of vertices whose fans agree only within each, a
