@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <span>
 #include <stdexcept>
 
 #include "hodt/diamond_ends.hpp"
@@ -89,7 +90,7 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   uint32_t tiles = 0, done = 0;  // (done: the vertices of the tiles swept; progress: listed + swept)
   uint64_t visits = 0;  // (fans read by the sweeps: their work)
   std::vector<uint32_t> seq, scratch;
-  std::vector<int64_t> acc, lambda, best_lambda;
+  std::vector<int64_t> lambda, best_lambda;
   uint32_t v = 0;  // (the next vertex to list)
   do {
     // List the next tile.
@@ -154,15 +155,17 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
         for (const uint32_t w : lister.around(u))
           if (u < w && owner(u, w) == kNoFanNode) total += best_term * kUnit;
     }
-    std::vector<int64_t> weight(t.leaf.size());
-    for (uint32_t i = 0; i < kept; ++i) std::copy(kept_value[i].begin(), kept_value[i].end(), weight.begin() + t.first_leaf[i]);
+    // Each fan's value under the multipliers (all 0 so far: its terms, or a
+    // carried fan's value so far).
+    std::vector<int64_t> current(t.leaf.size());
+    for (uint32_t i = 0; i < kept; ++i) std::copy(kept_value[i].begin(), kept_value[i].end(), current.begin() + t.first_leaf[i]);
     kept_value.clear();
     bool counts = true;
     for (uint32_t i = kept; i < m; ++i)
       for (uint64_t f = t.first_leaf[i]; f < t.first_leaf[i + 1]; ++f)
         terms_of(i, f, [&](double w) {
           if (integral && !(w == std::floor(w) && std::fabs(w) < 1e6)) counts = false;
-          else weight[f] += units(w) * kUnit;
+          else current[f] += units(w) * kUnit;
         });
     if (!counts) return std::nullopt;
 
@@ -175,7 +178,6 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     // is as large as the largest vertex's trees, not all of them).
     uint64_t widest = 0;
     for (uint32_t i = 0; i < m; ++i) widest = std::max(widest, t.first_node[i + 1] - t.first_node[i]);
-    acc.assign(widest, 0);
     // The fans holding each end: intervals of its vertex's leaves (a node's
     // subtree, or one leaf), disjoint (a fan holds an end once), in order.
     std::vector<uint32_t> first_span(ends.size() + 1, 0);
@@ -207,12 +209,11 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
       }
       for (size_t e = 0; e < ends.size(); ++e) first_span[e + 1] += first_span[e];
     }
-    // Each fan's value under the multipliers (a multiplier's change: an add
-    // over its end's intervals; the best fan with or without an end: the most
-    // over them or between them, in one pass over the vertex's fans, not its
-    // trees; on 10,000 DEM points at k = 4, min-mixed-vertices, the sweeps
+    // The fans' values kept under the multipliers: a multiplier's change is an
+    // add over its end's intervals, and the best fan with or without an end the
+    // most over them or between them, in one pass over the vertex's fans, not
+    // its trees (on 10,000 DEM points at k = 4, min-mixed-vertices, the sweeps
     // 7.5 -> 1.7 s).
-    std::vector<int64_t> current = weight;
     constexpr double kCap = double(int64_t{1} << 32);  // (an end every fan holds: its margin capped)
     auto most = [&](uint64_t from, uint64_t to) {
       int64_t best = INT64_MIN;
@@ -290,31 +291,26 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
       if (gained * static_cast<int64_t>(limits.iterations - sweep - 1) < next || visits >= stop_at) break;
     }
     done += fresh;
-    // Decoding: member i's fans valued by their terms and the best
-    // multipliers, appended (one pass over its trees, as split's).
-    auto reduced = [&](uint32_t i, std::vector<int64_t>& value) {
-      const uint64_t base = t.first_node[i];
-      for (uint64_t x = base; x < t.first_node[i + 1]; ++x)
-        acc[x - base] = (t.parent[x] == kNoFanNode ? 0 : acc[t.parent[x] - base]) + best_lambda[ends.at_node(x)];
-      for (uint64_t f = t.first_leaf[i]; f < t.first_leaf[i + 1]; ++f)
-        value.push_back(weight[f] + acc[t.leaf[f] - base] + best_lambda[ends.at_leaf(f)]);
+    // Back to the best multipliers: the fans' values are then those of `best`.
+    for (uint32_t e = 1; e < ends.size(); ++e)
+      if (lambda[e] != best_lambda[e]) set(ends.member(e), e, best_lambda[e]);
+    auto values_of = [&](uint32_t i) {
+      return std::span<const int64_t>(current.data() + t.first_leaf[i], t.first_leaf[i + 1] - t.first_leaf[i]);
     };
     // Each member's best fan counted, but the carried's (a neighbour still to list).
-    std::vector<int64_t> value;
     for (uint32_t i = 0; i < m; ++i) {
       const uint32_t u = members[i];
       if (!in[u]) continue;
-      value.clear();
-      reduced(i, value);
+      const std::span<const int64_t> value = values_of(i);
       const std::vector<uint32_t>& around = lister.around(u);  // (sorted)
-      if (v < n && !around.empty() && around.back() >= v) carried.push_back(u), carried_value.push_back(value);
+      if (v < n && !around.empty() && around.back() >= v) carried.push_back(u), carried_value.emplace_back(value.begin(), value.end());
       else total += *std::max_element(value.begin(), value.end());
     }
     // A tile of many: its members' fans, every other vertex held at its fan in *start.
     if (!whole && limits.decode && limits.start && limits.decoded_tile) {
       const std::vector<std::vector<uint32_t>> held = rings_of(*limits.start);
       FanTrees d;
-      value.clear();
+      std::vector<int64_t> value;
       for (uint32_t u = 0; u < n; ++u) {
         d.first_node.push_back(d.corner.size()), d.first_leaf.push_back(d.leaf.size());
         if (position[u] == kNoFanNode || !in[u]) {  // (held: one fan, a path round its ring, its corners unnumbered)
@@ -335,7 +331,7 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
           d.parent.push_back(t.parent[x] == kNoFanNode ? kNoFanNode : static_cast<uint32_t>(t.parent[x] - base + to));
         }
         for (uint64_t f = t.first_leaf[i]; f < t.first_leaf[i + 1]; ++f) d.leaf.push_back(t.leaf[f] - base + to);
-        reduced(i, value);
+        value.insert(value.end(), values_of(i).begin(), values_of(i).end());
       }
       d.first_node.push_back(d.corner.size()), d.first_leaf.push_back(d.leaf.size());
       // (Its steps: the tile's share, and one per held vertex.)
@@ -343,10 +339,8 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     }
     // A gap left: a triangulation from the fans best under the multipliers.
     if (whole && limits.decode && out.left_out == 0 && relaxed(total) > target) {
-      value.clear();
-      value.reserve(t.leaf.size());
-      for (uint32_t i = 0; i < m; ++i) reduced(i, value);
-      out.decoder = std::make_shared<const StarDecoder>(dt, std::move(t), tris, std::move(value),
+      // (Whole: the members are the vertices in order, their fans all of current.)
+      out.decoder = std::make_shared<const StarDecoder>(dt, std::move(t), tris, std::move(current),
                                                         limits.decode_steps_per_vertex * n);
     }
     for (const uint32_t u : members) position[u] = kNoFanNode;

@@ -39,12 +39,12 @@ class StarDecoder;  // (star_decode.hpp)
 
 struct StarBoundLimits {
   // Fans as prefix trees (a node per triangle, 24 bytes with its diamond end
-  // and the interval of fans under it; 36 more per fan, 24 per end, and with
+  // and the interval of fans under it; 28 more per fan, 24 per end, and with
   // decode 37 more per fan): per vertex
   // (vertices beyond are left out, their terms at their best; when more than
   // max_left_out of them are, the bound is not worth its steps), and per tile
-  // (more in all: tiles of vertices whose fans agree only within each, a
-  // weaker bound in the memory of one).
+  // (more in all: tiles taken in turn, each border's vertices carried into the
+  // next, a bound a little weaker in the memory of one).
   uint64_t max_nodes_per_vertex = 50'000;
   uint64_t max_nodes = 16'000'000;
   double max_left_out = 0.05;
