@@ -33,6 +33,24 @@ struct Window {
     for (size_t a = 0; a < m; ++a) alive[a].assign(rings[a].size(), 1);
     std::vector<std::pair<size_t, size_t>> trail;
     std::vector<uint32_t> pick(m);
+    // Per member, the later members that a fan of either names: a choice says
+    // nothing of the others (they and it stay out of each other's fans).
+    std::vector<std::vector<size_t>> named(m);
+    {
+      std::vector<std::pair<uint32_t, size_t>> index(m);
+      for (size_t a = 0; a < m; ++a) index[a] = {member[a], a};
+      std::sort(index.begin(), index.end());
+      std::vector<uint8_t> linked(m * m, 0);
+      for (size_t a = 0; a < m; ++a)
+        for (const std::vector<uint32_t>& fan : rings[a])
+          for (uint32_t u : fan) {
+            const auto it = std::lower_bound(index.begin(), index.end(), std::pair{u, size_t{0}});
+            if (it != index.end() && it->first == u) linked[std::min(a, it->second) * m + std::max(a, it->second)] = 1;
+          }
+      for (size_t a = 0; a < m; ++a)
+        for (size_t b = a + 1; b < m; ++b)
+          if (linked[a * m + b]) named[a].push_back(b);
+    }
     double best = current + min_gain;
     bool improved = false;
     uint64_t steps = 0;
@@ -56,7 +74,8 @@ struct Window {
         ++steps;
         const size_t mark = trail.size();
         bool ok = true;
-        for (size_t b = a + 1; b < m && ok; ++b) {
+        for (size_t i = 0; i < named[a].size() && ok; ++i) {
+          const size_t b = named[a][i];
           const FanSide want = mirrored(side_in_ring(rings[a][x], cyclic[a], member[b]));
           ok = false;
           for (size_t y = 0; y < rings[b].size(); ++y)
