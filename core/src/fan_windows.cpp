@@ -14,6 +14,12 @@ namespace hodt {
 
 namespace {
 
+// Where the tiles lie, call by call (WindowLimits::placement), in tile sides
+// along x and y: as they are, shifted half a tile along x, then y, then by
+// quarters and eighths (each call's four offsets shift along the diagonal).
+constexpr double kPlacements[8][2] = {{0, 0},       {0.5, 0},       {0, 0.5},       {0.25, 0.5},
+                                      {0.5, 0.25},  {0.125, 0.375}, {0.375, 0.125}, {0.625, 0.875}};
+
 // One window's members, their candidate fans (rings) and values, and a branch
 // and bound over them: forward checking (a choice removes the later members'
 // fans that disagree), a branch ending when its value plus each later member's
@@ -128,10 +134,11 @@ std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, 
   bool improved = false;
   std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
   const double offsets[4] = {0.0, 0.5, 0.25, 0.75};
+  const double* shift = kPlacements[limits.placement % 8];
   for (int pass = 0; pass < 4; ++pass) {
     for (uint32_t v = 0; v < n; ++v) {
       const auto cell = [&](int a) {  // (clamped: a sliver of a hull has more cells than that)
-        return static_cast<uint64_t>(std::min(std::floor((dt.point(v)[a] - lo[a]) / side + offsets[pass]), 2147483647.0));
+        return static_cast<uint64_t>(std::min(std::floor((dt.point(v)[a] - lo[a]) / side + offsets[pass] + shift[a]), 2147483647.0));
       };
       keyed[v] = {cell(1) << 32 | cell(0), v};
     }

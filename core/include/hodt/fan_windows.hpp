@@ -37,6 +37,9 @@ struct WindowLimits {
   // Stop once the windows improved the start by this much (the objective's
   // units; a gap to a proven bound: nothing more to gain).
   double enough = INFINITY;
+  // Where the tiles lie (one of eight placements, in turn): calls with other
+  // placements cut the plane elsewhere.
+  uint32_t placement = 0;
   Progress progress;
 };
 
