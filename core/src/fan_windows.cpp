@@ -32,8 +32,9 @@ struct Window {
   std::vector<uint32_t> found;                            // per member, the fan index of the best found
   double found_value = 0;                                 // its value (the sum of the members')
 
-  // Better than `current` by more than min_gain.
-  bool best(double current, double min_gain, uint64_t max_steps) {
+  // Better than `current` by more than min_gain (slot: a vertex's place among
+  // the members, or -1).
+  bool best(double current, double min_gain, uint64_t max_steps, const std::vector<int32_t>& slot) {
     const size_t m = member.size();
     std::vector<std::vector<uint8_t>> alive(m);
     for (size_t a = 0; a < m; ++a) alive[a].assign(rings[a].size(), 1);
@@ -43,16 +44,12 @@ struct Window {
     // nothing of the others (they and it stay out of each other's fans).
     std::vector<std::vector<size_t>> named(m);
     {
-      std::vector<std::pair<uint32_t, size_t>> index(m);
-      for (size_t a = 0; a < m; ++a) index[a] = {member[a], a};
-      std::sort(index.begin(), index.end());
       std::vector<uint8_t> linked(m * m, 0);
       for (size_t a = 0; a < m; ++a)
         for (const std::vector<uint32_t>& fan : rings[a])
-          for (uint32_t u : fan) {
-            const auto it = std::lower_bound(index.begin(), index.end(), std::pair{u, size_t{0}});
-            if (it != index.end() && it->first == u) linked[std::min(a, it->second) * m + std::max(a, it->second)] = 1;
-          }
+          for (uint32_t u : fan)
+            if (const int32_t b = slot[u]; b >= 0)
+              linked[std::min(a, size_t(b)) * m + std::max(a, size_t(b))] = 1;
       for (size_t a = 0; a < m; ++a)
         for (size_t b = a + 1; b < m; ++b)
           if (linked[a * m + b]) named[a].push_back(b);
@@ -191,7 +188,7 @@ std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, 
       }
       // (counts: a gain of 1 at least; lengths: beyond the rounding of their sums)
       const double min_gain = integral ? 0.5 : 1e-9 * std::fabs(current);
-      if (choice && w.best(current, min_gain, limits.max_steps)) {
+      if (choice && w.best(current, min_gain, limits.max_steps, slot)) {
         for (size_t a = 0; a < m; ++a) ring[w.member[a]] = w.rings[a][w.found[a]];
         gained += w.found_value - current;
         improved = true;
