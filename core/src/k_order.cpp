@@ -716,7 +716,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   vl.views.progress = vl.dp.progress = options.progress;
   vl.model = engine.model_limits;
   const bool met = !better(sense, bound, r.value);
-  if (const auto vb = met ? std::nullopt : view_bound(dt, R, o, cand, terms, engine.limits.max_region_triangles, r.value, vl)) {
+  if (const auto vb = met ? std::nullopt : view_bound(dt, R, o, cand, terms, engine.limits.max_region_triangles, r.value, bound, vl)) {
     bound = tighter(sense, bound, vb->bound);
     if (vb->realised && !better(sense, r.value, vb->bound)) {
       r.triangulation = *vb->realised;

@@ -28,7 +28,7 @@ size_t largest_group(const std::vector<RegionView>& views) {
 
 std::optional<ViewBound> view_bound(const Mesh& dt, const Regions& R, Objective o, const Candidates& cand,
                                     const RegionTerms& T, uint32_t max_region_triangles, std::optional<double> known,
-                                    const ViewBoundLimits& limits) {
+                                    std::optional<double> at_hand, const ViewBoundLimits& limits) {
   const size_t n = R.regions.size();
   std::vector<std::vector<RegionView>> views(n);
   std::vector<RegionViewLimits> per(n, limits.views);  // each region's current limits
@@ -103,8 +103,9 @@ std::optional<ViewBound> view_bound(const Mesh& dt, const Regions& R, Objective 
       const double v = evaluate(o, m);
       if (!better(info(o).sense, b.bound, v)) b.bound = v, b.realised = std::move(m);
     }
+    const bool trails = at_hand && better(info(o).sense, b.bound, *at_hand);
     out = std::move(b);
-    if (out->realised || (known && !better(info(o).sense, out->bound, *known))) break;  // nothing left to prove
+    if (out->realised || (known && !better(info(o).sense, out->bound, *known)) || trails) break;  // nothing left to prove
   }
   return out;
 }

@@ -73,7 +73,7 @@ TEST_CASE("region views: one view per region is exact, smaller groups bound the 
 }
 
 TEST_CASE("view bound: regions left incomplete are bounded through views, and a realised triangulation is optimal") {
-  uint64_t bounded = 0, realised = 0;
+  uint64_t bounded = 0, realised = 0, stopped = 0;
   for (uint64_t seed = 1; seed <= 80; ++seed) {
     const FirstOrder fo = first_order(delaunay(validate_points(mixed_instance(seed * 11 + 3, 1)).xyz));
     const Mesh& dt = fo.base;
@@ -94,7 +94,7 @@ TEST_CASE("view bound: regions left incomplete are bounded through views, and a 
         ViewBoundLimits vl;
         vl.views.max_states = 400;  // small views: several rounds
         vl.views.max_listed = 50;
-        const auto vb = view_bound(dt, R, oi.objective, cand, T, 64, {}, vl);
+        const auto vb = view_bound(dt, R, oi.objective, cand, T, 64, {}, {}, vl);
         if (!vb) continue;
         const double opt = k_order_brute_force(fo, oi.objective, k).value;
         CAPTURE(seed);
@@ -108,10 +108,20 @@ TEST_CASE("view bound: regions left incomplete are bounded through views, and a 
           CHECK(validate(*vb->realised) == "");
           CHECK(close(evaluate(oi.objective, *vb->realised), opt));
         }
+        // With the optimum as the bound at hand, a round whose bound trails it is the last.
+        const auto at_opt = view_bound(dt, R, oi.objective, cand, T, 64, {}, opt, vl);
+        REQUIRE(at_opt);
+        CHECK((close(at_opt->bound, opt) || better(oi.sense, at_opt->bound, opt)));
+        CHECK(at_opt->rounds <= vb->rounds);
+        if (at_opt->rounds < vb->rounds) {
+          ++stopped;
+          CHECK((!close(at_opt->bound, opt) && better(oi.sense, at_opt->bound, opt)));
+        }
       }
     }
   }
-  MESSAGE(bounded << " bounds, " << realised << " realised");
+  MESSAGE(bounded << " bounds, " << realised << " realised, " << stopped << " stopped by the bound at hand");
   CHECK(bounded > 100);
   CHECK(realised > 10);
+  CHECK(stopped > 10);
 }
