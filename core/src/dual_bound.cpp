@@ -79,7 +79,11 @@ struct Ascent {
   std::vector<std::vector<double>> unary;             // reparametrised, per variable and state
   // Per factor (the tables, then the implicit ones), scope position and class.
   std::vector<std::vector<std::vector<double>>> msg;
-  std::vector<double> factor_least;                   // per factor: its least reparametrised entry
+  // Per factor: its least reparametrised entry; 0 while stale (an MPLP
+  // update leaves the least entry 0, but for the messages' rounding to the
+  // grid: settle() makes them exact).
+  std::vector<double> factor_least;
+  std::vector<uint8_t> stale;
   // Updates are numbered: per variable the last that changed a message to it,
   // per factor its last.
   uint64_t clock = 1;
@@ -107,6 +111,7 @@ struct Ascent {
       for (uint32_t x : f->scope) msg.back().emplace_back(g.domain[x], 0.0);
     }
     factor_least.resize(msg.size());
+    stale.assign(msg.size(), 0);
     for (size_t fi = 0; fi < msg.size(); ++fi) set_least(fi);
     changed.assign(g.domain.size(), 1);
     updated.assign(msg.size(), 0);
@@ -159,7 +164,14 @@ struct Ascent {
       }
       if (any) changed[scope[j]] = clock;
     }
-    set_least(fi);
+    factor_least[fi] = 0;
+    stale[fi] = 1;
+  }
+
+  // Every factor's least entry exact again.
+  void settle() {
+    for (size_t fi = 0; fi < msg.size(); ++fi)
+      if (stale[fi]) set_least(fi), stale[fi] = 0;
   }
 
   // Factor fi's table less its messages, entry by entry: visit(entry, value).
@@ -259,7 +271,7 @@ struct Ascent {
   }
 
   // The bound: each piece at its best, summed exactly (nothing when a value
-  // left the exact range).
+  // left the exact range); an estimate while a factor is stale.
   std::optional<double> bound() const {
     double total = sign * g.constant, magnitude = std::fabs(total);
     for (const auto& u : unary) {
@@ -368,23 +380,27 @@ struct Raised {
 };
 
 // The ascent until it stalls, the sweeps run out, or the bound (min form)
-// reaches `enough`.
+// reaches `enough`. (The sweeps read the bound's estimate, the stop its exact
+// value: the exact least entries cost a second pass over every table.)
 std::optional<Raised> raise(const StateGraph& g, const DualLimits& limits, double enough,
                             const std::vector<const ImplicitFactor*>& implicit = {}) {
   Raised r{Ascent(g, implicit), 0, 0};
   std::optional<double> b = r.ascent.bound();
   WorkCounter work;
   work.every = 1 << 16;
-  while (b && r.sweeps < limits.max_sweeps && *b < enough) {
-    report(limits.progress, r.sweeps, limits.max_sweeps);
-    const size_t n = r.ascent.msg.size();
-    for (size_t i = 0; i < n; ++i) r.ascent.update(r.sweeps % 2 ? n - 1 - i : i, work, limits.progress, r.sweeps, limits.max_sweeps);
-    ++r.sweeps;
-    const std::optional<double> next = r.ascent.bound();
-    if (!next) return std::nullopt;
-    const bool stalled = *next - *b < limits.min_gain;
-    b = next;
-    if (stalled) break;
+  for (bool stalled = false; b && !stalled && r.sweeps < limits.max_sweeps && *b < enough;) {
+    while (!stalled && r.sweeps < limits.max_sweeps && *b < enough) {
+      report(limits.progress, r.sweeps, limits.max_sweeps);
+      const size_t n = r.ascent.msg.size();
+      for (size_t i = 0; i < n; ++i) r.ascent.update(r.sweeps % 2 ? n - 1 - i : i, work, limits.progress, r.sweeps, limits.max_sweeps);
+      ++r.sweeps;
+      const std::optional<double> next = r.ascent.bound();
+      if (!next) return std::nullopt;
+      stalled = *next - *b < limits.min_gain;
+      b = next;
+    }
+    r.ascent.settle();
+    b = r.ascent.bound();
   }
   if (!b) return std::nullopt;
   r.bound = *b;
