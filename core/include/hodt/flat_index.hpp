@@ -29,6 +29,16 @@ class FlatIndex {
     place(key, value);
     ++size_;
   }
+  // Stores value for key, in place of the one stored if any (value != kNone).
+  void assign(uint64_t key, uint32_t value) {
+    if (!slots_.empty())
+      for (size_t i = slot_of(key); slots_[i].value != kNone; i = (i + 1) & (slots_.size() - 1))
+        if (slots_[i].key == key) {
+          slots_[i].value = value;
+          return;
+        }
+    insert(key, value);
+  }
   void clear() {
     slots_ = {};
     size_ = 0;
