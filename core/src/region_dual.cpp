@@ -249,9 +249,11 @@ std::vector<Tri> near_item(const std::vector<Tri>& fill, const Tri& item) {
   return out;
 }
 
-// Nothing if no region not listed whole has a graph that fits.
+// Nothing if no region not listed whole has a graph that fits. model_of_R: as
+// region_dual's (the model is its update, when given).
 std::optional<GraphModel> graph_model(const Mesh& dt, const Regions& R, Objective o, const Candidates& cand,
-                                      const RegionTerms& terms, const RegionDualLimits& limits) {
+                                      const RegionTerms& terms, const RegionDualLimits& limits,
+                                      const RegionModel* model_of_R = nullptr) {
   const double sign = info(o).sense == Sense::Min ? 1.0 : -1.0;
   std::vector<std::optional<FillGraph>> graphs(R.regions.size());
   std::vector<std::vector<RegionView>> views(R.regions.size());
@@ -299,7 +301,17 @@ std::optional<GraphModel> graph_model(const Mesh& dt, const Regions& R, Objectiv
     }
   }
   if (m.relaxed == order.size()) return std::nullopt;
-  m.model = region_model(dt, R, o, limits.model, limits.dual.progress, &views);
+  if (model_of_R && model_of_R->variable_of_region.size() == R.regions.size()) {
+    // (The regions read through graphs change, and those whose lists did.)
+    std::vector<uint8_t> changed(m.has_graph);
+    for (uint32_t r = 0; r < R.regions.size(); ++r) {
+      const int32_t x = model_of_R->variable_of_region[r];
+      changed[r] |= x >= 0 && model_of_R->graph.domain[static_cast<uint32_t>(x)] != R.regions[r].states.size();
+    }
+    m.model = update_region_model(*model_of_R, dt, R, o, changed, limits.model, limits.dual.progress, &views);
+  } else {
+    m.model = region_model(dt, R, o, limits.model, limits.dual.progress, &views);
+  }
   m.factors.resize(R.regions.size());
   for (uint32_t r = 0; r < R.regions.size(); ++r) {
     if (!graphs[r]) continue;
@@ -323,7 +335,7 @@ std::optional<GraphModel> graph_model(const Mesh& dt, const Regions& R, Objectiv
 RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Candidates& cand, const RegionTerms& terms,
                        const Mesh* start, const RegionDualLimits& limits, const RegionModel* model_of_R) {
   RegionDual out;
-  std::optional<GraphModel> built = graph_model(dt, R, o, cand, terms, limits);
+  std::optional<GraphModel> built = graph_model(dt, R, o, cand, terms, limits, model_of_R);
   if (!built) {
     out.relaxed = static_cast<uint32_t>(R.incomplete);
     return out;

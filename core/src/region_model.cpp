@@ -383,8 +383,8 @@ RegionModel region_model(const Mesh& dt, const Regions& R, Objective o, const Re
 
 RegionModel update_region_model(RegionModel M, const Mesh& dt, const Regions& R, Objective o,
                                 const std::vector<uint8_t>& changed, const RegionModelLimits& limits,
-                                const Progress& progress) {
-  auto whole = [&] { return region_model(dt, R, o, limits, progress); };
+                                const Progress& progress, const std::vector<std::vector<RegionView>>* views) {
+  auto whole = [&] { return region_model(dt, R, o, limits, progress, views); };
   // (Relaxed terms are counted, not listed: whether one is still relaxed is not known.)
   if (M.graph.relaxed_terms || M.variable_of_region.size() != R.regions.size() ||
       std::any_of(M.view_of_variable.begin(), M.view_of_variable.end(), [](uint32_t v) { return v != 0; }))
@@ -393,27 +393,43 @@ RegionModel update_region_model(RegionModel M, const Mesh& dt, const Regions& R,
   StateGraph& g = M.graph;
   Builder b{dt, R, d, M, g, progress, {}, {}, {}};
   std::vector<uint8_t> var_changed(g.domain.size(), 0);
+  auto reset = [&](int32_t x, size_t n, bool partial) {
+    g.domain[x] = static_cast<uint32_t>(n);
+    g.unary[x].assign(n, 0.0);
+    g.unary_terms[x] = 0;
+    g.partial[x] = partial;
+    var_changed[x] = 1;
+  };
   for (uint32_t r = 0; r < R.regions.size(); ++r) {
     const Region& region = R.regions[r];
-    const size_t n = region.states.size();
-    const bool partial = !region.complete;
+    const bool split = views && !(*views)[r].empty();
+    const size_t n = split ? (*views)[r][0].states.size() : region.states.size();
+    const bool partial = !split && !region.complete;
     const int32_t x = M.variable_of_region[r];
     // Each region keeps its variable or its lack of one (a changed region left
     // with one triangulation keeps its variable, of one state), and only changed
     // ones change: else the numbering, or the constant, would move.
     const bool kept_with_one = changed[r] && x >= 0 && n == 1;
     if (((n >= 2 || partial) != (x >= 0) && !kept_with_one) || (changed[r] && x < 0) ||
-        (!changed[r] && x >= 0 && g.domain[x] != n))
+        (!changed[r] && (split || (x >= 0 && g.domain[x] != n))))
       return whole();
-    b.first_src.push_back(r);
-    b.src.push_back({r, &region.states, nullptr});
+    b.first_src.push_back(static_cast<uint32_t>(b.src.size()));
+    b.src.push_back({r, split ? &(*views)[r][0].states : &region.states, split ? &(*views)[r][0].items : nullptr});
     b.var_of_src.push_back(x);
-    if (!changed[r]) continue;
-    g.domain[x] = static_cast<uint32_t>(n);
-    g.unary[x].assign(n, 0.0);
-    g.unary_terms[x] = 0;
-    g.partial[x] = partial;
-    var_changed[x] = 1;
+    if (changed[r]) reset(x, n, partial);
+    // Its other views: variables after all the others (one each of two states or more).
+    for (size_t j = 1; split && j < (*views)[r].size(); ++j) {
+      const RegionView& view = (*views)[r][j];
+      b.src.push_back({r, &view.states, &view.items});
+      b.var_of_src.push_back(-1);
+      if (view.states.size() < 2) continue;
+      b.var_of_src.back() = static_cast<int32_t>(g.domain.size());
+      M.region_of_variable.push_back(r);
+      M.view_of_variable.push_back(static_cast<uint32_t>(j));
+      g.domain.push_back(0), g.unary.emplace_back(), g.unary_terms.push_back(0), g.partial.push_back(0);
+      var_changed.push_back(0);
+      reset(b.var_of_src.back(), view.states.size(), false);
+    }
   }
   // The terms that read a changed region, built again: every factor over one
   // goes, and each one's unary (its terms alone) starts over.
