@@ -156,6 +156,17 @@ struct Builder {
   const std::vector<std::vector<Tri>>& states(uint32_t i) const { return *src[i].states; }
   int32_t var(uint32_t i) const { return var_of_src[i]; }
   void add_constant(double v) { g.constant = combine(d.combine, g.constant, v); }
+  // A new variable, after all the others: region r read through its view `view`
+  // (0: the region itself), of n states.
+  int32_t add_variable(uint32_t r, uint32_t view, size_t n, bool partial) {
+    M.region_of_variable.push_back(r);
+    M.view_of_variable.push_back(view);
+    g.domain.push_back(static_cast<uint32_t>(n));
+    g.unary.emplace_back(n, 0.0);
+    g.unary_terms.push_back(0);
+    g.partial.push_back(partial);
+    return static_cast<int32_t>(g.domain.size() - 1);
+  }
   // A term of source i that depends on its state only.
   void add_unary(uint32_t i, uint32_t s, double v, bool count) {
     const int32_t x = var(i);
@@ -365,14 +376,8 @@ RegionModel region_model(const Mesh& dt, const Regions& R, Objective o, const Re
       const bool partial = !split && !region.complete;
       b.var_of_src.push_back(-1);
       if (n < 2 && !partial) continue;
-      b.var_of_src.back() = static_cast<int32_t>(M.region_of_variable.size());
+      b.var_of_src.back() = b.add_variable(r, i - b.first_src[r], n, partial);
       if (i == b.first_src[r]) M.variable_of_region[r] = b.var_of_src.back();
-      M.region_of_variable.push_back(r);
-      M.view_of_variable.push_back(i - b.first_src[r]);
-      g.domain.push_back(static_cast<uint32_t>(n));
-      g.unary.emplace_back(n, 0.0);
-      g.unary_terms.push_back(0);
-      g.partial.push_back(partial);
     }
   }
   if (vertex_site(d.site)) b.vertex_terms(limits.max_factor, limits.memo);
@@ -421,14 +426,8 @@ RegionModel update_region_model(RegionModel M, const Mesh& dt, const Regions& R,
     for (size_t j = 1; split && j < (*views)[r].size(); ++j) {
       const RegionView& view = (*views)[r][j];
       b.src.push_back({r, &view.states, &view.items});
-      b.var_of_src.push_back(-1);
-      if (view.states.size() < 2) continue;
-      b.var_of_src.back() = static_cast<int32_t>(g.domain.size());
-      M.region_of_variable.push_back(r);
-      M.view_of_variable.push_back(static_cast<uint32_t>(j));
-      g.domain.push_back(0), g.unary.emplace_back(), g.unary_terms.push_back(0), g.partial.push_back(0);
-      var_changed.push_back(0);
-      reset(b.var_of_src.back(), view.states.size(), false);
+      // (no factor reads it yet: nothing to erase)
+      b.var_of_src.push_back(view.states.size() < 2 ? -1 : b.add_variable(r, static_cast<uint32_t>(j), view.states.size(), false));
     }
   }
   // The terms that read a changed region, built again: every factor over one
