@@ -105,7 +105,8 @@ std::optional<ViewBound> view_bound(const Mesh& dt, const Regions& R, Objective 
     }
     const bool trails = at_hand && better(info(o).sense, b.bound, *at_hand);
     out = std::move(b);
-    if (out->realised || (known && !better(info(o).sense, out->bound, *known)) || trails) break;  // nothing left to prove
+    // Nothing left to prove, or the views trail the bound at hand.
+    if (out->realised || (known && !better(info(o).sense, out->bound, *known)) || trails) break;
   }
   return out;
 }
