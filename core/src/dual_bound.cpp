@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "hodt/error.hpp"
 
@@ -407,11 +408,41 @@ std::optional<Raised> raise(const StateGraph& g, const DualLimits& limits, doubl
   return r;
 }
 
+// Each factor's positions from the most classes to the fewest (the same
+// relaxation): the ascent's loops run along rows of the first position, and
+// a first position of 2 classes, as most joined tables had, left rows whose
+// bookkeeping cost more than their entries (10,000 DEM points at k = 4,
+// max-convex-edges: 1.4 of the 1.7 million entries in such tables).
+void widest_first(StateGraph& g) {
+  std::vector<size_t> order, stride;
+  for (StateFactor& f : g.factors) {
+    const size_t m = f.dims.size();
+    if (std::is_sorted(f.dims.begin(), f.dims.end(), std::greater<>())) continue;
+    order.resize(m);
+    for (size_t j = 0; j < m; ++j) order[j] = j;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return f.dims[a] > f.dims[b]; });
+    StateFactor t;
+    t.num_terms = f.num_terms;
+    for (size_t j : order) t.scope.push_back(f.scope[j]), t.dims.push_back(f.dims[j]), t.project.push_back(std::move(f.project[j]));
+    stride.assign(m, 1);  // (of each old position in the new table)
+    for (size_t i = 1, s = t.dims[0]; i < m; s *= t.dims[i], ++i) stride[order[i]] = s;
+    t.table.resize(f.table.size());
+    for_entries(f, [&](size_t e, const std::vector<uint32_t>& c) {
+      size_t at = 0;
+      for (size_t j = 0; j < m; ++j) at += c[j] * stride[j];
+      t.table[at] = f.table[e];
+    });
+    f = std::move(t);
+  }
+}
+
 // The graph the ascent runs on: simplified, then clustered.
 StateGraph prepared(const StateGraph& input, const DualLimits& limits) {
   StateGraph g = input;
   simplify(g, limits.progress);
-  return limits.cluster_entries > 1 ? clustered(g, limits.cluster_entries, limits.progress) : g;
+  if (limits.cluster_entries > 1) g = clustered(g, limits.cluster_entries, limits.progress);
+  widest_first(g);
+  return g;
 }
 
 // States that every factor reads alike differ only in their unary terms: the
@@ -698,6 +729,7 @@ DualProof::Proof DualProof::prove(double incumbent, const StateDpLimits& dp_limi
     if (!p.any || round + 1 >= impl_->limits.max_rounds) return proof;
     // The next round's graph: what is left, its alike states merged.
     simplify(p.ascent, impl_->limits.progress);
+    widest_first(p.ascent);
     std::vector<std::vector<uint32_t>> alike = keep_best_of_alike(p.ascent);
     for (size_t x = 0; x < alike.size(); ++x)
       for (uint32_t& s : alike[x]) s = original[x][p.kept[x][s]];
