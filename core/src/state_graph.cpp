@@ -31,6 +31,44 @@ size_t factor_index(const StateFactor& f, const std::vector<uint32_t>& state) {
   return idx;
 }
 
+// Factor f's classes at position j whose slices of the table are equal made
+// one class, the classes no state projects to dropped, and the position
+// dropped when one class is left (the table does not depend on it).
+void merge_alike_classes(StateFactor& f, size_t j) {
+  size_t inner = 1;  // stride of position j
+  for (size_t i = 0; i < j; ++i) inner *= f.dims[i];
+  const size_t dj = f.dims[j], outer = f.table.size() / (inner * dj);
+  std::map<std::vector<double>, uint32_t> ids;
+  std::vector<uint32_t> id(dj);
+  std::vector<double> slice(inner * outer);
+  std::vector<uint32_t> first_of;  // new class -> an old class
+  std::vector<uint8_t> used(dj, 0);  // classes no state projects to are dropped
+  for (uint32_t c : f.project[j]) used[c] = 1;
+  for (size_t c = 0; c < dj; ++c) {
+    if (!used[c]) continue;
+    for (size_t o = 0; o < outer; ++o)
+      for (size_t i = 0; i < inner; ++i) slice[o * inner + i] = f.table[(o * dj + c) * inner + i];
+    auto [it, fresh] = ids.try_emplace(slice, static_cast<uint32_t>(first_of.size()));
+    if (fresh) first_of.push_back(static_cast<uint32_t>(c));
+    id[c] = it->second;
+  }
+  if (first_of.size() == dj && dj > 1) return;
+  const size_t nd = first_of.size();
+  std::vector<double> table(inner * nd * outer);
+  for (size_t o = 0; o < outer; ++o)
+    for (size_t c = 0; c < nd; ++c)
+      for (size_t i = 0; i < inner; ++i) table[(o * nd + c) * inner + i] = f.table[(o * dj + first_of[c]) * inner + i];
+  f.table.swap(table);
+  for (uint32_t& c : f.project[j]) c = id[c];
+  if (nd > 1) {
+    f.dims[j] = static_cast<uint32_t>(nd);
+  } else {  // the table does not depend on this variable
+    f.scope.erase(f.scope.begin() + static_cast<std::ptrdiff_t>(j));
+    f.project.erase(f.project.begin() + static_cast<std::ptrdiff_t>(j));
+    f.dims.erase(f.dims.begin() + static_cast<std::ptrdiff_t>(j));
+  }
+}
+
 }  // namespace
 
 void simplify(StateGraph& g, const Progress& progress) {
@@ -41,41 +79,12 @@ void simplify(StateGraph& g, const Progress& progress) {
   for (StateFactor& f : g.factors) {
     work += static_cast<double>(f.table.size() * f.scope.size());
     if (progress && !progress(work, 0)) throw Cancelled();
-    // Per scope position: classes whose slices of the table are equal are one class.
-    for (size_t j = f.scope.size(); j-- > 0;) {
-      size_t inner = 1;  // stride of position j
-      for (size_t i = 0; i < j; ++i) inner *= f.dims[i];
-      const size_t dj = f.dims[j], outer = f.table.size() / (inner * dj);
-      std::map<std::vector<double>, uint32_t> ids;
-      std::vector<uint32_t> id(dj);
-      std::vector<double> slice(inner * outer);
-      std::vector<uint32_t> first_of;  // new class -> an old class
-      std::vector<uint8_t> used(dj, 0);  // classes no state projects to are dropped
-      for (uint32_t c : f.project[j]) used[c] = 1;
-      for (size_t c = 0; c < dj; ++c) {
-        if (!used[c]) continue;
-        for (size_t o = 0; o < outer; ++o)
-          for (size_t i = 0; i < inner; ++i) slice[o * inner + i] = f.table[(o * dj + c) * inner + i];
-        auto [it, fresh] = ids.try_emplace(slice, static_cast<uint32_t>(first_of.size()));
-        if (fresh) first_of.push_back(static_cast<uint32_t>(c));
-        id[c] = it->second;
-      }
-      if (first_of.size() == dj && dj > 1) continue;
-      const size_t nd = first_of.size();
-      std::vector<double> table(inner * nd * outer);
-      for (size_t o = 0; o < outer; ++o)
-        for (size_t c = 0; c < nd; ++c)
-          for (size_t i = 0; i < inner; ++i) table[(o * nd + c) * inner + i] = f.table[(o * dj + first_of[c]) * inner + i];
-      f.table.swap(table);
-      for (uint32_t& c : f.project[j]) c = id[c];
-      if (nd > 1) {
-        f.dims[j] = static_cast<uint32_t>(nd);
-      } else {  // the table does not depend on this variable
-        f.scope.erase(f.scope.begin() + static_cast<std::ptrdiff_t>(j));
-        f.project.erase(f.project.begin() + static_cast<std::ptrdiff_t>(j));
-        f.dims.erase(f.dims.begin() + static_cast<std::ptrdiff_t>(j));
-      }
-    }
+    // Per scope position. Twice: the first pass leaves no unused class at any
+    // position, whose entries could keep apart slices that differ nowhere else
+    // (in one pass, the order of the positions changed what was merged, and so
+    // the dual's ascent).
+    for (int pass = 0; pass < 2; ++pass)
+      for (size_t j = f.scope.size(); j-- > 0;) merge_alike_classes(f, j);
     if (f.scope.empty()) {
       g.constant = ops.add(g.constant, f.table[0]);
     } else if (f.scope.size() == 1) {
