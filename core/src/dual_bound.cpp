@@ -440,7 +440,7 @@ void widest_first(StateGraph& g) {
   }
 }
 
-// The graph the ascent runs on: simplified, then clustered.
+// The graph the ascent runs on: simplified, clustered, each table widest first.
 StateGraph prepared(const StateGraph& input, const DualLimits& limits) {
   StateGraph g = input;
   simplify(g, limits.progress);
