@@ -33,8 +33,9 @@ size_t factor_index(const StateFactor& f, const std::vector<uint32_t>& state) {
 
 // Factor f's classes at position j whose slices of the table are equal made
 // one class, the classes no state projects to dropped, and the position
-// dropped when one class is left (the table does not depend on it).
-void merge_alike_classes(StateFactor& f, size_t j) {
+// dropped when one class is left (the table does not depend on it). Returns
+// whether anything changed.
+bool merge_alike_classes(StateFactor& f, size_t j) {
   size_t inner = 1;  // stride of position j
   for (size_t i = 0; i < j; ++i) inner *= f.dims[i];
   const size_t dj = f.dims[j], outer = f.table.size() / (inner * dj);
@@ -52,7 +53,7 @@ void merge_alike_classes(StateFactor& f, size_t j) {
     if (fresh) first_of.push_back(static_cast<uint32_t>(c));
     id[c] = it->second;
   }
-  if (first_of.size() == dj && dj > 1) return;
+  if (first_of.size() == dj && dj > 1) return false;
   const size_t nd = first_of.size();
   std::vector<double> table(inner * nd * outer);
   for (size_t o = 0; o < outer; ++o)
@@ -67,6 +68,7 @@ void merge_alike_classes(StateFactor& f, size_t j) {
     f.project.erase(f.project.begin() + static_cast<std::ptrdiff_t>(j));
     f.dims.erase(f.dims.begin() + static_cast<std::ptrdiff_t>(j));
   }
+  return true;
 }
 
 }  // namespace
@@ -79,11 +81,13 @@ void simplify(StateGraph& g, const Progress& progress) {
   for (StateFactor& f : g.factors) {
     work += static_cast<double>(f.table.size() * f.scope.size());
     if (progress && !progress(work, 0)) throw Cancelled();
-    // Per scope position. Twice: the first pass leaves no unused class at any
-    // position, whose entries could keep apart slices that differ nowhere else
-    // (in one pass, the order of the positions changed what was merged, and so
-    // the dual's ascent).
-    for (int pass = 0; pass < 2; ++pass)
+    // Per scope position; again if anything changed: the first pass leaves no
+    // unused class at any position, whose entries could keep apart slices that
+    // differ nowhere else (in one pass, the order of the positions changed what
+    // was merged, and so the dual's ascent).
+    bool changed = false;
+    for (size_t j = f.scope.size(); j-- > 0;) changed = merge_alike_classes(f, j) || changed;
+    if (changed)
       for (size_t j = f.scope.size(); j-- > 0;) merge_alike_classes(f, j);
     if (f.scope.empty()) {
       g.constant = ops.add(g.constant, f.table[0]);
