@@ -200,10 +200,11 @@ struct Ascent {
   // best state per class, its own message taken back) joins the table, and the
   // table's min-marginals go back to the variables in equal shares. The bound
   // never falls (the minimum of a sum is at least the sum of the minima).
-  // (Not inlined, nor set_least: in wasm, V8 optimises a function when it is
-  // entered again, never inside a running loop, so the sweeps' work must sit
-  // in functions they call. Inlined into raise, which runs once for seconds:
-  // 10,000 DEM points at k = 4, max-convex-edges, 6.1-6.7 -> 5.0-5.3 s in wasm.)
+  // (Not inlined, nor set_least: inlined into raise, one call that runs for
+  // seconds, the sweeps were slower in wasm: 10,000 DEM points at k = 4,
+  // max-convex-edges, 6.1-6.7 -> 5.0-5.3 s. V8 optimises a wasm function only
+  // after calls to it, and huge functions less well; which of the two it was
+  // is not known.)
   [[gnu::noinline]] void update(size_t fi, WorkCounter& work, const Progress& progress, double sweep, double sweeps) {
     if (fi >= g.factors.size()) return update_implicit(fi);
     const StateFactor& f = g.factors[fi];
