@@ -28,12 +28,16 @@ class Fans {
   std::vector<uint32_t> ring_;
 };
 
-// Neighbours: any two vertices one's fans pass through the other.
-std::vector<std::vector<uint32_t>> neighbours(const FanTrees& t, Fans& fans, uint32_t n) {
+// Neighbours: any two vertices one's fans pass through the other. Read off the
+// trees' nodes (every node is on a fan's ring), each once per vertex, not off
+// every fan's ring (10,000 DEM points at k = 4, min-mixed-vertices: 7 % of
+// the run, its rings sorted five times).
+std::vector<std::vector<uint32_t>> neighbours(const FanTrees& t, uint32_t n) {
   std::vector<std::vector<uint32_t>> near(n);
+  std::vector<uint32_t> seen(n, UINT32_MAX);
   for (uint32_t v = 0; v < n; ++v)
-    for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f)
-      for (uint32_t u : fans.ring(v, f)) near[v].push_back(u), near[u].push_back(v);
+    for (uint64_t x = t.first_node[v]; x < t.first_node[v + 1]; ++x)
+      if (const uint32_t u = t.neighbor[x]; seen[u] != v) seen[u] = v, near[v].push_back(u), near[u].push_back(v);
   for (auto& a : near) std::sort(a.begin(), a.end()), a.erase(std::unique(a.begin(), a.end()), a.end());
   return near;
 }
@@ -57,7 +61,12 @@ constexpr double kAxes[4][2] = {{1, 0.001}, {-1, -0.001}, {0.001, 1}, {-0.001, -
 
 StarDecoder::StarDecoder(const Mesh& dt, FanTrees trees, std::vector<Tri> triangles, std::vector<int64_t> value,
                          uint64_t max_steps)
-    : dt_(dt), t_(std::move(trees)), tris_(std::move(triangles)), value_(std::move(value)), max_steps_(max_steps) {}
+    : dt_(dt),
+      t_(std::move(trees)),
+      tris_(std::move(triangles)),
+      value_(std::move(value)),
+      near_(neighbours(t_, dt.num_vertices())),
+      max_steps_(max_steps) {}
 
 std::vector<std::vector<Tri>> StarDecoder::sweeps() const {
   std::vector<std::vector<Tri>> out;
@@ -94,7 +103,7 @@ std::optional<std::vector<Tri>> StarDecoder::search(const std::vector<int64_t>& 
     for (uint64_t f = t.first_leaf[v]; f < t.first_leaf[v + 1]; ++f) owner[f] = v, domain[v].push_back(f);
     std::stable_sort(domain[v].begin(), domain[v].end(), [&](uint64_t a, uint64_t b) { return value[a] > value[b]; });
   }
-  const std::vector<std::vector<uint32_t>> near = neighbours(t, fans, n);
+  const std::vector<std::vector<uint32_t>>& near = near_;
   std::vector<uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
   std::vector<double> along(n);

@@ -39,6 +39,7 @@ class StarDecoder {
   FanTrees t_;
   std::vector<Tri> tris_;  // by id (a corner is 3 id + position)
   std::vector<int64_t> value_;
+  std::vector<std::vector<uint32_t>> near_;  // (per vertex: those its fans pass through, and those through it)
   uint64_t max_steps_;
 };
 
