@@ -712,15 +712,6 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     }
     if (dual_first) bound = tighter(sense, bound, relaxed());
   }
-  // Counts and lengths: the bound from the vertices' stars, which lists no
-  // region (one region of thousands of triangles, as from k = 6 on the volcano,
-  // too). Before the views, which then run only where it left a gap: at k = 4
-  // on 10,000 DEM points, a smooth DEM sample and the volcano, every sum the
-  // dual left open (min-mixed-vertices on all three, max-convex-edges on the
-  // volcano), the stars proved and the views had tightened nothing (1.7 s on
-  // the DEM points).
-  if (description.combine == TermCombine::Sum && better(sense, bound, r.value))
-    bound = by_stars(dt, o, k, cand, r, bound, how, options.progress, memo);
   ViewBoundLimits vl;
   vl.views.progress = vl.dp.progress = options.progress;
   vl.model = engine.model_limits;
@@ -756,6 +747,10 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
       how += ", bound from the vertices' fans";
     }
   }
+  // Counts and lengths: the bound from the vertices' stars, which lists no
+  // region (one region of thousands of triangles, as from k = 6 on the volcano, too).
+  if (description.combine == TermCombine::Sum && better(sense, bound, r.value))
+    bound = by_stars(dt, o, k, cand, r, bound, how, options.progress, memo);
   // The regions' fill graphs glued in pairs only now, where the stars left a gap
   // (10,000 DEM points at k = 4, min-mixed-vertices, 30 -> 25 s, and the 131k-cell
   // DEM, 78 -> 70 s: the stars prove what two levels of glue did not).
