@@ -15,7 +15,7 @@ const SANITIZER_SKIP = [
   'heuristic at order k*', 'heuristic bounds at order k*', 'large instances*', 'exact k-OD optimisation*',
   'exact at order k equals*', 'near-degenerate: solves*', 'fill DP: the best*', 'long regions*',
   'bounds every triangulation*', 'progress comes*', 'cancelling*', 'wheels*', 'forced edges*', 'baker at order k*',
-  'star bound: sums only*', 'optimum invariant*', 'orders 5 to 8*',
+  'star bound: sums only*', 'optimum invariant*', 'orders 5 to 8*', 'tiny region budgets*',
 ];
 
 function run(title, cmd, args) {

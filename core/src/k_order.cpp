@@ -497,12 +497,12 @@ double by_stars(const Mesh& dt, Objective o, uint32_t k, const Candidates& cand,
 
 // bounded: whether a heuristic answer needs its bound (the ladder's lower
 // orders serve only as starts).
-KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes,
+KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, const RegionLimits& budgets,
                            FirstOrderStart& first_order, VertexTermMemo* memo, bool bounded = true,
                            const UsefulEdges* above = nullptr) {
   const Mesh& dt = fo.base;
   if (options.method == Method::BruteForce) {
-    return brute_force_k_order(dt, o, k, max_nodes, options.progress);
+    return brute_force_k_order(dt, o, k, budgets.max_nodes_per_region, options.progress);
   }
   const ObjectiveTerms& description = objective_terms(o, dt);
   const Sense sense = info(o).sense;
@@ -539,11 +539,9 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     if (lower || k < 3) return;
     SolveOptions lower_options = options;
     lower_options.method = Method::Auto;
-    lower = solve_regions(fo, o, k <= 8 ? k - 1 : k / 2, lower_options, max_nodes, first_order, memo, false, &orders);
+    lower = solve_regions(fo, o, k <= 8 ? k - 1 : k / 2, lower_options, budgets, first_order, memo, false, &orders);
   };
   if (k >= 5) solve_lower();
-  RegionLimits budgets;
-  budgets.max_nodes_per_region = max_nodes;
   const KOrderStructure structure(dt, k, std::move(useful), options.progress);
   RegionEngine engine(dt, o, structure, std::move(skeleton), budgets, options.progress, memo);
   Regions& R = engine.R;
@@ -669,7 +667,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // 10), bands of Delaunay triangles kept every lambda layers cut the regions too
   // large for the engine (slower: lambda runs of it).
   if (!refuted && bounded && k >= 2 && options.method == Method::Approx) {
-    const KOrderBaker b = k_order_baker(dt, o, structure, k, options.epsilon, max_nodes, options.progress);
+    const KOrderBaker b = k_order_baker(dt, o, structure, k, options.epsilon, budgets.max_nodes_per_region, options.progress);
     if (b.triangulation && better(sense, b.value, r.value))
       r.triangulation = std::move(*b.triangulation), r.value = b.value, how = b.summary();
     else if (b.shifts)
@@ -772,13 +770,20 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
 
 }  // namespace
 
-KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes) {
+KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options,
+                           const RegionLimits& budgets) {
   if (!fo.is_delaunay) throw InputError("higher order needs the Delaunay triangulation: not for user triangulations");
   FirstOrderStart first_order{fo, o, options, {}, 0, {}};
   VertexTermMemo memo;  // (the ladder's orders meet the same stars too; none within a domain)
-  KOrderResult r = solve_regions(fo, o, k, options, max_nodes, first_order, has_domain(fo.base) ? nullptr : &memo);
+  KOrderResult r = solve_regions(fo, o, k, options, budgets, first_order, has_domain(fo.base) ? nullptr : &memo);
   r.delaunay_value = evaluate(o, fo.base);
   return r;
+}
+
+KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options, uint64_t max_nodes) {
+  RegionLimits budgets;
+  budgets.max_nodes_per_region = max_nodes;
+  return solve_k_order(fo, o, k, options, budgets);
 }
 
 Solution k_order_solution(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options) {

@@ -1,6 +1,7 @@
 // The reference at order k: brute force, every k-OD triangulation of the
 // instance enumerated; and the small instances the order-k tests run over.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <initializer_list>
 
@@ -43,6 +44,30 @@ inline std::vector<double> high_order_instance(uint64_t seed) {
     case 1: return dem_points(10 + r.below(4), seed);
     case 2: return grid_points(3 + r.below(2), 4, seed, true);
     default: return cocircular_points(8 + r.below(5), seed);
+  }
+}
+
+// An instance of 12 to 16 points where a tiny region budget leaves the regions
+// incomplete, as on large terrains, and brute force still enumerates at k <= 5:
+// uniform, DEM-like, an integer grid with equal heights, a jittered grid rounded
+// to quarters (quantised coordinates and heights), a cocircular ring with points
+// around it.
+inline std::vector<double> medium_instance(uint64_t seed) {
+  Rng r(seed);
+  switch (seed % 5) {
+    case 0: return uniform_points(12 + r.below(5), seed);
+    case 1: return dem_points(12 + r.below(5), seed);
+    case 2: return grid_points(4, 3 + r.below(2), seed, true);
+    case 3: {
+      std::vector<double> p = jittered_grid(4, 3 + r.below(2), 0.3, seed);
+      for (double& v : p) v = std::round(v * 4) / 4;
+      return p;
+    }
+    default: {
+      std::vector<double> p = cocircular_points(12, seed);
+      for (int i = 0; i < 2 + r.below(3); ++i) p.insert(p.end(), {16 * r.uniform() - 8, 16 * r.uniform() - 8, r.uniform()});
+      return p;
+    }
   }
 }
 

@@ -16,6 +16,7 @@
 
 #include "hodt/first_order.hpp"
 #include "hodt/objectives.hpp"
+#include "hodt/regions.hpp"
 #include "hodt/skeleton.hpp"
 #include "hodt/solution.hpp"
 #include "hodt/solve.hpp"
@@ -45,6 +46,11 @@ bool enumerate_k_order(const Mesh& delaunay, uint32_t k, uint64_t max_nodes,
 // max_nodes: the enumeration budget of one region (brute force: of the instance).
 KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options,
                            uint64_t max_nodes = 300'000);
+// The same with every budget of the regions' listing given (brute force:
+// max_nodes_per_region for the instance). Tests shrink them so that small
+// instances take the paths of large terrains, where regions stay incomplete.
+KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options,
+                           const RegionLimits& budgets);
 
 // The same as a Solution (for the CLI and the bindings).
 Solution k_order_solution(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options);
