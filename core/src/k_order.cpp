@@ -476,17 +476,17 @@ double by_stars(const Mesh& dt, Objective o, uint32_t k, const Candidates& cand,
     }
   };
   // Descent from s by windows of `size` vertices while they improve it, at
-  // most `passes` passes, each with its tiles placed anew (a move across one
-  // pass's tile borders may lie inside the next's: a 100 x 100 DEM crop at
-  // k = 8, min-mixed-vertices, 244 -> 243 for a bound of 240); true if it
-  // improved s.
+  // most `passes` passes (and 16 in all), each with its tiles placed anew (a
+  // move across one pass's tile borders may lie inside the next's: a 100 x 100
+  // DEM crop at k = 8, min-mixed-vertices, 244 -> 243 for a bound of 240); true
+  // if it improved s.
   WindowLimits windows;
   windows.progress = progress;
-  uint32_t placement = 0;
+  uint32_t placement = 0;  // (the passes so far)
   auto descend = [&](Start& s, uint32_t size, uint32_t passes) {
     windows.per_window = size;
     bool improved = false;
-    for (uint32_t pass = 0; pass < passes && better(sense, bound, s.value); ++pass) {
+    for (uint32_t pass = 0; pass < passes && placement < 16 && better(sense, bound, s.value); ++pass) {
       windows.enough = std::fabs(bound - s.value);  // (then the value meets the bound)
       windows.placement = placement++;
       const auto w = improve_by_windows(dt, o, cand, s.triangulation, windows);
@@ -514,17 +514,12 @@ double by_stars(const Mesh& dt, Objective o, uint32_t k, const Candidates& cand,
     }
     if (b && b->decoder) decode(*b->decoder);
     if (value_side && second && descend(*second, 25, 2) && better(sense, second->value, best.value))
-      best = std::move(*second), windowed = true;
+      best = std::move(*second), decoded = windowed = true;
     // Then windows of 25 vertices while they improve it, then of 40, 64 and 102:
     // a move that no window of one size holds may fit one of the next (10,000
     // DEM points at k = 4, min-mixed-vertices, 1458 -> 1457, the bound; the
     // volcano at k = 8, 13 -> 12, the bound).
-    uint32_t passes = 16;
-    for (const uint32_t size : {25u, 40u, 64u, 102u}) {
-      const uint32_t before = placement;
-      windowed = descend(best, size, passes) || windowed;
-      passes -= std::min(passes, placement - before);
-    }
+    for (const uint32_t size : {25u, 40u, 64u, 102u}) windowed = descend(best, size, 16) || windowed;
   }
   r.triangulation = std::move(best.triangulation), r.value = best.value;
   if (decoded) how += ", then a triangulation read off the stars";
