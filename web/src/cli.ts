@@ -74,6 +74,9 @@ hodt.runCli(
 );
 let input: Uint8Array | Error | undefined;
 const notes: string[] = [];
+// A GIS file's points reach the core as lines of text, one per point: the core's
+// "(line N)" is then that point's cell or record, named as the loader read it.
+let origin: ((i: number) => string) | undefined;
 if (path !== undefined) {
   input = read(path);
   if (!(input instanceof Error)) {
@@ -88,6 +91,7 @@ if (path !== undefined) {
         const lines: string[] = [];
         for (let i = 0; i < cloud.xyz.length; i += 3) lines.push(`${cloud.xyz[i]} ${cloud.xyz[i + 1]} ${cloud.xyz[i + 2]}`);
         input = Buffer.from(lines.join('\n') + '\n', 'utf8');
+        origin = cloud.origin;
         for (const w of cloud.warnings) notes.push(`hodt: warning: ${path}: ${w}\n`);
         // The CRS the file names, written where the output format has a place.
         if (cloud.crs && !args.includes('--crs')) {
@@ -122,7 +126,8 @@ const result = hodt.runCli(
     stderrIsTerminal: process.stderr.isTTY === true,
   },
 );
-if (!args.includes('--quiet')) for (const n of notes) process.stderr.write(n);
+// (an input refused in the end gets its one error line, without notes about it)
+if (!args.includes('--quiet') && result.exitCode !== 2) for (const n of notes) process.stderr.write(n);
 process.stdout.write(result.stdout);
-process.stderr.write(result.stderr);
+process.stderr.write(origin ? result.stderr.replace(/\(line (\d+)\)/g, (_, line: string) => `(${origin!(Number(line) - 1)})`) : result.stderr);
 process.exitCode = result.exitCode;

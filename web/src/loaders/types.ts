@@ -10,4 +10,7 @@ export interface PointCloud {
    * `hodt.terrain(xyz, { maxEdge })`), so that triangles bridging the gaps are not
    * measured. Absent when every cell has data, and for point clouds. */
   maxEdge?: number;
+  /** Where point i was read from, in words ('row 12, column 3' of a raster,
+   * 'point record 128' of a LAS file), for messages about that point. */
+  origin(i: number): string;
 }
