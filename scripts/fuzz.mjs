@@ -5,6 +5,11 @@
 //
 //   node scripts/fuzz.mjs [SECONDS_PER_TARGET] [TARGET...]   (npm run fuzz -- 600)
 //   node scripts/fuzz.mjs --build-only
+//   node scripts/fuzz.mjs loaders [FILES] [FIRST_SEED]        (npm run fuzz -- loaders 1000000)
+//
+// `loaders` runs the loader fuzzer instead (tests/fuzz/loaders/fuzz.mjs): FILES
+// mutated GIS fixtures (default 200,000) through hodt/loaders of dist/ (npm run
+// build first) and a sample of them through the npm CLI.
 //
 // A finding stops that target, leaves its input in build/fuzz/artifacts/ and makes
 // the exit code 1. Print the reproducer with: build/sanitize/fuzz_X ARTIFACT
@@ -65,7 +70,14 @@ export function fuzz(target, secs) {
   return { target, runs, ok };
 }
 
-if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {
+if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1] && args[0] === 'loaders') {
+  const { describe, fuzzLoaders } = await import('../tests/fuzz/loaders/fuzz.mjs');
+  const files = Number(args[1] ?? 200_000);
+  const stats = await fuzzLoaders({ files, first: Number(args[2] ?? 0), cliFiles: Math.min(1000, Math.ceil(files / 1000)) });
+  for (const f of stats.findings.slice(0, 50)) console.log(`seed ${f.seed} (${f.fixture}, ${f.what}${f.via ? ', CLI' : ''}): ${f.finding}`);
+  console.log(describe(stats));
+  process.exitCode = stats.findings.length ? 1 : 0;
+} else if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {
   buildSanitized();
   if (!buildOnly) {
     let failed = false;

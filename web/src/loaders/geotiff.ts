@@ -1,8 +1,8 @@
 // GeoTIFF DEMs as points: one point per cell with data, at the cell's centre
 // (the sample's own location for PixelIsPoint rasters). The file's structure is
 // read and checked here (tiff/raster.ts) before anything is decoded; the geotiff
-// package decompresses the chunks (Deflate, PackBits, ZSTD, LERC), and LZW goes
-// through tiff/lzw.ts, which bounds its output by the chunk's size.
+// package decompresses the chunks (Deflate, PackBits, ZSTD), and LZW goes through
+// tiff/lzw.ts, which bounds its output by the chunk's size.
 import { fail } from './fail.js';
 import { decodeRaster } from './tiff/decode.js';
 import { Directory } from './tiff/ifd.js';

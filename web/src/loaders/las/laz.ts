@@ -85,7 +85,7 @@ export async function forEachCompressedRecord(bytes: Uint8Array, h: Header, visi
     }
   } catch (e) {
     module = undefined; // (a trap or an exception inside LASzip may leave the module inconsistent)
-    rethrow('LAZ', `the compressed points are corrupt: LASzip failed at point ${i} of ${h.count}`, e instanceof Error && /^\d+\b/.test(e.message) ? undefined : e); // (laz-perf's C++ exceptions arrive as a bare pointer)
+    rethrow('LAZ', `the compressed points are corrupt: LASzip failed at point ${i} of ${h.count}`, /^\d+\b/.test(e instanceof Error ? e.message : String(e)) ? undefined : e); // (laz-perf's C++ exceptions arrive as a bare pointer)
   } finally {
     try {
       zip?.delete();

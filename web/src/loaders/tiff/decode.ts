@@ -1,9 +1,11 @@
 // The band of a checked raster (raster.ts) decoded chunk by chunk: each chunk's
-// bytes decompressed (geotiff's decoders; LZW bounded, lzw.ts), its predictor
+// bytes decompressed (geotiff's decoders; LZW bounded, lzw.ts; a ZSTD frame's
+// declared size checked first, zstdFrame.ts), its predictor
 // undone, its decoded length compared with the size its cells need, and its
 // samples copied into one height per cell, NaN where the cell has no data.
 import { fail, rethrow } from '../fail.js';
 import { decodeLZW } from './lzw.js';
+import { checkZstdFrame } from './zstdFrame.js';
 import type { Raster } from './raster.js';
 
 interface Decoder {
@@ -21,7 +23,6 @@ async function decoderFor(r: Raster, rows: number): Promise<Decoder> {
     bitsPerSample: r.planar === 2 ? [r.bitsPerSample[0]!] : r.bitsPerSample,
     predictor: r.predictor,
     samplesPerPixel: r.samplesPerPixel,
-    ...(r.lercParameters ? { LercParameters: r.lercParameters } : {}),
   };
   if (r.compression === 5) {
     // geotiff's decoder interface (its predictor applied after decodeBlock) over
@@ -64,6 +65,7 @@ export async function decodeRaster(bytes: Uint8Array, r: Raster): Promise<Float6
       for (let y = 0; y < rowsHere; ++y) z.fill(NaN, (top + y) * r.width + left, (top + y) * r.width + left + colsHere);
       continue; // (a sparse chunk: NODATA)
     }
+    if (r.compression === 50000) checkZstdFrame(bytes.subarray(offset, offset + byteCount), r.chunkWidth * r.chunkHeight * r.pixelBytes, `${kind} ${i}`);
     let decoded: ArrayBufferLike;
     try {
       let decoder = decoders.get(rows);

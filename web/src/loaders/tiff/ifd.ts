@@ -31,7 +31,6 @@ export const TAG = {
   ModelTransformation: 34264,
   GeoKeyDirectory: 34735,
   GDAL_NODATA: 42113,
-  LercParameters: 50674,
 } as const;
 export type TagName = keyof typeof TAG;
 const NAME_OF = new Map<number, TagName>(Object.entries(TAG).map(([name, tag]) => [tag, name as TagName]));

@@ -10,15 +10,15 @@ import type { Directory } from './ifd.js';
 /** Compressions read, with the largest ratio of decoded to stored bytes each
  * format allows: PackBits 128 bytes per 2; Deflate's longest match, 258 bytes,
  * from one code of at least 2 bits (1032); an LZW code of 9 or more bits yields
- * at most 4096 bytes; ZSTD's RLE block and LERC's constant block store a whole
- * block in a few bytes (the block size bounds them: 2^15 is ample for both). */
+ * at most 4096 bytes; ZSTD's RLE block stores up to 128 KiB in 4 bytes. (LERC is
+ * not read: its blobs' own headers size its allocations, which nothing here
+ * could bound.) */
 const COMPRESSIONS = new Map<number, { name: string; ratio: number }>([
   [1, { name: 'none', ratio: 1 }],
   [5, { name: 'LZW', ratio: 4096 }],
   [8, { name: 'Deflate', ratio: 1032 }],
   [32946, { name: 'Deflate', ratio: 1032 }],
   [32773, { name: 'PackBits', ratio: 64 }],
-  [34887, { name: 'LERC', ratio: 32768 }],
   [50000, { name: 'ZSTD', ratio: 32768 }],
 ]);
 
@@ -57,7 +57,6 @@ export interface Raster {
   chunksAcross: number;
   /** The chunks holding the band, row by row of chunks. */
   chunks: Chunk[];
-  lercParameters?: number[];
   /** The NODATA value as the samples hold it, and as the file writes it. */
   nodata?: number;
   nodataText?: string;
@@ -88,7 +87,7 @@ export function describeRaster(dir: Directory, band: number): Raster {
   const compression = dir.integer('Compression', 1, 0, 65535);
   const codec = COMPRESSIONS.get(compression);
   if (!codec)
-    fail('GeoTIFF', `compression ${compression} is not one hodt reads (none, LZW, Deflate, PackBits, LERC, ZSTD); gdal_translate -co COMPRESS=DEFLATE converts it`);
+    fail('GeoTIFF', `compression ${compression} is not one hodt reads (none, LZW, Deflate, PackBits, ZSTD); gdal_translate -co COMPRESS=DEFLATE converts it`);
   const predictor = dir.integer('Predictor', 1, 1, 3);
   const little = dir.little;
   if (predictor === 3 && sampleFormat !== 3) fail('TIFF', 'tag Predictor (317) is 3 (floating point) on integer samples');
@@ -156,13 +155,11 @@ export function describeRaster(dir: Directory, band: number): Raster {
     chunks.push({ offset, byteCount, rows });
   }
 
-  const lercParameters = compression === 34887 ? dir.numbers('LercParameters') : undefined;
-  if (compression === 34887 && !lercParameters) fail('TIFF', 'tag LercParameters (50674) is missing: LERC data cannot be decoded without it');
   const { transform, half, crs } = georeferencing(dir);
   return {
     width, height, little, samplesPerPixel, bitsPerSample, sampleFormat, sampleBytes, sampleOffset, pixelBytes, planar,
     compression, compressionName: codec.name, predictor, tiled, chunkWidth, chunkHeight, chunksAcross, chunks,
-    ...(lercParameters ? { lercParameters } : {}), ...(nodata !== undefined ? { nodata, nodataText } : {}), transform, half,
+    ...(nodata !== undefined ? { nodata, nodataText } : {}), transform, half,
     ...(crs ? { crs } : {}),
   };
 }
