@@ -156,6 +156,7 @@ export function describeRaster(dir: Directory, band: number): Raster {
   }
 
   const { transform, half, crs } = georeferencing(dir);
+  checkCorners(transform, width, height);
   return {
     width, height, little, samplesPerPixel, bitsPerSample, sampleFormat, sampleBytes, sampleOffset, pixelBytes, planar,
     compression, compressionName: codec.name, predictor, tiled, chunkWidth, chunkHeight, chunksAcross, chunks,
@@ -195,11 +196,22 @@ function georeferencing(dir: Directory): Pick<Raster, 'transform' | 'half' | 'cr
   } else {
     fail('GeoTIFF', 'no georeferencing (ModelTiepoint and ModelPixelScale, or ModelTransformation)');
   }
+  return { transform, ...keysOf(dir) };
+}
+
+// The raster's corners: where the affine map is finite, it is finite on every cell.
+export function checkCorners(t: Raster['transform'], width: number, height: number): void {
+  for (const [u, v] of [[0, 0], [width, 0], [0, height], [width, height]] as const)
+    if (!Number.isFinite(t[0] * u + t[1] * v + t[2]) || !Number.isFinite(t[3] * u + t[4] * v + t[5]))
+      fail('GeoTIFF', `the georeferencing puts the raster's corner (column ${u}, row ${v}) at an infinite coordinate`);
+}
+
+function keysOf(dir: Directory): Pick<Raster, 'half' | 'crs'> {
   const keys = geoKeys(dir.numbers('GeoKeyDirectory'));
   const half = keys.get(1025) === PIXEL_IS_POINT ? 0 : 0.5;
   const epsg = keys.get(3072) ?? keys.get(2048);
   const crs = epsg !== undefined && epsg > 0 && epsg < 32767 ? `EPSG:${epsg}` : undefined;
-  return { transform, half, ...(crs ? { crs } : {}) };
+  return { half, ...(crs ? { crs } : {}) };
 }
 
 // The GeoKey directory's keys whose value is stored in the directory itself.
