@@ -86,3 +86,59 @@ describe('what a progress callback may do', () => {
     other.addPoint(0.123, 0.456, 1);  // and the other one is not busy
   });
 });
+
+describe('solves nested in another solve of the same function', () => {
+  // Every bound function called inside a call of itself: embind once shared each
+  // function's argument arrays between calls, so the outer call freed the inner
+  // call's arguments twice and the heap broke a few solves later.
+  it('every objective, with every objective solved inside its progress callback, answers as alone', () => {
+    const ids = hodt.objectives.map((o) => o.id);
+    const inner = (seed: number) => randomPoints(150, 11 + seed);
+    const alone = new Map<string, number>();
+    for (let c = 1; c <= 3; ++c) for (const id of ids) alone.set(`${c} ${id}`, hodt.terrain(inner(c)).solve(id).value);
+    for (const outerId of ids) {
+      using outer = hodt.terrain(randomPoints(300, 7));
+      const expected = outer.solve(outerId).value;
+      let calls = 0;
+      const s = outer.solve(outerId, {
+        progress: () => {
+          if (++calls > 3) return;
+          for (const id of ids) {
+            using t = hodt.terrain(inner(calls));
+            expect(t.solve(id, { progress: () => {} }).value).toBe(alone.get(`${calls} ${id}`));
+          }
+        },
+      });
+      expect(s.value).toBe(expected);
+    }
+  }, 120_000);
+});
+
+describe('after a trap', () => {
+  it('every later call on the module throws InternalError saying so; delete is quiet', async () => {
+    const { stopAfterTrap } = await import('../../web/src/trap.js');
+    const { InternalError } = await import('../../web/src/errors.js');
+    class TerrainHandle {
+      solve() {
+        throw new WebAssembly.RuntimeError('memory access out of bounds');
+      }
+      numPoints() {
+        return 3;
+      }
+      delete() {
+        throw new Error('must not be called after a trap');
+      }
+    }
+    const module = { TerrainHandle, heapSize: () => 1, fromPoints: () => new TerrainHandle() } as never;
+    let trapped = 0;
+    stopAfterTrap(module, () => ++trapped);
+    const t = (module as { fromPoints: () => TerrainHandle }).fromPoints();
+    expect(t.numPoints()).toBe(3);
+    expect(() => t.solve()).toThrow(/trapped \(memory access out of bounds\)/);
+    expect(() => t.solve()).toThrow(InternalError);
+    expect(trapped).toBe(1);
+    expect(() => t.numPoints()).toThrow(/stopped after a trap/);
+    expect(() => (module as { heapSize: () => number }).heapSize()).toThrow(InternalError);
+    expect(t.delete()).toBeUndefined();
+  });
+});

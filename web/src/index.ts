@@ -15,6 +15,7 @@ import type { ObjectiveInfo } from './objectives.js';
 import { checkOptionNames } from './options.js';
 import { type Accessor, type PointInput, toXyz } from './points.js';
 import { Terrain } from './terrain.js';
+import { stopAfterTrap } from './trap.js';
 import type { HodtModule } from './wasm/hodt.mjs';
 
 export { BusyError, CancelledError, HodtError, InputError, InternalError, LimitError } from './errors.js';
@@ -170,7 +171,9 @@ const LOAD_OPTIONS = ['wasmUrl', 'wasmBinary', 'wasmModule'] as const satisfies 
 /**
  * Loads the wasm module: once; later calls return the same instance and ignore
  * their options. If loading fails the promise rejects with a HodtError, and the
- * next call tries again.
+ * next call tries again. If the module ever traps (a bug in hodt), that call and
+ * every later call on it throw InternalError saying so, and the next call loads
+ * a new module.
  */
 export function loadHodt(options: LoadOptions = {}): Promise<Hodt> {
   try {
@@ -178,12 +181,18 @@ export function loadHodt(options: LoadOptions = {}): Promise<Hodt> {
   } catch (e) {
     return Promise.reject(e);
   }
-  loading ??= loadModule(options ?? {}).then(
-    (m) => new Hodt(m),
+  const loaded: Promise<Hodt> = (loading ??= loadModule(options ?? {}).then(
+    (m) => {
+      // (after a trap, the next loadHodt() loads a fresh module)
+      stopAfterTrap(m, () => {
+        if (loading === loaded) loading = null;
+      });
+      return new Hodt(m);
+    },
     (e: unknown) => {
       loading = null;
       throw e;
     },
-  );
-  return loading;
+  ));
+  return loaded;
 }

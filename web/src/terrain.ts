@@ -135,7 +135,13 @@ export interface TerrainStats {
  * (dispose) or starting another solve throws BusyError.
  */
 // Frees the wasm side of terrains collected without dispose().
-const leaked = new FinalizationRegistry<RawTerrain>((raw) => raw.delete());
+const leaked = new FinalizationRegistry<RawTerrain>((raw) => {
+  try {
+    raw.delete();
+  } catch {
+    // (a finalizer must not throw: the process would die of it)
+  }
+});
 
 export class Terrain implements Disposable {
   #raw: RawTerrain | null;
