@@ -18,6 +18,8 @@ const dist = join(repo, 'dist');
 const gzip = (b) => gzipSync(b, { level: 9 }).length;
 const brotli = (b) => brotliCompressSync(b, { params: { [constants.BROTLI_PARAM_QUALITY]: 11 } }).length;
 const kB = (n) => `${(n / 1024).toFixed(1)} KiB`;
+// The tarball in tenths of a MiB: its bytes move with every edit of the shipped docs.
+const MiB = (n) => `${(n / 1024 / 1024).toFixed(1)} MiB`;
 const rows = [];
 const row = (what, buffers) => {
   const all = Buffer.concat(buffers);
@@ -70,7 +72,7 @@ const generated = {
 \`hodt/export\` is not part of that bundle: a page that imports it adds ${exportRow[1]} of
 JavaScript as shipped (${files} files; ${exportRow[2]} gzipped), no wasm.
 
-npm tarball: ${kB(pack.size)} (${pack.entryCount} files, ${kB(pack.unpackedSize)} unpacked).`,
+npm tarball: ${pack.entryCount} files, ${MiB(pack.size)} packed, ${MiB(pack.unpackedSize)} unpacked.`,
   },
   'README.md': {
     sizes: `About ${Math.round(kBOf(rows.at(-1)[2]))} KiB gzipped in total (wasm ${Math.round(kBOf(rows[0][2]))} KiB)`,
