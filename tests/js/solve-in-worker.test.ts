@@ -3,7 +3,7 @@
 // It runs the built package (dist/): the worker is a JS file next to the library,
 // which the sources (web/src/*.ts) do not have.
 import { beforeAll, describe, expect, it } from 'vitest';
-import { CancelledError, type Hodt, InputError, LimitError, loadHodt, solveInWorker } from '../../dist/index.js';
+import { CancelledError, type Hodt, HodtError, InputError, LimitError, loadHodt, solveInWorker } from '../../dist/index.js';
 import { hills, randomPoints } from './randomPoints.js';
 
 let hodt: Hodt;
@@ -52,6 +52,10 @@ describe('solveInWorker', () => {
     await expect(solveInWorker(hills(12, 3), 'min-local-minima', { metod: 'exact' } as object)).rejects.toThrow(
       "unknown solveInWorker option 'metod' (did you mean 'method'?)",
     );
+    await expect(solveInWorker(hills(12, 3), 'min-local-minima', { wasmUrl: new URL('file:///nowhere/hodt.wasm') })).rejects.toThrow(
+      /^could not load hodt\.wasm from file:\/\/\/nowhere\/hodt\.wasm: /,
+    );
+    await expect(solveInWorker(hills(12, 3), 'min-local-minima', { wasmUrl: 'file:///nowhere/hodt.wasm' })).rejects.toBeInstanceOf(HodtError);
     const cause = new Error('no longer needed');
     await expect(solveInWorker(hills(12, 3), 'min-local-minima', { signal: AbortSignal.abort(cause) })).rejects.toMatchObject({
       name: 'AbortError',
