@@ -249,18 +249,22 @@ WebAssembly module: hodt's code and CGAL's are combined in it. What the LGPL
 asks of such a Combined Work is met as follows:
 - The complete source of hodt (the "Corresponding Application Code") is
   public, under the MIT license: https://github.com/hodt-project/hodt
-  (this version: the tag v${pkg.version}). CGAL's source is the Debian package
-  libcgal-dev ${cgalVersion}, or https://github.com/CGAL/cgal.
+  (version ${pkg.version} of its package.json). CGAL's source is the Debian
+  package libcgal-dev ${cgalVersion}, or https://github.com/CGAL/cgal.
 - To use a modified CGAL (or any other version), rebuild hodt.wasm from that
   source on Debian 12: \`npm run build\` installs the toolchain (emscripten,
   libcgal-dev, libboost-dev) with scripts/setup.mjs and writes
-  build/wasm/hodt.wasm; point the build at your CGAL by replacing the
-  build/wasm/sysinc/CGAL link (or CGAL in /usr/include) with your copy's
-  include/CGAL. The rebuilt hodt.wasm replaces dist/wasm/hodt.wasm in the
-  installed package (node_modules/hodt/dist/wasm/hodt.wasm), or is given to
-  loadHodt({ wasmUrl }) / loadHodt({ wasmBinary }) without touching the
-  package: the JavaScript API calls the wasm only through its exported
-  interface (wasm/bindings.cpp), so any build of the same hodt version works.
+  build/wasm/hodt.wasm and its glue build/wasm/hodt.mjs; point the build at
+  your CGAL by replacing the build/wasm/sysinc/CGAL link (or CGAL in
+  /usr/include) with your copy's include/CGAL. The two files replace
+  dist/wasm/hodt.wasm and dist/wasm/hodt.mjs in the installed package
+  (node_modules/hodt/dist/wasm/). When the rebuilt hodt.mjs is the same as the
+  shipped one (the same Emscripten and settings give the same glue unless the
+  wasm's imports change), the rebuilt wasm alone will do, given to
+  loadHodt({ wasmUrl }) or loadHodt({ wasmBinary }) without touching the
+  package: the JavaScript API reaches the wasm only through its exported
+  interface (wasm/bindings.cpp). The same build writes the demo with the
+  rebuilt wasm (build/demo, which the package ships as dist/demo).
 - Nothing in the package restricts modification of CGAL or reverse
   engineering for debugging such modifications.
 The texts of the GNU LGPL version 3 and of the GNU GPL version 3, which it
