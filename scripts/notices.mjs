@@ -281,7 +281,7 @@ ${wrap(boost.join(', '), '  ')}
 
 Copyright: Boost project contributors (each header names its authors).
 
-${debianLicense('/usr/share/doc/libboost1.74-dev/copyright', 'BSL-1.0')}
+${debianLicense(`/usr/share/doc/libboost${boostVersion}-dev/copyright`, 'BSL-1.0')}
 `;
 
   if (fastFloat) {
