@@ -14,10 +14,10 @@ import { type AccessorOptions, type PointOptions, TERRAIN_OPTIONS } from './terr
 import type { WorkerReply, WorkerRequest } from './workerProtocol.js';
 
 /** SolveOptions, the terrain's options and where the worker finds hodt.wasm. */
-export interface WorkerSolveOptions<Terrain = PointOptions> extends SolveOptions {
+export interface WorkerSolveOptions<Options = PointOptions> extends SolveOptions {
   /** How the worker builds the terrain (hodt.terrain's options). Accessors run
    * on the calling thread, before the points are sent. */
-  terrain?: Terrain;
+  terrain?: Options;
   /** LoadOptions for the worker's loadHodt (default: hodt.wasm next to the JS). */
   wasmUrl?: string | URL;
   wasmModule?: WebAssembly.Module;
