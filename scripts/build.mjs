@@ -39,6 +39,8 @@ run(`ninja -C build/wasm`, emenv);
 
 mkdirSync(`${root}/web/src/wasm`, { recursive: true });
 for (const f of ['hodt.mjs', 'hodt.wasm']) copyIfChanged(`${wasm}/${f}`, `${root}/web/src/wasm/${f}`);
+// THIRD_PARTY_NOTICES and package.json's license follow what the wasm was built from.
+run('node scripts/notices.mjs');
 // A clean dist/: a deleted source must not leave a stale file in the package.
 rmSync(`${root}/dist`, { recursive: true, force: true });
 run(`npx tsc -p tsconfig.json`);

@@ -3,6 +3,7 @@
 // memory"; and every solve calls progress often enough to cancel it within 100 ms.
 import { beforeAll, describe, expect, it } from 'vitest';
 import { CancelledError, type Hodt, LimitError, loadHodt, type ObjectiveId, type Terrain } from '../../web/src/index.js';
+import { hills } from './randomPoints.js';
 
 let hodt: Hodt;
 beforeAll(async () => {
@@ -16,19 +17,6 @@ function wheel(n: number): Float64Array {
     const a = (2 * Math.PI * i) / (n - 1);
     xyz.push(Math.cos(a), Math.sin(a), i % 2 ? 1 : -1);
   }
-  return Float64Array.from(xyz);
-}
-
-// A smooth hilly terrain on jittered grid points (many flippable quads).
-function hills(side: number, seed: number): Float64Array {
-  let s = seed;
-  const r = () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
-  const xyz: number[] = [];
-  for (let j = 0; j < side; ++j)
-    for (let i = 0; i < side; ++i) {
-      const x = i + 0.7 * (r() - 0.5), y = j + 0.7 * (r() - 0.5);
-      xyz.push(x, y, Math.sin(x / 5) * Math.cos(y / 7) * 3 + 0.2 * r());
-    }
   return Float64Array.from(xyz);
 }
 

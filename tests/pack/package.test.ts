@@ -2,14 +2,17 @@
 // project (no network), then Node, the CLI, TypeScript and a bundled page in
 // Chromium under a Content-Security-Policy without 'unsafe-eval'.
 import { execFileSync, spawn, spawnSync } from 'node:child_process';
-import { cpSync, readdirSync, readFileSync } from 'node:fs';
-import { dirname, join } from 'node:path';
+import { cpSync, existsSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { dirname, join, normalize } from 'node:path';
+import { gzipSync } from 'node:zlib';
 import { getIssues } from '@placemarkio/check-geojson';
 import type { Browser } from 'playwright-core';
 import { PLYLoader } from 'three/examples/jsm/loaders/PLYLoader.js';
 import { build, createServer } from 'vite';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { hills } from '../js/randomPoints.js';
 import { launch, watchedPage } from './chromium.js';
+import { codeBlocks, headingAnchors, linkTargets } from './markdown.js';
 import { checkBuilt, linkFromRepo, packAndInstall, type Project, repo } from './project.js';
 import { serveStatic } from './serve.js';
 
@@ -42,10 +45,10 @@ const extraNodes = (process.env.HODT_NODES ?? '').split(':').filter(Boolean);
 describe('the tarball', () => {
   it('holds the JS, the types, the wasm and the CLI, and nothing else', () => {
     const paths = project.files.map((f) => f.path).sort();
-    for (const f of ['package.json', 'README.md', 'dist/index.js', 'dist/index.d.ts', 'dist/three.js', 'dist/three.d.ts', 'dist/export.js', 'dist/export.d.ts', 'dist/cli.js', 'dist/wasm/hodt.mjs', 'dist/wasm/hodt.d.mts', 'dist/wasm/hodt.wasm']) {
+    for (const f of ['package.json', 'README.md', 'LICENSE', 'THIRD_PARTY_NOTICES', 'dist/index.js', 'dist/index.d.ts', 'dist/three.js', 'dist/three.d.ts', 'dist/export.js', 'dist/export.d.ts', 'dist/cli.js', 'dist/wasm/hodt.mjs', 'dist/wasm/hodt.d.mts', 'dist/wasm/hodt.wasm']) {
       expect(paths).toContain(f);
     }
-    for (const p of paths) expect(p).toMatch(/^(package\.json|README\.md|docs\/(api|objectives|higher-order)\.md|dist\/.+\.(js|d\.ts|mjs|d\.mts|wasm)|dist\/demo\/(index\.html|assets\/[\w-]+\.(js|css|wasm)))$/);
+    for (const p of paths) expect(p).toMatch(/^(package\.json|README\.md|LICENSE|THIRD_PARTY_NOTICES|docs\/(api|objectives|higher-order)\.md|dist\/.+\.(js|d\.ts|mjs|d\.mts|wasm)|dist\/demo\/(index\.html|assets\/[\w-]+\.(js|css|wasm)))$/);
     expect(paths).toContain('dist/demo/index.html');
     const cli = project.files.find((f) => f.path === 'dist/cli.js')!;
     expect(cli.mode & 0o111).not.toBe(0);
@@ -112,6 +115,83 @@ describe('the tarball', () => {
   });
 });
 
+// The package as a company's license review and a reader on npm see it.
+describe('license, notices and metadata', () => {
+  const shipped = (f: string) => readFileSync(join(project.dir, 'node_modules/hodt', f), 'utf8');
+  it('LICENSE is the MIT license of the hodt authors', () => {
+    expect(shipped('LICENSE')).toMatch(/^MIT License\n\nCopyright \(c\) the hodt authors\n\nPermission is hereby granted, free of charge/);
+  });
+  it('THIRD_PARTY_NOTICES and the license field are what scripts/notices.mjs writes from the build and node_modules', () => {
+    const r = spawnSync('node', [join(repo, 'scripts/notices.mjs'), '--check'], { encoding: 'utf8' });
+    expect(r.stderr).toBe('');
+    expect(r.status).toBe(0);
+    expect(shipped('THIRD_PARTY_NOTICES')).toBe(readFileSync(join(repo, 'THIRD_PARTY_NOTICES'), 'utf8'));
+  });
+  it('THIRD_PARTY_NOTICES lists exactly the npm packages installed with hodt, each with a license', () => {
+    // Every package in the project's node_modules but hodt itself (nested ones too).
+    const installed: string[] = [];
+    const visit = (dir: string) => {
+      if (!existsSync(dir)) return;
+      for (const name of readdirSync(dir)) {
+        if (name.startsWith('.')) continue;
+        if (name.startsWith('@')) {
+          for (const sub of readdirSync(join(dir, name))) visitPackage(join(dir, name, sub));
+        } else visitPackage(join(dir, name));
+      }
+    };
+    const visitPackage = (at: string) => {
+      const pkg = JSON.parse(readFileSync(join(at, 'package.json'), 'utf8'));
+      if (pkg.name !== 'hodt') installed.push(`${pkg.name}@${pkg.version}`);
+      visit(join(at, 'node_modules'));
+    };
+    visit(join(project.dir, 'node_modules'));
+    const text = shipped('THIRD_PARTY_NOTICES');
+    const section = text.slice(text.indexOf('npm packages installed with hodt'), text.indexOf('npm packages bundled in the demo'));
+    const listed = [...section.matchAll(/^npm package: (\S+)\nLicense: (.+)$/gm)];
+    expect(listed.map((m) => m[1]).sort()).toEqual(installed.sort());
+    expect(installed.length).toBeGreaterThanOrEqual(2);
+    for (const m of listed) expect(m[2], m[1]).not.toBe('(none given)');
+  });
+  it('THIRD_PARTY_NOTICES gives the LGPL and GPL texts and says how to relink the wasm; the README says what the wasm contains', () => {
+    const text = shipped('THIRD_PARTY_NOTICES');
+    expect(text).toContain('GNU LESSER GENERAL PUBLIC LICENSE\n                       Version 3, 29 June 2007');
+    expect(text).toContain('GNU GENERAL PUBLIC LICENSE\n                       Version 3, 29 June 2007');
+    expect(text).toContain('Boost Software License - Version 1.0');
+    expect(text).toMatch(/Relinking \(LGPL-3\.0 section 4\)[\s\S]*npm run build[\s\S]*loadHodt\(\{ wasmUrl \}\)/);
+    expect(text).toMatch(/Filtered_kernel +\d+ headers +LGPL-3\.0-or-later OR LicenseRef-Commercial/);
+    const pkg = JSON.parse(shipped('package.json'));
+    expect(pkg.license).toMatch(/^MIT AND LGPL-3\.0-or-later AND BSL-1\.0 AND /);
+    const readme = shipped('README.md').replace(/\s+/g, ' ');
+    expect(readme).toContain(pkg.license);
+    for (const part of ['CGAL', 'LGPL-3.0-or-later', 'Boost', 'BSL-1.0', 'Emscripten', '[THIRD_PARTY_NOTICES](THIRD_PARTY_NOTICES)', '[LICENSE](LICENSE)']) expect(readme).toContain(part);
+  });
+  it('package.json names the repository, its README as homepage and its issues as bugs', () => {
+    const pkg = JSON.parse(shipped('package.json'));
+    expect(pkg.repository).toEqual({ type: 'git', url: 'git+https://github.com/hodt-project/hodt.git' });
+    expect(pkg.homepage).toBe('https://github.com/hodt-project/hodt#readme');
+    expect(pkg.bugs).toEqual({ url: 'https://github.com/hodt-project/hodt/issues' });
+  });
+  it('every relative link of every shipped Markdown file resolves inside the package, anchors included', () => {
+    const files = new Set(project.files.map((f) => f.path));
+    const markdown = [...files].filter((f) => f.endsWith('.md'));
+    expect(markdown).toEqual(expect.arrayContaining(['README.md', 'docs/api.md']));
+    let checked = 0;
+    for (const doc of markdown) {
+      for (const target of linkTargets(shipped(doc))) {
+        if (/^(https?:|mailto:)/.test(target)) continue;
+        const [path, anchor] = target.split('#') as [string, string | undefined];
+        const resolved = path ? normalize(join(dirname(doc), decodeURI(path))) : doc;
+        expect(files.has(resolved), `${doc}: ${target} is not in the package`).toBe(true);
+        if (anchor !== undefined && resolved.endsWith('.md')) {
+          expect(headingAnchors(shipped(resolved)).has(anchor), `${doc}: ${target}: no such heading`).toBe(true);
+        }
+        ++checked;
+      }
+    }
+    expect(checked).toBeGreaterThan(20);
+  });
+});
+
 describe('Node', () => {
   beforeAll(() => cpSync(join(here, 'node-smoke.mjs'), join(project.dir, 'node-smoke.mjs')));
   it.each(['node', ...extraNodes])('%s imports the package by name and solves a terrain (without three installed)', (node) => {
@@ -127,6 +207,18 @@ describe('Node', () => {
     for (const v of Object.values(out.values)) expect(Number.isFinite(v)).toBe(true);
     expect(out.aborted).toEqual({ cancelled: true, name: 'AbortError' });
     expect(out.input).toEqual({ input: true, hodt: true, name: 'InputError', message: 'point 2: y is NaN, expected a finite number' });
+  });
+
+  it('solveInWorker stops a 30-second solve within a second of AbortSignal.timeout(100)', () => {
+    cpSync(join(here, 'cancel.mjs'), join(project.dir, 'cancel.mjs'));
+    const points = hills(60, 7); // min-mixed-vertices at order 6: about 30 s (tests/js/solve-in-worker.test.ts)
+    writeFileSync(join(project.dir, 'hills.f64'), new Uint8Array(points.buffer));
+    const r = inProject('node', ['cancel.mjs', 'hills.f64']);
+    expect(r.stderr).toBe('');
+    const out = JSON.parse(r.stdout);
+    expect(out).toMatchObject({ cancelled: true, name: 'AbortError', cause: 'TimeoutError' });
+    expect(out.ms).toBeGreaterThanOrEqual(100);
+    expect(out.ms).toBeLessThan(1000);
   });
 
   it('hodt/three builds a geometry with the project\'s three', () => {
@@ -255,26 +347,19 @@ describe('npx hodt demo', () => {
 });
 
 describe('sizes', () => {
-  it('the gzip sizes in docs/api.md and the README are within 10% of what sizes.mjs measures', () => {
-    const r = spawnSync('node', [join(here, 'sizes.mjs')], { encoding: 'utf8' });
-    expect(r.status, r.stderr).toBe(0);
-    const gzipOf = (table: string, what: string) => {
-      const line = table.split('\n').find((l) => l.startsWith(`| ${what}`));
-      return Number(/^\|[^|]*\|[^|]*\| \**([\d.]+) KiB/.exec(line ?? '')?.[1]);
-    };
-    const measured = { wasm: gzipOf(r.stdout, '`dist/wasm/hodt.wasm`'), total: gzipOf(r.stdout, '**total') };
-    const api = readFileSync(join(repo, 'docs/api.md'), 'utf8');
-    const readme = /About (\d+) KiB gzipped in total \(wasm (\d+) KiB\)/.exec(readFileSync(join(repo, 'README.md'), 'utf8'));
-    const claims = [
-      [gzipOf(api, '`dist/wasm/hodt.wasm`'), measured.wasm],
-      [gzipOf(api, '**total'), measured.total],
-      [Number(readme?.[2]), measured.wasm],
-      [Number(readme?.[1]), measured.total],
-    ];
-    for (const [claimed, actual] of claims) {
-      expect(actual).toBeGreaterThan(0);
-      expect(Math.abs(claimed! - actual!) / actual!, `claimed ${claimed} KiB, measured ${actual} KiB`).toBeLessThan(0.1);
-    }
+  it('the sizes and counts in the docs are what tests/pack/sizes.mjs measures now', () => {
+    const r = spawnSync('node', [join(here, 'sizes.mjs'), '--check'], { encoding: 'utf8' });
+    expect(r.stderr).toBe('');
+    expect(r.status).toBe(0);
+  });
+  it("the shipped docs state the tarball's file count and the shipped wasm's raw and gzipped size", () => {
+    const api = readFileSync(join(project.dir, 'node_modules/hodt/docs/api.md'), 'utf8');
+    const readme = readFileSync(join(project.dir, 'node_modules/hodt/README.md'), 'utf8');
+    const wasm = readFileSync(join(project.dir, 'node_modules/hodt/dist/wasm/hodt.wasm'));
+    const kB = (n: number) => `${(n / 1024).toFixed(1)} KiB`;
+    expect(/npm tarball: (\d+) files/.exec(api)?.[1]).toBe(String(project.files.length));
+    expect(api).toContain(`| \`dist/wasm/hodt.wasm\` | ${kB(wasm.length)} | ${kB(gzipSync(wasm, { level: 9 }).length)} |`);
+    expect(/\(wasm (\d+) KiB\)/.exec(readme)?.[1]).toBe(String(Math.round(gzipSync(wasm, { level: 9 }).length / 1024)));
   });
 });
 
@@ -288,46 +373,110 @@ describe('TypeScript', () => {
     expect(r.stdout + r.stderr).toBe('');
     expect(r.status).toBe(0);
   };
-  it('every TypeScript example in docs/api.md is one of those files', () => {
-    const examples = readdirSync(join(here, 'examples'))
-      .filter((f) => f.endsWith('.ts'))
-      .map((f) => readFileSync(join(here, 'examples', f), 'utf8'));
-    const docs = readFileSync(join(repo, 'docs/api.md'), 'utf8');
-    const blocks = [...docs.matchAll(/```ts\n([\s\S]*?)```/g)].map((m) => m[1]!).filter((b) => /^import /m.test(b));
-    expect(blocks.length).toBeGreaterThanOrEqual(5);
-    for (const block of blocks) {
-      const code = block.replace(/\n\/\/ \.\.\..*\n$/, '\n'); // a trailing "// ..." marks a shortened example
-      expect(examples.some((e) => e.includes(code)), code).toBe(true);
-    }
+  it('the page\'s examples and the checks of what the types accept compile in strict mode (NodeNext resolution)', () => check('tsconfig.json'));
+  it('the same in strict mode (Bundler resolution)', () => check('tsconfig.bundler.json'));
+  it('the worker the page runs is the one docs/api.md shows', () => {
+    const worker = readFileSync(join(here, 'examples/worker.ts'), 'utf8').replace(/^(\/\/.*\n)+/, '');
+    expect(codeBlocks(readFileSync(join(repo, 'docs/api.md'), 'utf8')).map((b) => b.code)).toContain(worker);
   });
-  it('the documentation examples compile in strict mode (NodeNext resolution)', () => check('tsconfig.json'));
-  it('the documentation examples compile in strict mode (Bundler resolution)', () => check('tsconfig.bundler.json'));
   it('a strict project without @types/node, esnext lib or skipLibCheck compiles', () => check('tsconfig.minimal.json'));
   it('a strict Node-only project (lib ES2022, @types/node, no DOM, skipLibCheck off) compiles', () =>
     check('tsconfig.node-only.json'));
-  it('the docs Node example (TypeScript, `using`) runs', () => {
-    check('tsconfig.json', ['--noEmit', 'false', '--outDir', 'examples/out']);
-    const r = inProject('node', ['examples/out/node.js', fixture]);
-    expect(r.status, r.stderr).toBe(0);
-    expect(r.stdout).toMatch(/^\d+ flippable quads; local minima: Delaunay \d+, optimal \d+\nUint32Array\(\d+\)/);
+});
+
+// Every ts and js block of the README and docs/api.md, as the package ships them,
+// written out as files of the project and compiled under "strict" against the
+// installed package; the runnable ones are then run.
+describe('the examples in the shipped docs', () => {
+  const written: { doc: string; file: string; code: string }[] = [];
+  beforeAll(() => {
+    linkFromRepo(project.dir, ['three', '@types/three', '@types/node']);
+    const dir = join(project.dir, 'doc-examples');
+    mkdirSync(dir, { recursive: true });
+    for (const doc of ['README.md', 'docs/api.md']) {
+      const blocks = codeBlocks(readFileSync(join(project.dir, 'node_modules/hodt', doc), 'utf8'));
+      blocks.forEach(({ lang, code }, i) => {
+        if (lang !== 'ts' && lang !== 'js') return;
+        const file = `${doc.replace(/\W/g, '-')}-${i}.${lang === 'ts' ? 'ts' : 'mjs'}`;
+        writeFileSync(join(dir, file), code);
+        written.push({ doc, file, code });
+      });
+    }
+    const config = (moduleResolution: string) => ({
+      compilerOptions: {
+        strict: true,
+        target: 'ES2022',
+        module: moduleResolution === 'NodeNext' ? 'NodeNext' : 'ESNext',
+        moduleResolution,
+        lib: ['ES2022', 'DOM', 'DOM.Iterable'],
+        types: ['node'],
+        allowJs: true,
+        checkJs: true,
+        noUncheckedIndexedAccess: true,
+        exactOptionalPropertyTypes: true,
+        skipLibCheck: true,
+        outDir: 'out',
+      },
+      include: ['*.ts', '*.mjs'],
+    });
+    writeFileSync(join(dir, 'tsconfig.json'), JSON.stringify(config('NodeNext'), null, 2));
+    writeFileSync(join(dir, 'tsconfig.bundler.json'), JSON.stringify({ ...config('Bundler'), compilerOptions: { ...config('Bundler').compilerOptions, noEmit: true } }, null, 2));
   });
-  it('the README Node example is plain JavaScript and runs as it is', () => {
-    const readme = readFileSync(join(repo, 'README.md'), 'utf8');
-    const block = /Node \(plain JavaScript[^\n]*\n\n```js\n([\s\S]*?)```/.exec(readme)?.[1];
-    expect(block).toBe(readFileSync(join(here, 'examples/solve.mjs'), 'utf8'));
+  const compile = (config: string) => {
+    const r = spawnSync('node', [tsc, '-p', `doc-examples/${config}`], { cwd: project.dir, encoding: 'utf8' });
+    expect(r.stdout + r.stderr).toBe('');
+    expect(r.status).toBe(0);
+  };
+  const block = (doc: string, marker: string) => {
+    const found = written.filter((w) => w.doc === doc && w.code.includes(marker));
+    expect(found, `${doc}: one example with ${marker}`).toHaveLength(1);
+    return found[0]!;
+  };
+
+  it('there are examples in both, each a complete program that imports hodt', () => {
+    expect(written.filter((w) => w.doc === 'README.md').length).toBeGreaterThanOrEqual(4);
+    expect(written.filter((w) => w.doc === 'docs/api.md').length).toBeGreaterThanOrEqual(8);
+    for (const w of written) expect(w.code, `${w.doc}: ${w.code.slice(0, 80)}`).toMatch(/^import .* from 'hodt(\/\w+)?';$/m);
+  });
+  it('all compile in strict mode (NodeNext resolution), and the JavaScript ones are checked too', () => compile('tsconfig.json'));
+  it('all compile in strict mode (Bundler resolution)', () => compile('tsconfig.bundler.json'));
+
+  it('the README opens with install, import and solve, which runs as it is; the checkout\'s commands come after', () => {
+    const readme = readFileSync(join(project.dir, 'node_modules/hodt/README.md'), 'utf8');
+    const blocks = codeBlocks(readme);
+    expect(blocks[0]).toEqual({ lang: 'sh', code: expect.stringMatching(/^npm install hodt\b/) });
+    expect(blocks[1]!.lang).toBe('js');
+    expect(blocks[1]!.code).toMatch(/^import \{ loadHodt \} from 'hodt';\n[\s\S]*\.solve\(/);
+    expect(readme.indexOf('npm start')).toBeGreaterThan(readme.indexOf(blocks[1]!.code));
+    expect(readme.indexOf('npm test')).toBeGreaterThan(readme.indexOf(blocks[1]!.code));
+    const first = written.find((w) => w.doc === 'README.md' && w.code === blocks[1]!.code)!;
+    const r = inProject('node', [`doc-examples/${first.file}`]);
+    expect(r.stderr).toBe('');
+    expect(r.stdout).toMatch(/^\d+ true Uint32Array\(\d+\)/);
+  });
+  it('the README Node example (plain JavaScript) runs as it is', () => {
     for (const node of ['node', ...extraNodes]) {
-      const r = inProject(node, ['examples/solve.mjs', fixture]);
+      const r = inProject(node, [`doc-examples/${block('README.md', "process.argv[2] ?? 'points.csv'").file}`, fixture]);
       expect(r.status, r.stderr).toBe(0);
       expect(r.stdout).toMatch(/^\d+ flippable quads; local minima: Delaunay \d+, optimal \d+\nUint32Array\(\d+\)/);
     }
   });
+  it('the docs Node example (TypeScript, `using`) runs', () => {
+    const r = inProject('node', [`doc-examples/out/${block('docs/api.md', "process.argv[2] ?? 'points.csv'").file.replace(/\.ts$/, '.js')}`, fixture]);
+    expect(r.status, r.stderr).toBe(0);
+    expect(r.stdout).toMatch(/^\d+ flippable quads; local minima: Delaunay \d+, optimal \d+\nUint32Array\(\d+\)/);
+  });
   it('the hodt/export example runs and writes its files', () => {
-    check('tsconfig.json', ['--noEmit', 'false', '--outDir', 'examples/out']);
-    const r = inProject('node', ['examples/out/export.js']);
+    const r = inProject('node', [`doc-examples/out/${block('docs/api.md', "exportMesh('ply', mesh)").file.replace(/\.ts$/, '.js')}`]);
     expect(r.status, r.stderr).toBe(0);
     expect(r.stdout).toBe('3 [ 731012.3456789, 5501234.5, 12 ]\n');
     expect(readFileSync(join(project.dir, 'tin.ply'), 'latin1')).toContain('property uchar non_delaunay\n');
     expect(readFileSync(join(project.dir, 'tin.glb')).readUInt32LE(0)).toBe(0x46546c67);
+  });
+  it('the README accessor example runs: rows of your own, typed by their fields', () => {
+    const r = inProject('node', [`doc-examples/out/${block('README.md', 'x: (r) => r.east').file.replace(/\.ts$/, '.js')}`]);
+    expect(r.status, r.stderr).toBe(0);
+    expect(r.stdout).toMatch(/^\d+\n$/);
   });
 });
 
@@ -335,6 +484,7 @@ describe('browser (Vite bundle, Chromium, strict CSP)', () => {
   let dist: string;
   beforeAll(async () => {
     cpSync(join(here, 'page'), join(project.dir, 'page'), { recursive: true });
+    cpSync(join(repo, 'tests/js/randomPoints.ts'), join(project.dir, 'page/randomPoints.ts'));
     cpSync(join(here, 'examples'), join(project.dir, 'examples'), { recursive: true });
     linkFromRepo(project.dir, ['three']);
     dist = join(project.dir, 'page-dist');
@@ -371,6 +521,10 @@ describe('browser (Vite bundle, Chromium, strict CSP)', () => {
       expect(smoke).toMatchObject({ ok: true, optimal: true, aborted: 'AbortError', inputError: 'InputError' });
       expect(smoke.indexCount).toBe((smoke.triangles as number) * 3);
       expect(smoke.worker).toMatchObject({ kind: 'solved', value: smoke.exactValue, triangles: smoke.triangles });
+      const inWorker = smoke.solveInWorker as { value: number; triangles: number; long: string };
+      expect(inWorker).toMatchObject({ value: smoke.exactValue, triangles: smoke.triangles });
+      expect(inWorker.long).toMatch(/^AbortError after \d+ ms$/);
+      expect(Number(/(\d+) ms/.exec(inWorker.long)![1])).toBeLessThan(1000);
       expect(await w.violations()).toEqual([]);
       expect(w.errors).toEqual([]);
       expect(w.warnings.filter((m) => /wasm|WebAssembly|Content Security/i.test(m))).toEqual([]);
@@ -424,7 +578,7 @@ describe('browser (Vite bundle, Chromium, strict CSP)', () => {
       await w.page.waitForFunction(() => (window as { __smoke?: unknown }).__smoke, null, { timeout: 60_000 });
       const smoke = await w.page.evaluate(() => (window as { __smoke?: Record<string, unknown> }).__smoke!);
       expect(smoke.error).toBeUndefined();
-      expect(smoke).toMatchObject({ ok: true, worker: { kind: 'solved' } });
+      expect(smoke).toMatchObject({ ok: true, worker: { kind: 'solved' }, solveInWorker: { long: expect.stringMatching(/^AbortError after \d+ ms$/) } });
       expect(w.errors).toEqual([]);
       await w.page.close();
     } finally {

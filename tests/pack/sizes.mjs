@@ -1,7 +1,10 @@
 // What hodt costs a page: `node tests/pack/sizes.mjs` after `npm run build`.
 // Raw, gzip (zlib level 9) and brotli sizes of the wasm, the Emscripten glue, the
 // library JS as shipped, and of what a Vite production build of
-// `import { loadHodt } from 'hodt'` emits (minified). Prints a Markdown table.
+// `import { loadHodt } from 'hodt'` emits (minified), and the npm tarball's size
+// and file count. Prints them as Markdown; `--write` puts them in the docs
+// between their markers (docs/api.md: the size section; README.md: the totals),
+// `--check` exits 1 when the docs say something else (the package test runs it).
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -15,6 +18,8 @@ const dist = join(repo, 'dist');
 const gzip = (b) => gzipSync(b, { level: 9 }).length;
 const brotli = (b) => brotliCompressSync(b, { params: { [constants.BROTLI_PARAM_QUALITY]: 11 } }).length;
 const kB = (n) => `${(n / 1024).toFixed(1)} KiB`;
+// The tarball in tenths of a MiB: its bytes move with every edit of the shipped docs.
+const MiB = (n) => `${(n / 1024 / 1024).toFixed(1)} MiB`;
 const rows = [];
 const row = (what, buffers) => {
   const all = Buffer.concat(buffers);
@@ -56,6 +61,49 @@ try {
 
 const [pack] = JSON.parse(execFileSync('npm', ['pack', '--dry-run', '--json'], { cwd: repo, encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] }));
 
-console.log('| what | raw | gzip -9 | brotli |\n|---|---:|---:|---:|');
-for (const r of rows) console.log(`| ${r.join(' | ')} |`);
-console.log(`\nnpm tarball: ${kB(pack.size)} (${pack.entryCount} files, ${kB(pack.unpackedSize)} unpacked)`);
+const table = ['| what | raw | gzip -9 | brotli |', '|---|---:|---:|---:|', ...rows.map((r) => `| ${r.join(' | ')} |`)].join('\n');
+const exportRow = rows.find((r) => r[0].startsWith('`hodt/export`'));
+const files = exporters.length;
+// What the docs say, each between its markers.
+const generated = {
+  'docs/api.md': {
+    sizes: `${table}
+
+\`hodt/export\` is not part of that bundle: a page that imports it adds ${exportRow[1]} of
+JavaScript as shipped (${files} files; ${exportRow[2]} gzipped), no wasm.
+
+npm tarball: ${pack.entryCount} files, ${MiB(pack.size)} packed, ${MiB(pack.unpackedSize)} unpacked.`,
+  },
+  'README.md': {
+    sizes: `About ${Math.round(kBOf(rows.at(-1)[2]))} KiB gzipped in total (wasm ${Math.round(kBOf(rows[0][2]))} KiB)`,
+  },
+};
+function kBOf(text) {
+  return Number(/([\d.]+) KiB/.exec(text)[1]);
+}
+
+const mode = process.argv[2];
+if (mode === '--write' || mode === '--check') {
+  const stale = [];
+  for (const [file, blocks] of Object.entries(generated)) {
+    const path = join(repo, file);
+    const text = readFileSync(path, 'utf8');
+    let next = text;
+    for (const [name, body] of Object.entries(blocks)) {
+      const re = new RegExp(`(<!-- ${name}: written by tests/pack/sizes\\.mjs -->)[\\s\\S]*?(<!-- /${name} -->)`);
+      if (!re.test(next)) throw new Error(`${file}: no <!-- ${name}: written by tests/pack/sizes.mjs --> ... <!-- /${name} --> markers`);
+      const inline = !/\n/.test(body);
+      next = next.replace(re, (_, open, close) => (inline ? `${open}${body}${close}` : `${open}\n${body}\n${close}`));
+    }
+    if (next !== text) {
+      stale.push(file);
+      if (mode === '--write') writeFileSync(path, next);
+    }
+  }
+  if (mode === '--check' && stale.length) {
+    console.error(`${stale.join(', ')}: sizes differ from what the build measures; run \`node tests/pack/sizes.mjs --write\``);
+    process.exit(1);
+  }
+} else {
+  console.log(`${generated['docs/api.md'].sizes}\n\n${generated['README.md'].sizes}`);
+}

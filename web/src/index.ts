@@ -13,7 +13,8 @@ import { loadModule, type LoadOptions } from './load.js';
 import type { MeshData, MeshFormat } from './export/meshData.js';
 import type { ObjectiveInfo } from './objectives.js';
 import { checkOptionNames } from './options.js';
-import { type Accessor, type PointInput, toXyz } from './points.js';
+import { type PointInput, toXyz } from './points.js';
+import { type AccessorOptions, type PointOptions, TERRAIN_OPTIONS, type TerrainOptions } from './terrainOptions.js';
 import { Terrain } from './terrain.js';
 import { stopAfterTrap } from './trap.js';
 import type { HodtModule } from './wasm/hodt.mjs';
@@ -32,21 +33,8 @@ export type * from './explain.js';
 export type { LoadOptions } from './load.js';
 export type { Accessor, GeoJsonPoints, Point3, PointInput } from './points.js';
 export type { ProgressCallback, SolveOptions } from './solve.js';
-
-export interface TerrainOptions {
-  /** Two points at the same (x, y): throw InputError (default) or keep the first. */
-  dedupe?: 'error' | 'first';
-  /** The domain (Terrain.maxEdge): triangles with a longer edge are not
-   * measured. Default null: every triangle is measured. */
-  maxEdge?: number | null;
-  /** Accessors for points given as an array of items of your own, as
-   * `Delaunator.from(points, getX, getY)`: all three, each (item, index) => number. */
-  x?: Accessor;
-  y?: Accessor;
-  z?: Accessor;
-}
-
-const TERRAIN_OPTIONS = ['dedupe', 'maxEdge', 'x', 'y', 'z'] as const satisfies readonly (keyof TerrainOptions)[];
+export { solveInWorker, type WorkerSolveOptions } from './solveInWorker.js';
+export type { AccessorOptions, PointOptions, TerrainOptions } from './terrainOptions.js';
 
 export interface ParsedPoints {
   /** x, y, z per point. */
@@ -98,13 +86,16 @@ export class Hodt {
 
   /** Builds the Delaunay triangulation of the points and its first order
    * structure. The points are copied; dispose() the terrain when done. */
-  terrain(points: PointInput, options: TerrainOptions = {}): Terrain {
+  terrain(points: PointInput, options?: PointOptions): Terrain;
+  /** The same for items of your own, read by the accessors x, y and z. */
+  terrain<T>(points: ArrayLike<T>, options: AccessorOptions<T>): Terrain;
+  terrain(points: PointInput | ArrayLike<unknown>, options: TerrainOptions<any> = {}): Terrain { // eslint-disable-line @typescript-eslint/no-explicit-any
     checkOptionNames('terrain', options, TERRAIN_OPTIONS);
     const { dedupe = 'error', maxEdge = null, x, y, z } = options ?? {};
     if (dedupe !== 'error' && dedupe !== 'first') {
       throw new InputError(`dedupe is ${describeValue(dedupe)}, expected 'error' or 'first'`);
     }
-    const xyz = toXyz(points, { x, y, z });
+    const xyz = toXyz(points as PointInput, { x, y, z });
     const terrain = guard(() => new Terrain(this.#module.fromPoints(xyz, dedupe === 'first'), xyz.slice()));
     if (maxEdge !== null) {
       try {

@@ -17,7 +17,7 @@ export interface LoadOptions {
   wasmModule?: WebAssembly.Module;
 }
 
-const isNode = typeof process === 'object' && typeof process.versions?.node === 'string';
+export const isNode = typeof process === 'object' && typeof process.versions?.node === 'string';
 
 async function readFileUrl(url: URL): Promise<Uint8Array> {
   // Node's fetch cannot read file: URLs. The module name is a variable so that

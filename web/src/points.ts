@@ -19,7 +19,8 @@ export interface GeoJsonPoints {
  * Points, in any of these forms:
  * - x, y, z, x, y, z, ... (a Float64Array is used as is, other arrays of numbers
  *   are converted);
- * - [[x, y, z], ...] (as d3-delaunay and GeoJSON coordinates have them);
+ * - [[x, y, z], ...] (as GeoJSON coordinates have them; more coordinates, such
+ *   as a measure, are ignored; [x, y] without a height is refused);
  * - [{x, y, z}, ...];
  * - GeoJSON (GeoJsonPoints);
  * - any array of items, with accessors (TerrainOptions x, y, z).
@@ -27,7 +28,7 @@ export interface GeoJsonPoints {
 export type PointInput =
   | Float64Array
   | ArrayLike<number>
-  | ReadonlyArray<readonly [number, number, number] | readonly number[]>
+  | ReadonlyArray<readonly [number, number, number, ...number[]]>
   | ReadonlyArray<Point3>
   | GeoJsonPoints;
 

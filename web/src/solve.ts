@@ -38,8 +38,9 @@ export interface SolveOptions {
    * Cancels the run: checked before it starts and at every progress step, then it
    * throws CancelledError with the signal's reason as `cause`. solve() is
    * synchronous, so a signal aborted by a timer or an event can only take effect
-   * if it was aborted before the call or from the progress callback; to keep a page
-   * responsive and stop at any time, run hodt in a Web Worker.
+   * if it was aborted before the call or from the progress callback. To stop a
+   * solve at any time (a timeout, a Cancel button), use solveInWorker, which runs
+   * it in a worker and terminates the worker when the signal aborts.
    */
   signal?: AbortSignal;
 }

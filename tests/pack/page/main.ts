@@ -2,9 +2,10 @@
 // under a Content-Security-Policy without 'unsafe-eval'. Results go to
 // window.__smoke for the test to read.
 import * as THREE from 'three';
-import { CancelledError, InputError, loadHodt } from 'hodt';
+import { CancelledError, InputError, loadHodt, solveInWorker } from 'hodt';
 import { setTriangles, terrainGeometry } from 'hodt/three';
 import type { SolveReply, SolveRequest } from '../examples/worker.ts';
+import { hills } from './randomPoints.ts'; // tests/js/randomPoints.ts, copied here by the test
 
 declare global {
   interface Window {
@@ -57,6 +58,14 @@ async function main() {
   terrain.dispose();
   const worker = await inWorker({ points: xyz, objective: 'max-convex-edges' });
   const last = worker.last;
+  // solveInWorker: the library's own worker, bundled by Vite from the package;
+  // a 30-second solve stopped by a timer while the page waits.
+  const library = await solveInWorker(xyz, 'max-convex-edges', { method: 'exact' });
+  const longStart = performance.now();
+  const long = await solveInWorker(hills(60, 7), 'min-mixed-vertices', { order: 6, signal: AbortSignal.timeout(100) }).then(
+    () => 'solved',
+    (e: unknown) => (e instanceof CancelledError ? `${e.name} after ${Math.round(performance.now() - longStart)} ms` : String(e)),
+  );
   return {
     ok: true,
     quads: best.choice.length,
@@ -68,6 +77,7 @@ async function main() {
     aborted,
     inputError,
     exactValue: exact.value,
+    solveInWorker: { value: library.value, triangles: library.triangles.length / 3, long },
     worker: last.kind === 'solved' ? { kind: last.kind, value: last.value, triangles: last.triangles.length / 3, progress: worker.progress } : last,
   };
 }
