@@ -193,7 +193,8 @@ export function startApp(hodt: Hodt): void {
     hooks();
     const fallback = keepDisplay ? 0 : window.setTimeout(() => token === solveToken && !preview && showChoice(null), reframePending ? 0 : SOLUTION_GRACE_MS);
     const progress = (done: number, total: number) => token === solveToken && result.progress(done, total);
-    void solver.solve({ points, ...settings }, progress).then((outcome) => {
+    // At order k the explanation brings the regions, counted as the Teach view counts them.
+    void solver.solve({ points, ...settings, explain: settings.order > 1 }, progress).then((outcome) => {
       if (token !== solveToken) return; // superseded by a newer edit
       clearTimeout(fallback);
       solving = false;
@@ -205,7 +206,7 @@ export function startApp(hodt: Hodt): void {
       if (outcome.status === 'solved') {
         solution = outcome.solution;
         if (!preview) showSolution(solution);
-        result.solved(objective, solution, current.structure.quads.length / 4);
+        result.solved(objective, solution, current.structure.quads.length / 4, outcome.explanation?.regions);
       } else {
         if (!preview) showChoice(null);
         if (outcome.status === 'failed') result.failed(objective, outcome.message, settings.order);
