@@ -80,10 +80,12 @@ export function startApp(hodt: Hodt): void {
   let solves = 0;
   let solveToken = 0;
   let reframePending = true;
+  /** The height exaggeration of the next reframe (from a link); null: automatic. */
+  let linkedExaggeration: number | null = initial.exaggeration;
   let cameraFramed = false;
   const history = createHistory({ points, source });
   const urlSync = createUrlSync(
-    (): SharedState => ({ points, ...settings, view, source }),
+    (): SharedState => ({ points, ...settings, view, source, exaggeration: scene.frame?.exaggeration ?? linkedExaggeration }),
   );
 
   const plan = createPlanView(byId('view-plan'), {
@@ -106,7 +108,8 @@ export function startApp(hodt: Hodt): void {
     shown = a;
     const reframe = reframePending;
     reframePending = false;
-    scene.show(a, reframe);
+    scene.show(a, reframe, reframe ? linkedExaggeration : null);
+    if (reframe) linkedExaggeration = null;
     const ex = scene.frame?.exaggeration ?? 1;
     byId('exaggeration').textContent = Math.abs(ex - 1) < 0.05 ? '' : ` · heights ×${ex < 10 ? ex.toFixed(1) : Math.round(ex)}`;
     if (reframe) {
@@ -204,9 +207,10 @@ export function startApp(hodt: Hodt): void {
       }
       // While a point is dragged the preview stays; dropping it re-solves.
       if (outcome.status === 'solved') {
-        solution = outcome.solution;
-        if (!preview) showSolution(solution);
-        result.solved(objective, solution, current.structure.quads.length / 4, outcome.explanation?.regions);
+        // (Drawing can start another solve, e.g. an edit field that loses focus: keep this one's.)
+        const solved = (solution = outcome.solution);
+        if (!preview) showSolution(solved);
+        result.solved(objective, solved, current.structure.quads.length / 4, outcome.explanation?.regions);
       } else {
         if (!preview) showChoice(null);
         if (outcome.status === 'failed') result.failed(objective, outcome.message, settings.order);
@@ -443,7 +447,10 @@ export function startApp(hodt: Hodt): void {
   terrainPanel.onImport((f) => void importFile(f));
   terrainPanel.onExport(exportAs);
   attachDropZone((f) => void importFile(f));
-  selectionPanel.onEdit((i, x, y, z) => commit(movePoint(points, i, x, y, z), 'edit point', { select: i }));
+  selectionPanel.onEdit((i, x, y, z) => {
+    const p = pointAt(points, i);
+    if (p.x !== x || p.y !== y || p.z !== z) commit(movePoint(points, i, x, y, z), 'edit point', { select: i });
+  });
   selectionPanel.onDelete(() => deleteSelected());
   toolbar.setView(view);
   teach.setVisible(view === 'teach');
@@ -461,6 +468,7 @@ export function startApp(hodt: Hodt): void {
       if (!s) return;
       setSettings(settingsOf(s));
       setView(s.view);
+      linkedExaggeration = s.exaggeration;
       commit(s.points, 'open link', { source: s.source, reframe: true, select: null, refused: 'Cannot open the link' });
     } catch (e) {
       notice.show(`${e instanceof Error ? e.message : String(e)}. Your points are unchanged.`);
@@ -496,6 +504,7 @@ export function startApp(hodt: Hodt): void {
       objective: settings.objective,
       method: settings.method,
       order: settings.order,
+      exaggeration: scene.frame?.exaggeration ?? null,
       maxEdge: settings.maxEdge,
       outsideTriangles: shown ? shown.inside.reduce((n, v) => n + (v === 0 ? 1 : 0), 0) : 0,
       usefulEdges: objectivePanel.showUseful && useful ? useful.edges.length / 2 : null,
@@ -539,7 +548,7 @@ export function startApp(hodt: Hodt): void {
     const pts = TERRAINS[DEFAULT_SOURCE.kind].make(DEFAULT_SOURCE.count, DEFAULT_SOURCE.seed);
     const built = buildTerrain(hodt, pts, DEFAULT_SETTINGS.maxEdge);
     if (!built.ok) throw new Error(`the default terrain failed: ${built.message}`);
-    return { points: pts, ...DEFAULT_SETTINGS, view: 'split', source: DEFAULT_SOURCE, built, message };
+    return { points: pts, ...DEFAULT_SETTINGS, view: 'split', source: DEFAULT_SOURCE, exaggeration: null, built, message };
   }
 }
 
