@@ -133,6 +133,11 @@ export function startApp(hodt: Hodt): void {
   }
 
   function frameCameraIfVisible(): void {
+    if (cameraFramed && view !== 'plan') {
+      // An edit may raise or move a point out of the framed view.
+      requestAnimationFrame(() => viewer.keepInView(scene.worldPoints()));
+      return;
+    }
     if (cameraFramed || view === 'plan') return;
     requestAnimationFrame(() => {
       if (byId('view-3d').clientWidth === 0) return;
@@ -397,11 +402,11 @@ export function startApp(hodt: Hodt): void {
     terrain: () => current.terrain,
     points: () => points,
     settings: () => settings,
-    load: (next, label, objective) => {
+    load: (next, label, objective, from) => {
       if (objective && objective !== settings.objective) {
         setSettings({ ...settings, objective, order: 1 });
       }
-      commit(next, label, { reframe: true, select: null });
+      commit(next, label, { reframe: true, select: null, source: from ?? null });
     },
     showViews: () => setView('split'),
     choose: (change) => {
