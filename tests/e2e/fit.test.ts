@@ -1,12 +1,11 @@
 // Issue 57, item 5: the page fits. At 1280x720 and 1440x900 the result card is
 // on screen without scrolling, the 3D view's label does not cover the terrain and
 // no point is clipped, and the buttons' tooltips say what they load. A screenshot
-// of every view and Teach tab at both sizes goes to test-results/ (and replaces
-// docs/screenshots/ with HODT_SCREENSHOTS=1).
-import { copyFileSync, mkdirSync } from 'node:fs';
+// of every view and Teach tab at both sizes goes to test-results/ (the README's
+// come from render.test.ts and teach.test.ts).
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
-import { hooks, openPage, resultsDir, root, screenshot, settled, startDemo, type Demo } from './harness.ts';
+import { hooks, openPage, screenshot, settled, startDemo, type Demo } from './harness.ts';
 
 let demo: Demo;
 beforeAll(async () => {
@@ -20,12 +19,6 @@ const SIZES = [
   { width: 1280, height: 720 },
   { width: 1440, height: 900 },
 ] as const;
-
-function keep(name: string): void {
-  if (!process.env.HODT_SCREENSHOTS) return;
-  mkdirSync(`${root}docs/screenshots`, { recursive: true });
-  copyFileSync(`${resultsDir}/${name}`, `${root}docs/screenshots/${name}`);
-}
 
 /** Is the element wholly inside the viewport, the page unscrolled? */
 async function onScreen(page: Page, selector: string): Promise<boolean> {
@@ -75,7 +68,6 @@ describe.each(SIZES)('at $width x $height', (size) => {
       expect(await onScreen(page, '#result')).toBe(true);
       await screenshot(page, `demo-${view}-${size.width}.png`);
     }
-    if (size.width === 1440) for (const name of ['demo-3d', 'demo-plan']) keep(`${name}-1440.png`);
     expect(errors).toEqual([]);
     await context.close();
   });
@@ -93,7 +85,6 @@ describe.each(SIZES)('at $width x $height', (size) => {
       await page.waitForTimeout(tab === 'gadget' ? 2500 : 800);
       expect(await onScreen(page, '#result')).toBe(true);
       await screenshot(page, `teach-${tab}-${size.width}.png`);
-      if (size.width === 1440) keep(`teach-${tab}-1440.png`);
     }
     expect(errors).toEqual([]);
     await context.close();
