@@ -2,24 +2,16 @@
 // (a built-in generator with a seed, reproduced exactly by the page's link), and
 // what the step says about it holds: each claim is checked here against the
 // library, run in Node on the points the page loaded.
-import { loadHodt, OBJECTIVE_IDS, type Hodt, type ObjectiveId } from 'hodt';
+import { OBJECTIVE_IDS, type ObjectiveId } from 'hodt';
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, test } from 'vitest';
+import { describe, expect, test } from 'vitest';
 import { decodeState } from '../../web/demo/src/share/urlState.ts';
 import { jitteredGridPoints } from '../../web/demo/src/terrains/jitteredGrid.ts';
 import { uniformPoints } from '../../web/demo/src/terrains/uniform.ts';
 import { LESSON_STEPS, type LessonTab } from '../../web/demo/src/teach/lessonSteps.ts';
-import { hooks, openPage, settled, startDemo, type Demo } from './harness.ts';
+import { hooks, openPage, setUpDemo, settled } from './harness.ts';
 
-let demo: Demo;
-let hodt: Hodt;
-beforeAll(async () => {
-  demo = await startDemo();
-  hodt = await loadHodt();
-});
-afterAll(async () => {
-  await demo?.close();
-});
+const env = setUpDemo();
 
 const step = (tab: LessonTab) => LESSON_STEPS.find((s) => s.tab === tab)!;
 // The generators the steps use (the catalog's volcano needs Vite's aliases).
@@ -27,14 +19,14 @@ const MAKE: Record<string, (n: number, seed: number) => Float64Array> = { unifor
 
 /** Opens the page, clicks the step's Go, and returns the points the page then holds. */
 async function go(tab: LessonTab): Promise<{ page: Page; close: () => Promise<void>; errors: string[]; points: Float64Array }> {
-  const { page, context, errors } = await openPage(demo);
+  const { page, context, errors } = await openPage(env.demo);
   const solves = (await hooks(page)).solves;
   await page.click('.segmented button[data-view="teach"]');
   await page.click('#teach-lesson summary');
   await page.click(`#lesson-${tab}`);
   await page.waitForFunction((t) => window.__hodtTeach?.visible && window.__hodtTeach.tab === t, tab);
   const s = step(tab);
-  let points = new Float64Array(0);
+  let points: Float64Array = new Float64Array(0);
   if (s.terrain) {
     const expected = MAKE[s.terrain.kind]!(s.terrain.count, s.terrain.seed);
     await page.waitForFunction((n) => window.__hodt!.points === n, expected.length / 3);
@@ -64,7 +56,7 @@ function csvPoints(csv: string): number[] {
 describe('the first lesson', () => {
   test('step 1: Delaunay is not optimal, and the best triangulation changes with the objective', async () => {
     const { page, errors, points, close } = await go('brute');
-    using terrain = hodt.terrain(points);
+    using terrain = env.hodt.terrain(points);
     const m = terrain.numQuads;
     expect(m).toBeLessThanOrEqual(10);
     const all = terrain.enumerateAll();
@@ -84,8 +76,8 @@ describe('the first lesson', () => {
 
   test('step 2: the 2-SAT search answers no by a contradiction and yes by an assignment', async () => {
     const { errors, points, close } = await go('sat');
-    using terrain = hodt.terrain(points);
-    const tests = terrain.explain(step('sat').objective!, { trace: true }).search!.tests;
+    using terrain = env.hodt.terrain(points);
+    const tests = terrain.explain(step('sat').objective!).search!.tests;
     expect(tests.some((t) => !t.satisfiable && !t.immediateNo && t.conflicts.length > 0)).toBe(true);
     expect(tests.some((t) => t.satisfiable)).toBe(true);
     expect(errors).toEqual([]);
@@ -94,7 +86,7 @@ describe('the first lesson', () => {
 
   test('step 3: a smaller epsilon gives more layers and shifts and a narrower proven gap', async () => {
     const { page, errors, points, close } = await go('baker');
-    using terrain = hodt.terrain(points);
+    using terrain = env.hodt.terrain(points);
     const optimum = terrain.solve('max-convex-edges', { method: 'exact' });
     expect(optimum.optimal).toBe(true);
     const runs = [0.5, 0.25].map((epsilon) => terrain.explain('max-convex-edges', { method: 'approx', epsilon }).baker!);
@@ -125,7 +117,7 @@ describe('the first lesson', () => {
 
   test('step 5: the fewest pits falls as k grows (k = 1 to 2, and 2 to 3)', async () => {
     const { errors, points, close } = await go('order');
-    using terrain = hodt.terrain(points);
+    using terrain = env.hodt.terrain(points);
     const pits = [1, 2, 3].map((order) => terrain.solve('min-local-minima', { order }));
     for (const s of pits) expect(s.optimal).toBe(true);
     expect(pits[1]!.value).toBeLessThan(pits[0]!.value);

@@ -1,34 +1,25 @@
 // Issue 57, item 1: an order-k region whose count the library did not finish is
 // a region with a choice ("at least N", N >= 2), and the sidebar and the Teach
 // view count the regions the same way and say so in the same words.
-import { loadHodt, type Hodt } from 'hodt';
-import { afterAll, beforeAll, expect, test } from 'vitest';
+import { expect, test } from 'vitest';
 import { encodeState } from '../../web/demo/src/share/urlState.ts';
 import { jitteredGridPoints } from '../../web/demo/src/terrains/jitteredGrid.ts';
-import { hooks, openPage, startDemo, type Demo } from './harness.ts';
+import { hooks, openPage, setUpDemo } from './harness.ts';
 
-let demo: Demo;
-let hodt: Hodt;
-beforeAll(async () => {
-  demo = await startDemo();
-  hodt = await loadHodt();
-});
-afterAll(async () => {
-  await demo?.close();
-});
+const env = setUpDemo();
 
 test('an unfinished region at k = 8 is a region with a choice, counted alike in the sidebar and the Teach view', async () => {
   // The 2-SAT example grid: at k = 8 most of it is one region too large to enumerate.
   const points = jitteredGridPoints(64, 15);
-  using terrain = hodt.terrain(points);
+  using terrain = env.hodt.terrain(points);
   const r = terrain.explain('min-local-minima', { order: 8 }).regions!;
   const unfinished = [...r.complete.keys()].filter((g) => !r.complete[g]);
   expect(unfinished.length).toBeGreaterThan(0);
   for (const g of unfinished) expect(r.triangulations[g]).toBeGreaterThanOrEqual(2);
   const withChoice = Array.from(r.triangulations).filter((c, g) => c >= 2 || !r.complete[g]).length;
 
-  const hash = encodeState({ points, objective: 'min-local-minima', method: 'auto', epsilon: 0.25, order: 8, maxEdge: null, view: 'teach', source: null });
-  const { page, context, errors } = await openPage(demo, hash);
+  const hash = encodeState({ points, objective: 'min-local-minima', method: 'auto', epsilon: 0.25, order: 8, maxEdge: null, view: 'teach', source: null, exaggeration: null });
+  const { page, context, errors } = await openPage(env.demo, hash);
   const sidebar = (await page.locator('#result-regions').textContent())!;
   expect(sidebar).toContain(`${withChoice} region${withChoice === 1 ? '' : 's'} with a choice`);
   expect(sidebar).toContain('at least');
