@@ -474,7 +474,7 @@ export function startApp(hodt: Hodt): void {
       setSettings(settingsOf(s));
       setView(s.view);
       linkedExaggeration = s.exaggeration;
-      commit(s.points, 'open link', { source: s.source, reframe: true, select: null, refused: 'Cannot open the link' });
+      if (!commit(s.points, 'open link', { source: s.source, reframe: true, select: null, refused: 'Cannot open the link' })) linkedExaggeration = null;
     } catch (e) {
       notice.show(`${e instanceof Error ? e.message : String(e)}. Your points are unchanged.`);
     }
