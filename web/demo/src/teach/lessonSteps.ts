@@ -30,7 +30,7 @@ export const LESSON_STEPS: readonly LessonStep[] = [
     terrain: { kind: 'uniform', count: 14, seed: 38 },
     objective: 'min-mixed-vertices',
     doThis: 'Look at the cards, then pick “Fewest pits” in the sidebar.',
-    notice: 'Every first order triangulation is one choice of diagonal per teal quad: 2^m of them. On this terrain Delaunay (the first card, before sorting) is not the best for fewest mixed vertices, nor for fewest pits, and no triangulation is the best for both: the gold frames move when the objective changes.',
+    notice: 'Every first order triangulation is one choice of diagonal per teal quad: 2^m of them. On this terrain Delaunay (the card with no amber quad) is not the best for fewest mixed vertices, nor for fewest pits, and no triangulation is the best for both: the gold frames move when the objective changes.',
   },
   {
     tab: 'sat',
