@@ -1,5 +1,7 @@
 #include "hodt/explain.hpp"
 
+#include <algorithm>
+
 #include "hodt/regions.hpp"
 
 namespace hodt {
@@ -20,7 +22,16 @@ RegionExplanation region_explanation(const Mesh& dt, uint32_t k, const Progress&
   e.triangles = dt.triangles;
   e.region_of_triangle.assign(r.region_of_triangle.begin(), r.region_of_triangle.end());
   for (const Region& region : r.regions) {
-    e.triangulations.push_back(static_cast<uint32_t>(region.states.size()));
+    // A region over the budgets keeps the triangulations listed so far, and one
+    // too large to enumerate only its Delaunay one; yet a region of two or more
+    // triangles has at least two: its triangles meet across a free edge, which a
+    // useful edge crosses (else it would be fixed), and a useful edge is in some
+    // k-OD triangulation, which differs from Delaunay inside this region (it
+    // cannot cross the fixed edges around it). So an unfinished count is at
+    // least two, never one.
+    const size_t listed = region.states.size();
+    const size_t at_least = !region.complete && region.delaunay_triangles.size() > 1 ? std::max<size_t>(listed, 2) : listed;
+    e.triangulations.push_back(static_cast<uint32_t>(at_least));
     e.complete.push_back(region.complete);
   }
   return e;

@@ -175,6 +175,37 @@ TEST_CASE("explain: regions of order k multiply to the number of k-OD triangulat
   }
 }
 
+// At a high order the regions merge into ones too large to enumerate (over
+// RegionLimits::max_region_triangles): their count is unfinished, and such a
+// region still has a choice, so it is never reported as one triangulation.
+TEST_CASE("explain: a region whose count was not finished has at least two triangulations") {
+  uint64_t unfinished = 0, singles = 0;
+  for (uint64_t seed = 1; seed <= 4; ++seed) {
+    const FirstOrder fo = terrain_of(jittered_grid(8, 8, 0.3, seed));
+    for (uint32_t k : {6u, 8u}) {
+      SolveOptions options;
+      options.order = k;
+      const Explanation e = explain(fo, Objective::MinLocalMinima, options);
+      REQUIRE(e.regions);
+      const RegionExplanation& r = *e.regions;
+      std::vector<uint32_t> size(r.triangulations.size(), 0);
+      for (int32_t g : r.region_of_triangle) ++size[static_cast<uint32_t>(g)];
+      for (size_t g = 0; g < size.size(); ++g) {
+        if (size[g] == 1) {
+          ++singles;
+          CHECK(r.complete[g]);
+          CHECK(r.triangulations[g] == 1);
+        } else {
+          CHECK(r.triangulations[g] >= 2);
+        }
+        if (!r.complete[g]) ++unfinished;
+      }
+    }
+  }
+  CHECK(unfinished > 0);  // the case this test is about occurs
+  CHECK(singles > 0);
+}
+
 // On rasters the threshold tests are parity systems (pairs tie in large groups),
 // decided by union-find: the explanation also runs the 2-SAT and throws should
 // they disagree; the optimum is brute force's.

@@ -5,7 +5,9 @@ import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import type { AddressInfo } from 'node:net';
 import { fileURLToPath } from 'node:url';
 import type { Browser, BrowserContext, Page } from 'playwright-core';
+import { loadHodt, type Hodt } from 'hodt';
 import { createServer, type ViteDevServer } from 'vite';
+import { afterAll, beforeAll } from 'vitest';
 // Debian's Chromium, headless, with software WebGL: the same launch as the package tests.
 import { launch as launchChromium } from '../pack/chromium.ts';
 
@@ -18,6 +20,19 @@ export interface Demo {
   url: string;
   browser: Browser;
   close(): Promise<void>;
+}
+
+/** A file's demo and the library in Node: started before its tests, stopped after. */
+export function setUpDemo(): { readonly demo: Demo; readonly hodt: Hodt } {
+  const env = {} as { demo: Demo; hodt: Hodt };
+  beforeAll(async () => {
+    env.demo = await startDemo();
+    env.hodt = await loadHodt();
+  });
+  afterAll(async () => {
+    await env.demo?.close();
+  });
+  return env;
 }
 
 export async function startDemo(): Promise<Demo> {

@@ -15,6 +15,7 @@ const state = (points: Float64Array): SharedState => ({
   maxEdge: 12.5,
   view: 'plan',
   source: { kind: 'fractal', count: 300, seed: 42 },
+  exaggeration: 2.7,
 });
 
 describe('link state', () => {
@@ -66,11 +67,22 @@ describe('link state', () => {
     // Links made before the order control keep working: they mean order 1.
     expect(decodeState(raw(ok, new Float64Array(9)))!.order).toBe(1);
     expect(decodeState(raw({ ...ok, order: 5 }, new Float64Array(9)))!.order).toBe(5);
-    for (const order of [0, 9, 2.5, '2', null]) expect(decodeState(raw({ ...ok, order }, new Float64Array(9)))!.order).toBe(1);
-    // ... and no domain; a link's domain is a positive length, else none.
+    // A field that is there must be what the page writes.
+    for (const order of [0, 9, 2.5, '2', null]) bad(raw({ ...ok, order }, new Float64Array(9)), /order is .*, expected an integer from 1 to 8/);
+    // ... and no domain; a link's domain is a positive length.
     expect(decodeState(raw(ok, new Float64Array(9)))!.maxEdge).toBeNull();
     expect(decodeState(raw({ ...ok, maxEdge: 3.25 }, new Float64Array(9)))!.maxEdge).toBe(3.25);
-    for (const maxEdge of [0, -1, '2', null, 1e400]) expect(decodeState(raw({ ...ok, maxEdge }, new Float64Array(9)))!.maxEdge).toBeNull();
+    for (const maxEdge of [0, -1, '2', null, 1e400]) bad(raw({ ...ok, maxEdge }, new Float64Array(9)), /maxEdge is .*, expected a positive length/);
+    // ... and automatic heights.
+    expect(decodeState(raw(ok, new Float64Array(9)))!.exaggeration).toBeNull();
+    expect(decodeState(raw({ ...ok, exaggeration: 2.7 }, new Float64Array(9)))!.exaggeration).toBe(2.7);
+    // Headers that are not objects, and fields of the wrong type.
+    for (const header of [null, [], 3, 'v1', true]) bad(raw(header as object, new Float64Array(9)), /its header is .*, expected an object/);
+    bad(raw({ ...ok, method: 7 }, new Float64Array(9)), /method is 7, expected one of auto/);
+    bad(raw({ ...ok, epsilon: '0.25' }, new Float64Array(9)), /epsilon is "0.25"/);
+    bad(raw({ ...ok, view: null }, new Float64Array(9)), /view is null/);
+    bad(raw({ ...ok, source: { kind: 'grid', count: -1, seed: 2 } }, new Float64Array(9)), /source is /);
+    bad(raw({ ...ok, objective: 'x'.repeat(5000) }, new Float64Array(9)), /unknown objective "x{50,}…$/);
     bad(raw({ ...ok, n: 4 }, new Float64Array(9)), /4 points need 96 bytes/);
     bad(raw({ ...ok, n: 2 }, new Float64Array(6)), /bad point count/);
     bad(raw({ ...ok, objective: 'nope' }, new Float64Array(9)), /unknown objective/);

@@ -342,7 +342,7 @@ describe('npx hodt demo', () => {
   it('refuses a bad option in one line', () => {
     const r = inProject('npx', ['--no', 'hodt', 'demo', '--port', 'eighty']);
     expect(r.status).toBe(2);
-    expect(r.stderr.trim().split('\n').filter((l) => !l.startsWith('npm warn'))).toEqual(["hodt demo: --port needs a port number 0 to 65535, got 'eighty'; usage: hodt demo [--port N] [--no-open]"]);
+    expect(r.stderr.trim().split('\n').filter((l) => !l.startsWith('npm warn'))).toEqual(["hodt demo: --port needs a port number 0 to 65535, got 'eighty'; usage: hodt demo [--port N] [--no-open] [--help]"]);
   });
 });
 

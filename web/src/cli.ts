@@ -35,11 +35,15 @@ function writeMesh(path: string, format: MeshFormat, mesh: MeshData): void {
 const args = process.argv.slice(2);
 // `hodt demo`: the teaching demo shipped in the package, served by Node alone.
 if (args[0] === 'demo') {
-  const { demoOptions, serveDemo } = await import('./demoServer.js');
+  const { DEMO_HELP, demoOptions, serveDemo } = await import('./demoServer.js');
   const options = demoOptions(args.slice(1));
   if (typeof options === 'string') {
     process.stderr.write(`${options}\n`);
     process.exit(2);
+  }
+  if (options.help) {
+    process.stdout.write(DEMO_HELP);
+    process.exit(0);
   }
   try {
     await serveDemo(options);

@@ -21,19 +21,33 @@ const TYPES: Record<string, string> = {
   '.txt': 'text/plain; charset=utf-8',
 };
 
-const USAGE = 'usage: hodt demo [--port N] [--no-open]';
+const USAGE = 'usage: hodt demo [--port N] [--no-open] [--help]';
+
+/** What `hodt demo --help` prints. */
+export const DEMO_HELP = `${USAGE}
+
+Serves the teaching demo that ships in the package on http://127.0.0.1:PORT/ and
+opens it in the default browser. Ctrl+C stops it.
+
+  --port N     the port to listen on, 0 to 65535 (default 5173; 0: any free one)
+  --no-open    do not open a browser, only print the address
+  --help, -h   print this help and exit
+`;
 
 export interface DemoOptions {
   port: number;
   open: boolean;
+  /** --help: print DEMO_HELP and serve nothing. */
+  help: boolean;
 }
 
 /** The options of `hodt demo`, or a one-line error. */
 export function demoOptions(args: string[]): DemoOptions | string {
-  const options: DemoOptions = { port: 5173, open: true };
+  const options: DemoOptions = { port: 5173, open: true, help: false };
   for (let i = 0; i < args.length; i++) {
     const a = args[i]!;
-    if (a === '--no-open') options.open = false;
+    if (a === '--help' || a === '-h') options.help = true;
+    else if (a === '--no-open') options.open = false;
     else if (a === '--port') {
       const v = args[++i];
       const port = Number(v);

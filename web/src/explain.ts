@@ -89,7 +89,8 @@ export interface RegionExplanation {
   triangles: Uint32Array;
   /** Per Delaunay triangle: its region. */
   regionOfTriangle: Int32Array;
-  /** Per region: its k-OD triangulations, counted up to a budget. */
+  /** Per region: its k-OD triangulations, counted up to a budget (unfinished:
+   * at least 2, for every region of two or more triangles has a choice). */
   triangulations: Uint32Array;
   /** Per region: 1 if that count is exact, 0 if there are more. */
   complete: Uint8Array;

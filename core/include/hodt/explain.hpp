@@ -68,7 +68,7 @@ struct RegionExplanation {
   std::vector<uint32_t> fixed;             // the useful edges no other crosses, (u, v) pairs
   std::vector<uint32_t> triangles;         // the Delaunay triangles, vertex triples
   std::vector<int32_t> region_of_triangle; // per Delaunay triangle
-  std::vector<uint32_t> triangulations;    // per region: its k-OD triangulations (counted up to a budget)
+  std::vector<uint32_t> triangulations;    // per region: its k-OD triangulations (counted up to a budget; 2 or more for a region of 2 or more triangles)
   std::vector<uint8_t> complete;           // per region: the count is exact (else at least that many)
 };
 

@@ -16,6 +16,8 @@ export interface HodtTestHooks {
   method: string;
   /** Order k of the triangulations searched (1: first order). */
   order: number;
+  /** The 3D view's height exaggeration (the exact factor a link keeps). */
+  exaggeration: number | null;
   /** The domain's longest edge (null: none), and how many shown triangles lie
    * outside it (greyed). */
   maxEdge: number | null;

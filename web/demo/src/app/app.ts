@@ -80,10 +80,12 @@ export function startApp(hodt: Hodt): void {
   let solves = 0;
   let solveToken = 0;
   let reframePending = true;
+  /** The height exaggeration of the next reframe (from a link); null: automatic. */
+  let linkedExaggeration: number | null = initial.exaggeration;
   let cameraFramed = false;
   const history = createHistory({ points, source });
   const urlSync = createUrlSync(
-    (): SharedState => ({ points, ...settings, view, source }),
+    (): SharedState => ({ points, ...settings, view, source, exaggeration: scene.frame?.exaggeration ?? linkedExaggeration }),
   );
 
   const plan = createPlanView(byId('view-plan'), {
@@ -106,7 +108,8 @@ export function startApp(hodt: Hodt): void {
     shown = a;
     const reframe = reframePending;
     reframePending = false;
-    scene.show(a, reframe);
+    scene.show(a, reframe, reframe ? linkedExaggeration : null);
+    if (reframe) linkedExaggeration = null;
     const ex = scene.frame?.exaggeration ?? 1;
     byId('exaggeration').textContent = Math.abs(ex - 1) < 0.05 ? '' : ` · heights ×${ex < 10 ? ex.toFixed(1) : Math.round(ex)}`;
     if (reframe) {
@@ -130,6 +133,11 @@ export function startApp(hodt: Hodt): void {
   }
 
   function frameCameraIfVisible(): void {
+    if (cameraFramed && view !== 'plan') {
+      // An edit may raise or move a point out of the framed view.
+      requestAnimationFrame(() => viewer.keepInView(scene.worldPoints()));
+      return;
+    }
     if (cameraFramed || view === 'plan') return;
     requestAnimationFrame(() => {
       if (byId('view-3d').clientWidth === 0) return;
@@ -193,7 +201,8 @@ export function startApp(hodt: Hodt): void {
     hooks();
     const fallback = keepDisplay ? 0 : window.setTimeout(() => token === solveToken && !preview && showChoice(null), reframePending ? 0 : SOLUTION_GRACE_MS);
     const progress = (done: number, total: number) => token === solveToken && result.progress(done, total);
-    void solver.solve({ points, ...settings }, progress).then((outcome) => {
+    // At order k the explanation brings the regions, counted as the Teach view counts them.
+    void solver.solve({ points, ...settings, explain: settings.order > 1 }, progress).then((outcome) => {
       if (token !== solveToken) return; // superseded by a newer edit
       clearTimeout(fallback);
       solving = false;
@@ -203,9 +212,10 @@ export function startApp(hodt: Hodt): void {
       }
       // While a point is dragged the preview stays; dropping it re-solves.
       if (outcome.status === 'solved') {
-        solution = outcome.solution;
-        if (!preview) showSolution(solution);
-        result.solved(objective, solution, current.structure.quads.length / 4);
+        // (Drawing can start another solve, e.g. an edit field that loses focus: keep this one's.)
+        const solved = (solution = outcome.solution);
+        if (!preview) showSolution(solved);
+        result.solved(objective, solved, current.structure.quads.length / 4, outcome.explanation?.regions);
       } else {
         if (!preview) showChoice(null);
         if (outcome.status === 'failed') result.failed(objective, outcome.message, settings.order);
@@ -392,11 +402,11 @@ export function startApp(hodt: Hodt): void {
     terrain: () => current.terrain,
     points: () => points,
     settings: () => settings,
-    load: (next, label, objective) => {
+    load: (next, label, objective, from) => {
       if (objective && objective !== settings.objective) {
         setSettings({ ...settings, objective, order: 1 });
       }
-      commit(next, label, { reframe: true, select: null });
+      commit(next, label, { reframe: true, select: null, source: from ?? null });
     },
     showViews: () => setView('split'),
     choose: (change) => {
@@ -442,7 +452,10 @@ export function startApp(hodt: Hodt): void {
   terrainPanel.onImport((f) => void importFile(f));
   terrainPanel.onExport(exportAs);
   attachDropZone((f) => void importFile(f));
-  selectionPanel.onEdit((i, x, y, z) => commit(movePoint(points, i, x, y, z), 'edit point', { select: i }));
+  selectionPanel.onEdit((i, x, y, z) => {
+    const p = pointAt(points, i);
+    if (p.x !== x || p.y !== y || p.z !== z) commit(movePoint(points, i, x, y, z), 'edit point', { select: i });
+  });
   selectionPanel.onDelete(() => deleteSelected());
   toolbar.setView(view);
   teach.setVisible(view === 'teach');
@@ -460,7 +473,8 @@ export function startApp(hodt: Hodt): void {
       if (!s) return;
       setSettings(settingsOf(s));
       setView(s.view);
-      commit(s.points, 'open link', { source: s.source, reframe: true, select: null, refused: 'Cannot open the link' });
+      linkedExaggeration = s.exaggeration;
+      if (!commit(s.points, 'open link', { source: s.source, reframe: true, select: null, refused: 'Cannot open the link' })) linkedExaggeration = null;
     } catch (e) {
       notice.show(`${e instanceof Error ? e.message : String(e)}. Your points are unchanged.`);
     }
@@ -495,6 +509,7 @@ export function startApp(hodt: Hodt): void {
       objective: settings.objective,
       method: settings.method,
       order: settings.order,
+      exaggeration: scene.frame?.exaggeration ?? null,
       maxEdge: settings.maxEdge,
       outsideTriangles: shown ? shown.inside.reduce((n, v) => n + (v === 0 ? 1 : 0), 0) : 0,
       usefulEdges: objectivePanel.showUseful && useful ? useful.edges.length / 2 : null,
@@ -538,7 +553,7 @@ export function startApp(hodt: Hodt): void {
     const pts = TERRAINS[DEFAULT_SOURCE.kind].make(DEFAULT_SOURCE.count, DEFAULT_SOURCE.seed);
     const built = buildTerrain(hodt, pts, DEFAULT_SETTINGS.maxEdge);
     if (!built.ok) throw new Error(`the default terrain failed: ${built.message}`);
-    return { points: pts, ...DEFAULT_SETTINGS, view: 'split', source: DEFAULT_SOURCE, built, message };
+    return { points: pts, ...DEFAULT_SETTINGS, view: 'split', source: DEFAULT_SOURCE, exaggeration: null, built, message };
   }
 }
 

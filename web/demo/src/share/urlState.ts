@@ -1,7 +1,7 @@
 import { deflateSync } from 'fflate';
 import { OBJECTIVE_IDS, type Method, type ObjectiveId } from 'hodt';
 import { isOrder, METHODS, VIEW_MODES, type ViewMode } from '../app/settings.ts';
-import { isTerrainKind, type TerrainKind } from '../terrains/kinds.ts';
+import { isTerrainKind, TERRAIN_KINDS, type TerrainKind } from '../terrains/kinds.ts';
 import { fromBase64Url, toBase64Url } from './base64url.ts';
 import { boundedInflate } from './boundedInflate.ts';
 import { fromColumns, shuffleDoubles, toColumns, unshuffleDoubles } from './byteShuffle.ts';
@@ -10,8 +10,8 @@ import { fromColumns, shuffleDoubles, toColumns, unshuffleDoubles } from './byte
  * The whole page state in the URL hash: `#v1=<base64url>`, the raw deflate of
  *   u32 (little-endian) length L of a JSON header,
  *   L bytes of UTF-8 JSON {n, objective, method, epsilon, order, view, source?,
- *     maxEdge?} (order and maxEdge were added later: links without them mean
- *     order 1 and no domain),
+ *     maxEdge?, exaggeration?} (order, maxEdge and exaggeration were added
+ *     later: links without them mean order 1, no domain, automatic heights),
  *   24 n bytes: the 3n coordinates as doubles, by columns (all x, all y, all z),
  *   byte-shuffled.
  * The doubles are the exact bits of the points, so the link reproduces the exact
@@ -27,6 +27,9 @@ export interface SharedState {
   /** The domain (Terrain.maxEdge), null for none. */
   maxEdge: number | null;
   view: ViewMode;
+  /** The 3D view's height exaggeration, null for the automatic one (from the
+   * points' extent and relief). */
+  exaggeration: number | null;
   /** Where the points came from, for the terrain controls (optional). */
   source: { kind: TerrainKind; count: number; seed: number } | null;
 }
@@ -51,6 +54,7 @@ export function encodeState(s: SharedState): string {
       view: s.view,
       ...(s.source ? { source: s.source } : {}),
       ...(s.maxEdge !== null ? { maxEdge: s.maxEdge } : {}),
+      ...(s.exaggeration !== null ? { exaggeration: s.exaggeration } : {}),
     }),
   );
   const coords = shuffleDoubles(toColumns(s.points));
@@ -61,7 +65,8 @@ export function encodeState(s: SharedState): string {
   return `#${HASH_VERSION}=${toBase64Url(deflateSync(raw, { level: 9 }))}`;
 }
 
-/** Null for an empty hash; throws LinkError with a message for a user. */
+/** Null for an empty hash; throws LinkError with a message for a user (and
+ * nothing else, whatever the hash holds). */
 export function decodeState(hash: string): SharedState | null {
   const body = hash.replace(/^#/, '');
   if (body === '') return null;
@@ -89,15 +94,20 @@ export function decodeState(hash: string): SharedState | null {
   if (raw.length < 4) throw new LinkError('the link cannot be read: its data is truncated');
   const length = new DataView(raw.buffer, raw.byteOffset).getUint32(0, true);
   if (length > 65536 || 4 + length > raw.length) throw new LinkError('the link cannot be read: its header is damaged');
-  let header: Record<string, unknown>;
+  let parsed: unknown;
   try {
-    header = JSON.parse(new TextDecoder('utf-8', { fatal: true }).decode(raw.subarray(4, 4 + length)));
+    parsed = JSON.parse(new TextDecoder('utf-8', { fatal: true }).decode(raw.subarray(4, 4 + length)));
   } catch {
     throw new LinkError('the link cannot be read: its header is not valid JSON');
   }
+  // JSON.parse gives null, arrays and bare values as readily as objects.
+  if (parsed === null || typeof parsed !== 'object' || Array.isArray(parsed)) {
+    throw new LinkError(`the link cannot be read: its header is ${shown(parsed)}, expected an object`);
+  }
+  const header = parsed as Record<string, unknown>;
   const n = header.n;
   if (typeof n !== 'number' || !Number.isInteger(n) || n < 3 || n > MAX_POINTS) {
-    throw new LinkError(`the link cannot be read: bad point count ${JSON.stringify(n)}`);
+    throw new LinkError(`the link cannot be read: bad point count ${shown(n)}`);
   }
   const coords = raw.subarray(4 + length);
   if (coords.length !== 24 * n) {
@@ -108,19 +118,37 @@ export function decodeState(hash: string): SharedState | null {
   if (bad >= 0) throw new LinkError(`the link cannot be read: point ${Math.floor(bad / 3)} has a non-finite coordinate`);
 
   const objective = OBJECTIVE_IDS.find((id) => id === header.objective);
-  if (!objective) throw new LinkError(`the link names an unknown objective ${JSON.stringify(header.objective)}`);
-  const method = METHODS.find((m) => m === header.method) ?? 'auto';
-  const epsilon = typeof header.epsilon === 'number' && header.epsilon > 0 && header.epsilon < 1 ? header.epsilon : 0.25;
-  const order = isOrder(header.order) ? header.order : 1;
-  const view = VIEW_MODES.find((v) => v === header.view) ?? 'split';
-  const maxEdge = typeof header.maxEdge === 'number' && Number.isFinite(header.maxEdge) && header.maxEdge > 0 ? header.maxEdge : null;
-  return { points, objective, method, epsilon, order, maxEdge, view, source: readSource(header.source) };
+  if (!objective) throw new LinkError(`the link names an unknown objective ${shown(header.objective)}`);
+  // Fields added after the first links were shared may be absent (their old
+  // meaning); a field that is there must be what this page writes.
+  const field = <T>(name: string, fallback: T, read: (v: unknown) => T | undefined, expected: string): T => {
+    if (!Object.hasOwn(header, name)) return fallback;
+    const v = read(header[name]);
+    if (v === undefined) throw new LinkError(`the link's ${name} is ${shown(header[name])}, expected ${expected}`);
+    return v;
+  };
+  const method = field('method', 'auto' as Method, (v) => METHODS.find((m) => m === v), `one of ${METHODS.join(', ')}`);
+  const epsilon = field('epsilon', 0.25, (v) => (typeof v === 'number' && v > 0 && v < 1 ? v : undefined), 'a number between 0 and 1');
+  const order = field('order', 1, (v) => (isOrder(v) ? v : undefined), 'an integer from 1 to 8');
+  const view = field('view', 'split' as ViewMode, (v) => VIEW_MODES.find((m) => m === v), `one of ${VIEW_MODES.join(', ')}`);
+  const positive = (v: unknown) => (typeof v === 'number' && Number.isFinite(v) && v > 0 ? v : undefined);
+  const maxEdge = field('maxEdge', null, positive, 'a positive length');
+  const exaggeration = field('exaggeration', null, positive, 'a positive factor');
+  const source = field('source', null, readSource, `{kind, count, seed} with kind one of ${TERRAIN_KINDS.join(', ')}, count and seed whole numbers`);
+  return { points, objective, method, epsilon, order, maxEdge, view, exaggeration, source };
 }
 
-function readSource(s: unknown): SharedState['source'] {
-  if (s === null || typeof s !== 'object') return null;
+function readSource(s: unknown): SharedState['source'] | undefined {
+  if (s === null || typeof s !== 'object') return undefined;
   const { kind, count, seed } = s as Record<string, unknown>;
-  if (typeof kind !== 'string' || !isTerrainKind(kind)) return null;
-  if (typeof count !== 'number' || typeof seed !== 'number') return null;
+  if (typeof kind !== 'string' || !isTerrainKind(kind)) return undefined;
+  const whole = (v: unknown): v is number => typeof v === 'number' && Number.isSafeInteger(v) && v >= 0;
+  if (!whole(count) || count > MAX_POINTS || !whole(seed)) return undefined;
   return { kind, count, seed };
+}
+
+/** A header value in a message: its JSON, on one line, cut short. */
+function shown(v: unknown): string {
+  const json = JSON.stringify(v) ?? String(v);
+  return json.length > 60 ? `${json.slice(0, 57)}…` : json;
 }

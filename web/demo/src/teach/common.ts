@@ -1,6 +1,7 @@
 import type { Hodt, ObjectiveId, Terrain } from 'hodt';
 import type { SolverClient } from '../solver/solverClient.ts';
 import type { SolveSettings } from '../ui/objectivePanel.ts';
+import type { TerrainSource } from '../ui/terrainPanel.ts';
 import { h } from '../ui/dom.ts';
 import { OBJECTIVE_HELP } from '../ui/objectiveHelp.ts';
 import type { StepPlayer } from './stepPlayer.ts';
@@ -14,8 +15,9 @@ export interface TeachContext {
   points(): Float64Array;
   settings(): SolveSettings;
   /** Replaces the page's points (undoable, like an import) and optionally picks
-   * an objective. */
-  load(points: Float64Array, label: string, objective?: ObjectiveId): void;
+   * an objective; `source`: the built-in generator that made them (for the
+   * terrain controls and the link). */
+  load(points: Float64Array, label: string, objective?: ObjectiveId, source?: TerrainSource): void;
   /** Switches the page to its 3D and plan views. */
   showViews(): void;
   /** Sets the sidebar's objective or epsilon (a view's selector changed): the

@@ -12,6 +12,7 @@ import { withAlpha } from '../views/plan/planRenderer.ts';
 import { createFittedCanvas, type FittedCanvas } from './canvas.ts';
 import { COMPONENT_COLORS, createPane, legend, objectiveSelect, paperLink, stepControls, type TeachContext, type TeachView } from './common.ts';
 import { StepPlayer } from './stepPlayer.ts';
+import { countRegions, describeRegions, hasChoice, triangulationsMark } from '../app/regionCount.ts';
 
 const MAX_ORDER = 8;
 const FIXED_COLOR = '#1e2a26';
@@ -56,7 +57,7 @@ export function createOrderView(ctx: TeachContext): TeachView {
   const key = legend([
     ['line', FIXED_COLOR, 'fixed edge: in every k-OD triangulation'],
     ['dash', '#8a9691', 'useful edge that is not fixed'],
-    ['fill', COMPONENT_COLORS[0]!, 'a region with a choice; its number: its k-OD triangulations (+: at least)'],
+    ['fill', COMPONENT_COLORS[0]!, 'a region with a choice; its number: its k-OD triangulations (≥: at least, the count was not finished)'],
     ['fill', '#d5dad7', 'triangles with no choice at this k'],
     ['line', FLIPPED_COLOR, 'edge of the optimum that is not a Delaunay edge'],
     ['dot', MINIMUM_COLOR, 'local minimum of the optimum (a ring: one of Delaunay’s, gone at this k)'],
@@ -105,20 +106,15 @@ export function createOrderView(ctx: TeachContext): TeachView {
     counter.textContent = `k = ${s.order}`;
     const e = s.explanation;
     const r = e?.regions ?? null;
-    caption.textContent = r ? `Order ${s.order}: ${countChoice(r.triangulations)} regions with a choice` : `Order ${s.order}`;
+    const count = r ? countRegions(r) : null;
+    caption.textContent = count ? `Order ${s.order}: ${describeRegions(count)}` : `Order ${s.order}`;
     if (!e) {
       status.textContent = s.failure ? `The library could not solve at order ${s.order}: ${s.failure}` : `Solving at order ${s.order}…`;
-    } else if (r) {
-      const choice = countChoice(r.triangulations);
-      let largest = 0, over = false;
-      r.triangulations.forEach((c, i) => {
-        if (c > largest) (largest = c), (over = !r.complete[i]);
-      });
+    } else if (r && count) {
       const sol = e.solution;
       status.replaceChildren(
         h('b', {}, `k = ${s.order}: `),
-        `${r.useful.length / 2} useful edges, ${r.fixed.length / 2} of them fixed; ${choice} region${choice === 1 ? '' : 's'} with a choice`,
-        choice ? ` (the most triangulations in one: ${largest}${over ? '+' : ''}). ` : '. ',
+        `${r.useful.length / 2} useful edges, ${r.fixed.length / 2} of them fixed; ${describeRegions(count)}. `,
         `${OBJECTIVE_HELP[s.objective].name}: Delaunay ${fmt(sol.delaunayValue)}, `,
         h('b', { id: 'order-value', 'data-value': String(sol.value) }, fmt(sol.value)),
         sol.optimal ? ' (proven optimal)' : sol.bound !== null ? ` (the optimum is within ${fmt(sol.bound)})` : '',
@@ -151,7 +147,7 @@ export function createOrderView(ctx: TeachContext): TeachView {
     const single = new Path2D();
     for (let t = 0; t < r.regionOfTriangle.length; t++) {
       const g = r.regionOfTriangle[t]!;
-      const path = r.triangulations[g]! > 1 ? (paths.get(g) ?? paths.set(g, new Path2D()).get(g)!) : single;
+      const path = hasChoice(r, g) ? (paths.get(g) ?? paths.set(g, new Path2D()).get(g)!) : single;
       const [a, b, d] = [r.triangles[3 * t]!, r.triangles[3 * t + 1]!, r.triangles[3 * t + 2]!];
       path.moveTo(X(a), Y(a));
       path.lineTo(X(b), Y(b));
@@ -207,7 +203,7 @@ export function createOrderView(ctx: TeachContext): TeachView {
       const sum = new Map<number, [number, number, number]>();
       for (let t = 0; t < r.regionOfTriangle.length; t++) {
         const g = r.regionOfTriangle[t]!;
-        if (r.triangulations[g]! <= 1) continue;
+        if (!hasChoice(r, g)) continue;
         const acc = sum.get(g) ?? sum.set(g, [0, 0, 0]).get(g)!;
         for (let j = 0; j < 3; j++) (acc[0] += X(r.triangles[3 * t + j]!) / 3), (acc[1] += Y(r.triangles[3 * t + j]!) / 3);
         acc[2]++;
@@ -216,7 +212,7 @@ export function createOrderView(ctx: TeachContext): TeachView {
       c.textAlign = 'center';
       c.textBaseline = 'middle';
       for (const [g, [x, y, n]] of sum) {
-        const label = `${r.triangulations[g]}${r.complete[g] ? '' : '+'}`;
+        const label = triangulationsMark(r.triangulations[g]!, r.complete[g] === 1);
         c.lineWidth = 3;
         c.strokeStyle = 'rgba(255, 255, 255, 0.9)';
         c.strokeText(label, x / n, y / n);
@@ -271,7 +267,8 @@ export function createOrderView(ctx: TeachContext): TeachView {
         value: s?.explanation?.solution.value ?? null,
         optimal: s?.explanation?.solution.optimal ?? null,
         regions: r ? r.triangulations.length : null,
-        withChoice: r ? countChoice(r.triangulations) : null,
+        withChoice: r ? countRegions(r).withChoice : null,
+        caption: caption.textContent,
         useful: r ? r.useful.length / 2 : null,
         fixed: r ? r.fixed.length / 2 : null,
         minima: s?.minima.length ?? null,
@@ -288,8 +285,3 @@ function minimaOf(m: Measures): number[] {
   return out;
 }
 
-function countChoice(triangulations: Uint32Array): number {
-  let n = 0;
-  for (const c of triangulations) if (c > 1) n++;
-  return n;
-}

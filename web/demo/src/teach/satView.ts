@@ -50,8 +50,10 @@ export function createSatView(ctx: TeachContext): TeachView {
   });
   // A jittered grid: its many adjacent quads give 2-SAT instances with clauses
   // between quads and answers "no" found by the components, not only at once.
-  const small = button('sat-small', 'Example', 'Load a 60-point jittered grid (49 quads) whose search has clauses between quads', () =>
-    ctx.load(jitteredGridPoints(60, 15), 'load the 2-SAT example', objective.value as PairObjective),
+  const example = jitteredGridPoints(64, 15);
+  const gridSide = Math.round(Math.sqrt(example.length / 3));
+  const small = button('sat-small', 'Example', `Load a ${example.length / 3}-point jittered grid (${gridSide} x ${gridSide}, seed 15) whose search has clauses between quads`, () =>
+    ctx.load(example, 'load the 2-SAT example', objective.value as PairObjective, { kind: 'grid', count: example.length / 3, seed: 15 }),
   );
   const line = document.createElementNS(SVG, 'svg');
   line.setAttribute('class', 'sat-line');

@@ -27,7 +27,7 @@ export function createTeachPanel(ctx: TeachContext): TeachPanel {
     b.addEventListener('click', () => select(v.id as TeachTab));
     return b;
   });
-  root.append(h('nav', { class: 'teach-tabs', role: 'tablist', 'aria-label': 'Teaching views' }, ...tabs), createLesson((tab) => select(tab)), ...views.map((v) => v.root));
+  root.append(h('nav', { class: 'teach-tabs', role: 'tablist', 'aria-label': 'Teaching views' }, ...tabs), createLesson(ctx, (tab) => select(tab)), ...views.map((v) => v.root));
   let visible = false;
   let current: TeachTab = 'sat';
 

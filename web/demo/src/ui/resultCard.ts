@@ -1,4 +1,5 @@
-import type { ObjectiveInfo, Solution } from 'hodt';
+import type { ObjectiveInfo, RegionExplanation, Solution } from 'hodt';
+import { countRegions, describeRegions, detailsWithoutRegionSummary } from '../app/regionCount.ts';
 import { byId, h } from './dom.ts';
 import { formatValue, OBJECTIVE_HELP } from './objectiveHelp.ts';
 
@@ -9,7 +10,8 @@ export interface ResultCard {
   running(objective: ObjectiveInfo, onCancel: () => void): void;
   /** Work done out of total in the solver's current phase. */
   progress(done: number, total: number): void;
-  solved(objective: ObjectiveInfo, s: Solution, numQuads: number): void;
+  /** regions: the library's regions of the order (order k >= 2). */
+  solved(objective: ObjectiveInfo, s: Solution, numQuads: number, regions?: RegionExplanation | null): void;
   failed(objective: ObjectiveInfo, message: string, order?: number): void;
   cancelled(objective: ObjectiveInfo): void;
 }
@@ -46,12 +48,13 @@ export function createResultCard(): ResultCard {
       bar.setAttribute('aria-valuenow', String(Math.round(fraction * 100)));
       bar.querySelector('i')!.style.width = `${(fraction * 100).toFixed(1)}%`;
     },
-    solved(o, s, numQuads) {
+    solved(o, s, numQuads, regions = null) {
       stopTimer();
       root.dataset.state = 'solved';
       const better = s.sense === 'min' ? s.value < s.delaunayValue : s.value > s.delaunayValue;
       const same = s.value === s.delaunayValue;
       const change = same ? 'same as Delaunay' : `${better ? 'better' : 'worse'} than Delaunay (${formatValue(o.id, s.delaunayValue)})`;
+      const details = s.order > 1 ? detailsWithoutRegionSummary(s.details) : s.details;
       const proof = s.optimal
         ? h('span', { class: 'badge ok' }, '✓ proven optimal')
         : s.bound !== null
@@ -73,7 +76,8 @@ export function createResultCard(): ResultCard {
             : `${s.flipped} of ${numQuads} quads flipped · ${s.method} · ${formatMs(s.timeMs)}`,
           s.critical ? h('span', { class: 'chip critical' }, 'worst pair') : null,
         ),
-        s.details ? h('p', { class: 'line muted' }, s.details) : '',
+        regions ? h('p', { class: 'line muted', id: 'result-regions' }, `${describeRegions(countRegions(regions))}.`) : '',
+        details ? h('p', { class: 'line muted' }, details) : '',
       );
     },
     failed(o, message, order = 1) {

@@ -12,7 +12,8 @@ export interface FrameOfReference {
   extent: number;
 }
 
-export function frameOfReference(xyz: Float64Array): FrameOfReference {
+/** The frame of the points; `exaggeration` (if given) replaces the automatic one. */
+export function frameOfReference(xyz: Float64Array, exaggeration: number | null = null): FrameOfReference {
   let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity, z0 = Infinity, z1 = -Infinity;
   for (let i = 0; i < xyz.length; i += 3) {
     x0 = Math.min(x0, xyz[i]!);
@@ -26,9 +27,9 @@ export function frameOfReference(xyz: Float64Array): FrameOfReference {
   const relief = z1 - z0;
   // Aim for relief of about 30% of the extent; never flatten a terrain that is
   // already that steep, only steep ones beyond the extent itself.
-  let exaggeration = relief > 0 ? (0.3 * extent) / relief : 1;
-  if (relief <= extent) exaggeration = Math.max(1, exaggeration);
-  return { cx: (x0 + x1) / 2, cy: (y0 + y1) / 2, z0, exaggeration, extent };
+  let automatic = relief > 0 ? (0.3 * extent) / relief : 1;
+  if (relief <= extent) automatic = Math.max(1, automatic);
+  return { cx: (x0 + x1) / 2, cy: (y0 + y1) / 2, z0, exaggeration: exaggeration ?? automatic, extent };
 }
 
 /** World positions (Float32) of the points. */

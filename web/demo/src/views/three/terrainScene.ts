@@ -10,8 +10,9 @@ import { createVertexMarkers } from './vertexMarkers.ts';
 export interface TerrainScene {
   readonly object: Group;
   /** Draws an analysis. With reframe, recomputes the centre and the height
-   * exaggeration (a new terrain); without, keeps them (an edit). */
-  show(a: Analysis, reframe: boolean): void;
+   * exaggeration (a new terrain; `exaggeration`, if given, instead of the
+   * automatic one); without, keeps them (an edit). */
+  show(a: Analysis, reframe: boolean, exaggeration?: number | null): void;
   select(index: number | null): void;
   /** The points in world space, for framing the camera. */
   worldPoints(): Vector3[];
@@ -42,8 +43,8 @@ export function createTerrainScene(): TerrainScene {
     get frame() {
       return frame;
     },
-    show(a, reframe) {
-      if (reframe || !frame) frame = frameOfReference(a.points);
+    show(a, reframe, exaggeration = null) {
+      if (reframe || !frame) frame = frameOfReference(a.points, exaggeration);
       current = a;
       positions = worldPositions(a.points, frame);
       updateSurface(surface, positions, a.points, a.triangles, a.inside);

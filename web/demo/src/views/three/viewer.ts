@@ -25,6 +25,9 @@ export interface Viewer {
   /** Places the camera south-west of and above the points, all of them in view;
    * done again on resize until the user moves the camera. */
   frame(points: readonly Vector3[]): void;
+  /** Frames the points again if any of them is out of view or under the view's
+   * label (a point raised or moved by an edit); true if it did. */
+  keepInView(points: readonly Vector3[]): boolean;
   /** Asks for a redraw on the next animation frame. */
   invalidate(): void;
   /** Draws now. */
@@ -93,8 +96,37 @@ export function createViewer(container: HTMLElement): Viewer {
     if (dirty) render();
   });
 
+  /** The top of the view the points may use, in normalised device coordinates:
+   * below the view's label (a caption over the canvas's top-left corner). */
+  function usableTop(): number {
+    const label = container.querySelector<HTMLElement>('.view-label');
+    const h = container.clientHeight;
+    if (!label || !h) return 1;
+    const inset = label.getBoundingClientRect().bottom - container.getBoundingClientRect().top + 6;
+    return 1 - (2 * Math.max(0, Math.min(inset, h / 3))) / h;
+  }
+
+  function keepInView(points: readonly Vector3[]): boolean {
+    // (Once the user has moved the camera, what it shows is theirs.)
+    if (!framed || !container.clientWidth || points.length === 0) return false;
+    camera.updateMatrixWorld();
+    const top = usableTop();
+    const p = new Vector3();
+    for (const c of points) {
+      p.copy(c).project(camera);
+      if (p.x < -1 || p.x > 1 || p.y < -1 || p.y > top || p.z > 1) {
+        frame(points);
+        return true;
+      }
+    }
+    return false;
+  }
+
   function frame(points: readonly Vector3[]): void {
     framed = points;
+    // The points fill the view below its label: its centre and half height in NDC.
+    const top = usableTop();
+    const centreY = (top - 1) / 2, halfY = (top + 1) / 2;
     const sphere = new Box3().setFromPoints(points as Vector3[]).getBoundingSphere(new Sphere());
     const dir = new Vector3(-0.45, -1, 1.15).normalize();
     const fill = 0.88; // fraction of the view the points span
@@ -124,8 +156,8 @@ export function createViewer(container: HTMLElement): Viewer {
       right.setFromMatrixColumn(camera.matrixWorld, 0);
       up.setFromMatrixColumn(camera.matrixWorld, 1);
       target.addScaledVector(right, ((x0 + x1) / 2) * halfW);
-      target.addScaledVector(up, ((y0 + y1) / 2) * halfH);
-      distance *= Math.max((x1 - x0) / 2, (y1 - y0) / 2) / fill;
+      target.addScaledVector(up, ((y0 + y1) / 2 - centreY) * halfH);
+      distance *= Math.max((x1 - x0) / 2, (y1 - y0) / 2 / halfY) / fill;
     }
     controls.target.copy(target);
     controls.update();
@@ -139,6 +171,7 @@ export function createViewer(container: HTMLElement): Viewer {
     renderer,
     controls,
     frame,
+    keepInView,
     invalidate,
     render,
   };
