@@ -217,4 +217,11 @@ TEST_CASE("text that is not what it seems: the CLI reads decimal commas, refuses
   f.files["two\nlines.csv"] = "0 0 0\n1 x 1\n";
   CHECK(run_cli({"stats", "two\nlines.csv"}, f.host()).err == "hodt: two\\nlines.csv: line 2: y is 'x', not a number\n");
   CHECK(run_cli({"stats", "eu.csv", "--dedupe", "a\nb"}, f.host()).err == "hodt: --dedupe expects 'first' or 'error', got 'a\\nb'\n");
+  // A front end's reader (the npm CLI's GeoTIFF and LAS loaders) may quote the file in its reason.
+  CliHost loader = f.host();
+  loader.read = [](const std::string&, std::string& error) -> std::optional<std::string> {
+    error = "LAS: system identifier 'a\r\nb\x1b'";
+    return std::nullopt;
+  };
+  CHECK(run_cli({"stats", "x.las"}, loader).err == "hodt: x.las: LAS: system identifier 'a\\r\\nb\\x1b'\n");
 }
