@@ -204,8 +204,10 @@ ParsedPoints read_text(std::string_view text, const Reader& r) {
     if (fields.size() < want) {
       std::string what = want == 3 ? "expected 3 numbers x y z"
                                    : "expected " + std::to_string(want) + " fields, up to the columns named x, y and z";
-      // (a line written with another delimiter than the file's)
-      if (s.find_first_of(layout.delimiter == ',' ? ";" : layout.delimiter == ';' ? "," : ",;") != std::string_view::npos)
+      // (a line written with another delimiter than the file's, or without the file's)
+      const bool other = s.find_first_of(layout.delimiter == ',' ? ";" : layout.delimiter == ';' ? "," : ",;") !=
+                         std::string_view::npos;
+      if (other || (layout.delimiter != ' ' && s.find(layout.delimiter) == std::string_view::npos))
         what += ' ' + layout.as_on_first_line();
       what += ", got " + std::to_string(fields.size()) + (fields.size() == 1 ? " field " : " fields ");
       r.fail(line, what + shorten(s));

@@ -45,6 +45,7 @@ TEST_CASE("a file mixing delimiters or decimal marks is refused in one line nami
   CHECK(read_error("1;2;3\n4,5,6\n") == "f.csv: line 2: expected 3 numbers x y z separated by ';' as on line 1, got 1 field '4,5,6'");
   CHECK(read_error("x,y,z\n1,2,3\n4;5;6\n") ==
         "f.csv: line 3: expected 3 numbers x y z separated by ',' as on line 1, got 1 field '4;5;6'");
+  CHECK(read_error("x,y,z\n1 2 3\n") == "f.csv: line 2: expected 3 numbers x y z separated by ',' as on line 1, got 1 field '1 2 3'");
   CHECK(read_error("1 2 3\n4;5;6\n") ==
         "f.csv: line 2: expected 3 numbers x y z separated by spaces or tabs as on line 1, got 1 field '4;5;6'");
   CHECK(read_error("1;2;3\n1,5;2,5;3\n0.5;1;2\n") ==
