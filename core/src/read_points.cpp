@@ -48,8 +48,9 @@ std::string_view unquote(std::string_view f) {
 }
 
 // The fields of a line: split at each delimiter (',' or ';', blanks around a field
-// trimmed, trailing empty fields dropped as a spreadsheet's trailing delimiter) or,
-// for ' ', at runs of spaces and tabs.
+// trimmed, a field in double quotes read to its closing quote, delimiters inside
+// included, as spreadsheets quote "1,5" under ','; trailing empty fields dropped as
+// a spreadsheet's trailing delimiter) or, for ' ', at runs of spaces and tabs.
 std::vector<std::string_view> split_fields(std::string_view line, char delimiter) {
   std::vector<std::string_view> out;
   if (delimiter == ' ') {
@@ -63,7 +64,10 @@ std::vector<std::string_view> split_fields(std::string_view line, char delimiter
     return out;
   }
   for (size_t i = 0;;) {
-    const size_t j = std::min(line.find(delimiter, i), line.size());
+    size_t from = i;
+    while (from < line.size() && blank(line[from])) ++from;
+    if (from < line.size() && line[from] == '"') from = std::min(line.find('"', from + 1), line.size());
+    const size_t j = std::min(line.find(delimiter, from), line.size());
     out.push_back(unquote(trim_blanks(line.substr(i, j - i))));
     if (j == line.size()) break;
     i = j + 1;
@@ -147,11 +151,11 @@ std::optional<std::array<int, 3>> named_columns(const std::vector<std::string_vi
 }
 
 // One coordinate: with the file's decimal mark, decided by the first number that
-// has one (only where ',' cannot be the delimiter).
+// has one (a ',' in a field of a ',' file was quoted: a decimal comma too).
 double text_number(const Reader& r, TextLayout& layout, int line, const char* axis, std::string_view tok) {
   const bool comma = tok.find(',') != std::string_view::npos, point = tok.find('.') != std::string_view::npos;
   char mark = layout.decimal_mark ? layout.decimal_mark : '.';
-  if (comma != point && layout.delimiter != ',') {
+  if (comma != point) {
     mark = comma ? ',' : '.';
     if (layout.decimal_mark && layout.decimal_mark != mark)
       r.fail(line, std::string(axis) + " is " + shorten(tok) + " with a decimal " + (comma ? "comma" : "point") +
@@ -167,7 +171,7 @@ double text_number(const Reader& r, TextLayout& layout, int line, const char* ax
   if (!digits_around || !parse_double(tok, v, mark))
     r.fail(line, std::string(axis) + " is " + shorten(tok) + ", not a number" +
                      (comma || tok.find(';') != std::string_view::npos ? " (fields " + layout.as_on_first_line() + ")" : ""));
-  if ((comma || point) && !layout.decimal_mark && layout.delimiter != ',') {
+  if (comma != point && !layout.decimal_mark) {
     layout.decimal_mark = mark;
     layout.decimal_line = line;
   }
@@ -186,10 +190,12 @@ ParsedPoints read_text(std::string_view text, const Reader& r) {
     if (blank_or_comment(s)) return;
     if (first) {
       first = false;
-      // A header: its first field is not a number (whatever the delimiter).
+      // A header: its first field is not a number (whatever the delimiter and decimal mark).
       double v0;
       const std::string_view s0 = trim_blanks(s);
-      const bool header = !parse_double(unquote(s0.substr(0, s0.find_first_of(",; \t"))), v0);
+      const size_t close = s0.substr(0, 1) == "\"" ? s0.find('"', 1) : std::string_view::npos;
+      const std::string_view f0 = close != std::string_view::npos ? s0.substr(1, close - 1) : s0.substr(0, s0.find_first_of(",; \t"));
+      const bool header = !parse_double(f0, v0) && !parse_double(f0, v0, ',');
       layout.choose(s, line, header);
       if (header) {
         named = named_columns(split_fields(s, layout.delimiter));

@@ -37,6 +37,9 @@ TEST_CASE("a semicolon file with decimal commas reads with ',' as the decimal ma
   CHECK(read_points("1.5;2.25;3\n0.125;-4;10\n7;8.75;1E3\n", "p.csv").xyz == want);
   CHECK(read_points("1,5\t2,25\t3\n0,125\t-4\t10\n7\t8,75\t1E3\n", "eu.tsv").xyz == want);
   CHECK(read_points("x y z\n1,5 2,25 3\n0,125 -4 10\n7 8,75 1E3\n", "eu.txt").xyz == want);
+  // Under ',' spreadsheets (LibreOffice, pandas' to_csv(decimal=',')) quote decimal commas.
+  CHECK(read_points("\"1,5\",\"2,25\",3\n\"0,125\",-4,10\n7,\"8,75\",1E3\n", "q.csv").xyz == want);
+  CHECK(read_points("\"x\",\"y\",\"z\"\n\"1,5\" , \"2,25\",\"3\"\n\"0,125\",-4,10\n7,\"8,75\",1E3\n", "q.csv").xyz == want);
   // A 17-digit decimal with a comma is the double the point gives.
   CHECK(read_points("0,1000000000000000055511151231257827;1;2\n0;0;0\n1;0;0\n", "eu.csv").xyz[0] == 0.1);
 }
@@ -52,6 +55,8 @@ TEST_CASE("a file mixing delimiters or decimal marks is refused in one line nami
         "f.csv: line 3: x is '0.5' with a decimal point, but line 2 has decimal commas: one decimal mark per file");
   CHECK(read_error("1.5;2;3\n1,5;2;3\n") ==
         "f.csv: line 2: x is '1,5' with a decimal comma, but line 1 has decimal points: one decimal mark per file");
+  CHECK(read_error("\"1,5\",2,3\n0.5,1,2\n") ==
+        "f.csv: line 2: x is '0.5' with a decimal point, but line 1 has decimal commas: one decimal mark per file");
   // Digit grouping, and a comma that is no decimal mark, name the delimiter.
   CHECK(read_error("1.234,5;2;3\n") == "f.csv: line 1: x is '1.234,5', not a number (fields separated by ';' as on line 1)");
   CHECK(read_error("1, 2 3\n") == "f.csv: line 1: x is '1,', not a number (fields separated by spaces or tabs as on line 1)");
