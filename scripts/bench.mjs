@@ -13,6 +13,7 @@ import { loadModule } from '../dist/load.js';
 import { measureEditsInChromium } from '../bench/edit_chromium.mjs';
 import { runCliEndToEnd } from '../bench/cli_end_to_end.mjs';
 import { runOrderK } from '../bench/order_k.mjs';
+import { runUsersFiles } from '../bench/users_files.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const jsonOnly = process.argv.includes('--json');
@@ -209,6 +210,9 @@ for (const [kind, make] of [['grid', (w) => KINDS.grid(w * w)], ['saddle', saddl
 summary.orderK = await runOrderK({ root, tmp, hodt: await loadHodt(), log, quick });
 // The CLI end to end, wasm against native (bench/cli_end_to_end.mjs).
 if (!onlyKinds) summary.cliEndToEnd = runCliEndToEnd({ root, tmp, log, quick });
+// Users' files end to end: a NODATA raster with and without its domain, 17-digit
+// numbers, LAZ (bench/users_files.mjs).
+if (!onlyKinds) summary.usersFiles = await runUsersFiles({ root, tmp, log, quick });
 rmSync(tmp, { recursive: true, force: true });
 
 const at = (kind, n) => summary.runs.find((r) => r.kind === kind && r.n >= n * 0.99 && r.n <= n * 1.01);

@@ -7,7 +7,7 @@ import { fileURLToPath } from 'node:url';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 // (clang-14 and its runtime libraries: the sanitizer build and libFuzzer.)
-const DEBIAN = ['cmake', 'ninja-build', 'g++', 'ccache', 'emscripten', 'libcgal-dev', 'libboost-dev', 'doctest-dev', 'chromium', 'clang-14', 'libclang-rt-14-dev'];
+const DEBIAN = ['cmake', 'ninja-build', 'g++', 'ccache', 'emscripten', 'libcgal-dev', 'libboost-dev', 'doctest-dev', 'libfast-float-dev', 'chromium', 'clang-14', 'libclang-rt-14-dev'];
 
 function installed(pkg) {
   const r = spawnSync('dpkg-query', ['-W', '-f=${Status}', pkg], { encoding: 'utf8' });

@@ -14,6 +14,7 @@
 #include "hodt/file_errors.hpp"
 #include "hodt/format.hpp"
 #include "hodt/k_order.hpp"
+#include "hodt/quote_input.hpp"
 #include "hodt/read_points.hpp"
 #include "hodt/report.hpp"
 #include "hodt/solve.hpp"
@@ -27,13 +28,16 @@ struct Usage : InputError {
   using InputError::InputError;
 };
 
+// An argument in a message, whole, escaped onto one line.
+std::string quoted(std::string_view arg) { return quote_input(arg, arg.size()); }
+
 // Any number strtod reads (NaN and infinities too: the option's own check then
 // names them, as it does for every front end).
 double parse_number(const std::string& flag, const std::string& text) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size())
-    throw Usage(flag + " expects a number, got '" + text + "'");
+    throw Usage(flag + " expects a number, got " + quoted(text));
   return v;
 }
 
@@ -89,9 +93,9 @@ std::optional<std::string> read_prj(const FileReader& read, const std::string& f
   if (!text) return std::nullopt;  // (no sidecar: the usual case)
   std::optional<std::string> crs = text->size() <= kMaxCrsChars ? crs_of_wkt(*text) : std::nullopt;
   if (warnings)
-    *warnings += crs ? "hodt: " + file + ": coordinates in " + (crs->rfind("EPSG:", 0) == 0 ? *crs : "the CRS") + " of " + prj +
-                           ", kept as read\n"
-                     : "hodt: warning: " + prj + ": not a WKT coordinate system (ignored)\n";
+    *warnings += crs ? "hodt: " + escape_input(file) + ": coordinates in " + (crs->rfind("EPSG:", 0) == 0 ? *crs : "the CRS") +
+                           " of " + escape_input(prj) + ", kept as read\n"
+                     : "hodt: warning: " + escape_input(prj) + ": not a WKT coordinate system (ignored)\n";
   return crs;
 }
 
@@ -124,7 +128,7 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     }
     const std::string& command = args[0];
     if (command != "stats" && command != "solve")
-      throw Usage("unknown command '" + command + "'; expected stats or solve (hodt --help)");
+      throw Usage("unknown command " + quoted(command) + "; expected stats or solve (hodt --help)");
     std::string file, objective_id;
     bool have_file = false, triangles = false, quiet = false, force_progress = false;
     std::vector<Output> outputs;
@@ -143,7 +147,7 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
       else if (a == "--method") {
         const std::string& m = value();
         const auto parsed = parse_method(m);
-        if (!parsed) throw Usage("unknown method '" + m + "'; valid methods: " + method_ids());
+        if (!parsed) throw Usage("unknown method " + quoted(m) + "; valid methods: " + method_ids());
         options.method = *parsed;
       } else if (a == "--epsilon") options.epsilon = parse_number(a, value());
       else if (a == "--order") {
@@ -152,42 +156,46 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
           options.order = order_from_number(parse_number(a, k));
         } catch (const InputError&) {
           throw Usage("--order expects an integer from " + std::to_string(kMinOrder) + " to " +
-                      std::to_string(kMaxOrder) + ", got '" + k + "'");
+                      std::to_string(kMaxOrder) + ", got " + quoted(k));
         }
         have_order = true;
       } else if (a == "--triangles") triangles = true;
       else if (a == "--trace") options.trace = true;
       else if (a == "--dedupe") {
         const std::string& d = value();
-        if (d != "first" && d != "error") throw Usage("--dedupe expects 'first' or 'error', got '" + d + "'");
+        if (d != "first" && d != "error") throw Usage("--dedupe expects 'first' or 'error', got " + quoted(d));
         dedupe = d == "first" ? Dedupe::KeepFirst : Dedupe::Error;
       } else if (a == "--output") {
         const std::string& path = value();
         const auto format = output_format_of(path);
-        if (!format) throw Usage("--output '" + path + "': unknown format; name the file " + output_extensions());
-        if (!host.write) throw Usage("--output '" + path + "': this front end writes no files");
+        if (!format) throw Usage("--output " + quoted(path) + ": unknown format; name the file " + output_extensions());
+        if (!host.write) throw Usage("--output " + quoted(path) + ": this front end writes no files");
         if (*format != OutputFormat::Json && !host.write_mesh)
-          throw Usage("--output '" + path + "': this build of hodt writes .json only; for ." + format_id(*format) +
+          throw Usage("--output " + quoted(path) + ": this build of hodt writes .json only; for ." + format_id(*format) +
                       " use the npm CLI: npx hodt");
         outputs.push_back({path, *format});
       } else if (a == "--max-edge") {
         const std::string& v = value();
         max_edge = v == "none" ? INFINITY : parse_number(a, v);
-        if (!(*max_edge > 0)) throw Usage("--max-edge expects a positive length or 'none', got '" + v + "'");
+        if (!(*max_edge > 0)) throw Usage("--max-edge expects a positive length or 'none', got " + quoted(v));
       } else if (a == "--nodata") {
         nodata = parse_number(a, value());
       } else if (a == "--classes") {
         const std::string& c = value();  // (read by the npm CLI's LAS/LAZ loader)
-        if (c != "ground" && c != "all") throw Usage("--classes expects 'ground' or 'all', got '" + c + "'");
+        if (c != "ground" && c != "all") throw Usage("--classes expects 'ground' or 'all', got " + quoted(c));
       } else if (a == "--crs") {
         const std::string& c = value();
+        if (c.size() > kMaxCrsChars)
+          throw Usage("--crs is " + std::to_string(c.size()) + " characters long, expected at most " + std::to_string(kMaxCrsChars));
         crs = crs_of_text(c);
-        if (!crs) throw Usage("--crs expects EPSG:N or a WKT definition (at most " + std::to_string(kMaxCrsChars) + " characters)");
+        if (!crs)
+          throw Usage("--crs expects an EPSG code (EPSG:32633), a WKT definition or a PROJ string (+proj=...), got " +
+                      quote_input(c));
       } else if (a == "--quiet") quiet = true;
       else if (a == "--progress") force_progress = true;
-      else if (a.size() > 1 && a[0] == '-' && a != "-") throw Usage("unknown option '" + a + "' (hodt --help)");
+      else if (a.size() > 1 && a[0] == '-' && a != "-") throw Usage("unknown option " + quoted(a) + " (hodt --help)");
       else if (!have_file) file = a, have_file = true;
-      else throw Usage("unexpected argument '" + a + "'");
+      else throw Usage("unexpected argument " + quoted(a));
     }
     if (!have_file) throw Usage(command + ": missing FILE (hodt --help)");
     if (quiet && force_progress) throw Usage("--quiet and --progress exclude each other");
@@ -196,17 +204,17 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     if (command == "solve") {
       if (objective_id.empty()) throw Usage("solve needs --objective ID; valid objectives: " + objective_ids());
       objective = parse_objective(objective_id);
-      if (!objective) throw Usage("unknown objective '" + objective_id + "'; valid objectives: " + objective_ids());
+      if (!objective) throw Usage("unknown objective " + quoted(objective_id) + "; valid objectives: " + objective_ids());
     }
 
     CliProgress progress(quiet ? nullptr : host.show_progress, host.stderr_is_terminal, force_progress);
     PhaseTimes times;
     auto started = Clock::now();
-    const std::string name = file == "-" ? "stdin" : file;
+    const std::string name = file == "-" ? "stdin" : escape_input(file);
     progress.step("reading " + name);
     std::string error;
     const std::optional<std::string> text = host.read(file, error);
-    if (!text) throw InputError(file + ": " + file_error_message(error, FileAccess::Read));
+    if (!text) throw InputError(name + ": " + file_error_message(error, FileAccess::Read));
     ParsedPoints parsed = read_points(*text, name);
     if (nodata) drop_nodata(parsed, *nodata, name);
     if (!crs && file != "-") crs = read_prj(host.read, file, quiet ? nullptr : &r.err);
@@ -278,7 +286,7 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
         if (!tin) tin = tin_data(terrain, parsed.xyz, solved ? *solved : terrain.delaunay_mesh(), comment, crs.value_or(""));
         ok = host.write_mesh(o.path, o.format, *tin, error);
       }
-      if (!ok) throw InputError("cannot write " + o.path + ": " + file_error_message(error, FileAccess::Write));
+      if (!ok) throw InputError("cannot write " + escape_input(o.path) + ": " + file_error_message(error, FileAccess::Write));
     }
     r.out = printed + "\n";
   } catch (const InputError& e) {

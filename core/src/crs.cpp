@@ -1,5 +1,6 @@
 #include "hodt/crs.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <vector>
 
@@ -43,6 +44,61 @@ std::string one_line(std::string_view s) {
   return out;
 }
 
+// The keywords a WKT coordinate system starts with: WKT1 (OGC 01-009, ESRI's .prj)
+// and WKT2 (ISO 19162), long and short forms.
+bool is_wkt_crs_keyword(const std::string& k) {
+  static const char* const keywords[] = {
+      "PROJCS",   "GEOGCS",        "GEOCCS",      "VERT_CS",       "COMPD_CS",      "LOCAL_CS",     "FITTED_CS",
+      "PROJCRS",  "PROJECTEDCRS",  "GEOGCRS",     "GEOGRAPHICCRS", "GEODCRS",       "GEODETICCRS",  "VERTCRS",
+      "VERTICALCRS", "COMPOUNDCRS", "ENGCRS",     "ENGINEERINGCRS", "BOUNDCRS",     "DERIVEDPROJCRS", "PARAMETRICCRS",
+      "TIMECRS"};
+  for (const char* w : keywords)
+    if (k == w) return true;
+  return false;
+}
+
+// An EPSG code as people write it: EPSG:N (any case, also EPSG::N), the OGC URN
+// urn:ogc:def:crs:EPSG:[version]:N, the OGC URI .../def/crs/EPSG/0/N, or N alone.
+std::optional<std::string> epsg_code(std::string_view text) {
+  const std::string u = upper(text);
+  std::string_view code;
+  for (const char* prefix : {"EPSG::", "EPSG:", "HTTP://WWW.OPENGIS.NET/DEF/CRS/EPSG/0/", "HTTPS://WWW.OPENGIS.NET/DEF/CRS/EPSG/0/"})
+    if (u.rfind(prefix, 0) == 0) {
+      code = text.substr(std::string_view(prefix).size());
+      break;
+    }
+  if (u.rfind("URN:OGC:DEF:CRS:EPSG:", 0) == 0) {
+    code = text.substr(21);
+    code = code.substr(code.find(':') == std::string_view::npos ? code.size() : code.find(':') + 1);  // (the version)
+  }
+  if (code.empty() && is_code(text)) code = text;
+  if (!is_code(code) || code.find_first_not_of('0') == std::string_view::npos) return std::nullopt;
+  return "EPSG:" + std::string(code.substr(code.find_first_not_of('0')));
+}
+
+// A PROJ string: +proj=NAME followed by +key or +key=value parameters, blank
+// separated ("+proj=utm +zone=33 +datum=WGS84 +units=m +no_defs").
+bool is_proj_string(std::string_view text) {
+  bool proj = false;
+  size_t i = 0;
+  while (i < text.size()) {
+    const size_t j = std::min(text.find_first_of(" \t", i), text.size());
+    const std::string_view token = text.substr(i, j - i);
+    if (token.size() < 2 || token[0] != '+') return false;
+    const size_t eq = token.find('=');
+    const std::string_view key = token.substr(1, eq == std::string_view::npos ? std::string_view::npos : eq - 1);
+    if (key.empty()) return false;
+    for (const char c : key)
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+    for (const char c : token)
+      if (static_cast<unsigned char>(c) <= 0x20 || static_cast<unsigned char>(c) >= 0x7f) return false;
+    if (key == "proj" && eq != std::string_view::npos && eq + 1 < token.size()) proj = true;
+    i = text.find_first_not_of(" \t", j);
+    if (i == std::string_view::npos) break;
+  }
+  return proj;
+}
+
 }  // namespace
 
 std::optional<std::string> crs_of_wkt(std::string_view wkt) {
@@ -50,7 +106,8 @@ std::optional<std::string> crs_of_wkt(std::string_view wkt) {
   wkt = trim(wkt);
   size_t i = 0;
   while (i < wkt.size() && (std::isalnum(static_cast<unsigned char>(wkt[i])) || wkt[i] == '_')) ++i;
-  if (i == 0 || i >= wkt.size() || (wkt[i] != '[' && wkt[i] != '(')) return std::nullopt;
+  if (i == 0 || i >= wkt.size() || (wkt[i] != '[' && wkt[i] != '(') || !is_wkt_crs_keyword(upper(wkt.substr(0, i))))
+    return std::nullopt;
   // Walk the brackets; the outermost CRS's own AUTHORITY/ID sits at depth 1.
   int depth = 0;
   bool quoted = false;
@@ -93,10 +150,10 @@ std::optional<std::string> crs_of_wkt(std::string_view wkt) {
 std::optional<std::string> crs_of_text(std::string_view text) {
   text = trim(text);
   if (text.empty() || text.size() > kMaxCrsChars) return std::nullopt;
-  const std::string u = upper(text);
-  if (u.rfind("EPSG:", 0) == 0 && is_code(text.substr(5))) return "EPSG:" + std::string(text.substr(5));
+  if (auto epsg = epsg_code(text)) return epsg;
   if (auto wkt = crs_of_wkt(text)) return wkt;
-  return one_line(text);
+  if (is_proj_string(text)) return one_line(text);
+  return std::nullopt;
 }
 
 std::string prj_path(const std::string& file) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "hodt/quote_input.hpp"
+
 namespace hodt {
 
 std::string file_error_message(const std::string& code, FileAccess access) {
@@ -14,10 +16,10 @@ std::string file_error_message(const std::string& code, FileAccess access) {
   if (code == "EROFS") return "read-only file system";
   if (code == "ENAMETOOLONG") return "file name too long";
   // Anything but a code (E and capitals, or the native "errno N") is the front
-  // end's own message.
+  // end's own message (a loader's, which may quote the file: escaped onto one line).
   const bool is_code = code.size() > 1 && code[0] == 'E' &&
                        std::all_of(code.begin(), code.end(), [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'); });
-  if (!code.empty() && !is_code && code.rfind("errno ", 0) != 0) return code;
+  if (!code.empty() && !is_code && code.rfind("errno ", 0) != 0) return escape_input(code);
   std::string reason = read ? "cannot read the file" : "cannot write the file";
   if (!code.empty()) reason += " (" + code + ")";
   return reason;

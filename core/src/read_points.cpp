@@ -1,6 +1,7 @@
 #include "hodt/read_points.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -10,6 +11,7 @@
 #include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/parse_number.hpp"
+#include "hodt/quote_input.hpp"
 #include "hodt/text_encoding.hpp"
 
 namespace hodt {
@@ -28,37 +30,49 @@ std::string lower(std::string_view s) {
   return out;
 }
 
-// A value quoted for a one-line message: up to the end of its line, at most 40 chars.
-std::string shorten(std::string_view s) {
-  s = s.substr(0, s.find_first_of("\r\n"));
-  std::string t(s.substr(0, 40));
-  if (s.size() > 40) t += "...";
-  return "'" + t + "'";
+// A value quoted for a one-line message: up to the end of its line, at most 40
+// characters, escaped.
+std::string shorten(std::string_view s) { return quote_input(s.substr(0, s.find_first_of("\r\n"))); }
+
+bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+std::string_view trim_blanks(std::string_view f) {
+  while (!f.empty() && blank(f.front())) f.remove_prefix(1);
+  while (!f.empty() && blank(f.back())) f.remove_suffix(1);
+  return f;
 }
 
-std::vector<std::string_view> split_fields(std::string_view line) {
+std::string_view unquote(std::string_view f) {
+  if (f.size() >= 2 && (f.front() == '"' || f.front() == '\'') && f.back() == f.front()) f = f.substr(1, f.size() - 2);
+  return f;
+}
+
+// The fields of a line: split at each delimiter (',' or ';', blanks around a field
+// trimmed, a field in double quotes read to its closing quote, delimiters inside
+// included, as spreadsheets quote "1,5" under ','; trailing empty fields dropped as
+// a spreadsheet's trailing delimiter) or, for ' ', at runs of spaces and tabs.
+std::vector<std::string_view> split_fields(std::string_view line, char delimiter) {
   std::vector<std::string_view> out;
-  size_t i = 0;
-  const auto sep = [](char c) { return c == ',' || c == ';' || c == '\t' || c == ' ' || c == '\r'; };
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-    if (i >= line.size()) break;
-    size_t j = i;
-    while (j < line.size() && !sep(line[j])) ++j;
-    std::string_view f = line.substr(i, j - i);
-    if (f.size() >= 2 && (f.front() == '"' || f.front() == '\'') && f.back() == f.front())
-      f = f.substr(1, f.size() - 2);
-    out.push_back(f);
-    i = j;
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-    if (i < line.size() && (line[i] == ',' || line[i] == ';')) {
-      ++i;
-      // an empty field between two separators
-      size_t k = i;
-      while (k < line.size() && (line[k] == ' ' || line[k] == '\t' || line[k] == '\r')) ++k;
-      if (k >= line.size() || line[k] == ',' || line[k] == ';') out.push_back(std::string_view());
+  if (delimiter == ' ') {
+    for (size_t i = 0; i < line.size();) {
+      while (i < line.size() && blank(line[i])) ++i;
+      size_t j = i;
+      while (j < line.size() && !blank(line[j])) ++j;
+      if (j > i) out.push_back(unquote(line.substr(i, j - i)));
+      i = j;
     }
+    return out;
   }
+  for (size_t i = 0;;) {
+    size_t from = i;
+    while (from < line.size() && blank(line[from])) ++from;
+    if (from < line.size() && line[from] == '"') from = std::min(line.find('"', from + 1), line.size());
+    const size_t j = std::min(line.find(delimiter, from), line.size());
+    out.push_back(unquote(trim_blanks(line.substr(i, j - i))));
+    if (j == line.size()) break;
+    i = j + 1;
+  }
+  while (!out.empty() && out.back().empty()) out.pop_back();
   return out;
 }
 
@@ -86,49 +100,134 @@ void check_finite(const Reader& r, int line, const char* axis, double v, std::st
     r.fail(line, std::string(axis) + " is " + shorten(tok) + ", expected a finite number");
 }
 
+// How a text file separates its fields and writes its decimals: decided once, from
+// its first lines, so that every line is read alike and a line written otherwise
+// is refused rather than read as other numbers.
+struct TextLayout {
+  char delimiter = 0;     // ',', ';' or ' ' (runs of spaces and tabs)
+  int delimiter_line = 0;
+  char decimal_mark = 0;  // '.' or ',' once a number has shown one
+  int decimal_line = 0;
+
+  // From the first line that is not blank or a comment. A ';' delimits (European
+  // spreadsheets write "1,5;2,25;3": decimal commas), else a ','; but numbers
+  // holding blanks between commas ("1,5 2,25 3", "1,5<TAB>2,25") are blank
+  // separated with decimal commas.
+  void choose(std::string_view line, int at, bool header) {
+    delimiter_line = at;
+    if (line.find(';') != std::string_view::npos) delimiter = ';';
+    else if (line.find(',') == std::string_view::npos) delimiter = ' ';
+    else {
+      delimiter = ',';
+      if (!header)
+        for (const std::string_view f : split_fields(line, ','))
+          if (f.find_first_of(" \t") != std::string_view::npos) delimiter = ' ';
+    }
+  }
+  std::string delimiter_name() const { return delimiter == ' ' ? "spaces or tabs" : std::string("'") + delimiter + "'"; }
+  std::string as_on_first_line() const {
+    return "separated by " + delimiter_name() + " as on line " + std::to_string(delimiter_line);
+  }
+};
+
+// The header's columns for x, y and z (or easting/northing/elevation, lon/lat/height).
+std::optional<std::array<int, 3>> named_columns(const std::vector<std::string_view>& fields) {
+  std::map<std::string, int> at;
+  for (size_t k = 0; k < fields.size(); ++k) at.emplace(lower(fields[k]), static_cast<int>(k));
+  const char* names[3][5] = {{"x", "lon", "longitude", "easting", "east"},
+                             {"y", "lat", "latitude", "northing", "north"},
+                             {"z", "elevation", "height", "elev", "h"}};
+  std::array<int, 3> found;
+  for (int a = 0; a < 3; ++a) {
+    found[a] = -1;
+    for (const char* nm : names[a])
+      if (at.count(nm)) {
+        found[a] = at[nm];
+        break;
+      }
+    if (found[a] < 0) return std::nullopt;
+  }
+  return found;
+}
+
+// One coordinate: with the file's decimal mark, decided by the first number that
+// has one (a ',' in a field of a ',' file was quoted: a decimal comma too).
+double text_number(const Reader& r, TextLayout& layout, int line, const char* axis, std::string_view tok) {
+  const bool comma = tok.find(',') != std::string_view::npos, point = tok.find('.') != std::string_view::npos;
+  char mark = layout.decimal_mark ? layout.decimal_mark : '.';
+  if (comma != point) {
+    mark = comma ? ',' : '.';
+    if (layout.decimal_mark && layout.decimal_mark != mark)
+      r.fail(line, std::string(axis) + " is " + shorten(tok) + " with a decimal " + (comma ? "comma" : "point") +
+                       ", but line " + std::to_string(layout.decimal_line) + " has decimal " +
+                       (comma ? "points" : "commas") + ": one decimal mark per file");
+  }
+  double v;
+  // A decimal comma sits between digits: "1," or ",5" next to a blank is a delimiter misplaced.
+  const size_t c = tok.find(',');
+  const bool digits_around =
+      !comma || (c > 0 && c + 1 < tok.size() && std::isdigit(static_cast<unsigned char>(tok[c - 1])) &&
+                 std::isdigit(static_cast<unsigned char>(tok[c + 1])));
+  if (!digits_around || !parse_double(tok, v, mark))
+    r.fail(line, std::string(axis) + " is " + shorten(tok) + ", not a number" +
+                     (comma || tok.find(';') != std::string_view::npos ? " (fields " + layout.as_on_first_line() + ")" : ""));
+  if (comma != point && !layout.decimal_mark) {
+    layout.decimal_mark = mark;
+    layout.decimal_line = line;
+  }
+  check_finite(r, line, axis, v, tok);
+  return v;
+}
+
 ParsedPoints read_text(std::string_view text, const Reader& r) {
   ParsedPoints out;
-  int cols[3] = {0, 1, 2};
-  bool header_seen = false, data_seen = false;
+  std::array<int, 3> cols = {0, 1, 2};
+  std::optional<std::array<int, 3>> named;
+  TextLayout layout;
+  bool first = true;
   size_t want = 3;
   for_each_line(text, [&](int line, std::string_view s) {
     if (blank_or_comment(s)) return;
-    const auto fields = split_fields(s);
-    double v0;
-    if (!data_seen && !header_seen && !fields.empty() && !parse_double(fields[0], v0)) {
-      // A header: use columns named x, y and z (or elevation/height) if present.
-      header_seen = true;
-      std::map<std::string, int> at;
-      for (size_t k = 0; k < fields.size(); ++k) at.emplace(lower(fields[k]), static_cast<int>(k));
-      const char* names[3][5] = {{"x", "lon", "longitude", "easting", "east"},
-                                 {"y", "lat", "latitude", "northing", "north"},
-                                 {"z", "elevation", "height", "elev", "h"}};
-      bool named = true;
-      int found[3];
-      for (int a = 0; a < 3 && named; ++a) {
-        found[a] = -1;
-        for (const char* nm : names[a])
-          if (at.count(nm)) { found[a] = at[nm]; break; }
-        named = found[a] >= 0;
+    if (first) {
+      first = false;
+      // A header: its first field is not a number (whatever the delimiter and decimal mark).
+      double v0;
+      const std::string_view s0 = trim_blanks(s);
+      const size_t close = s0.substr(0, 1) == "\"" ? s0.find('"', 1) : std::string_view::npos;
+      const std::string_view f0 = close != std::string_view::npos ? s0.substr(1, close - 1) : s0.substr(0, s0.find_first_of(",; \t"));
+      const bool header = !parse_double(f0, v0) && !parse_double(f0, v0, ',');
+      layout.choose(s, line, header);
+      if (header) {
+        named = named_columns(split_fields(s, layout.delimiter));
+        if (named) {
+          cols = *named;
+          want = static_cast<size_t>(*std::max_element(cols.begin(), cols.end())) + 1;
+        }
+        return;
       }
-      if (named) {
-        std::copy(found, found + 3, cols);
-        want = static_cast<size_t>(*std::max_element(found, found + 3)) + 1;
-      }
-      return;
     }
-    data_seen = true;
-    if (fields.size() < want)
-      r.fail(line, "expected 3 numbers x y z, got " + std::to_string(fields.size()) +
-                       " field" + (fields.size() == 1 ? "" : "s") + " " + shorten(s));
+    const auto fields = split_fields(s, layout.delimiter);
+    if (fields.size() < want) {
+      std::string what = want == 3 ? "expected 3 numbers x y z"
+                                   : "expected " + std::to_string(want) + " fields, up to the columns named x, y and z";
+      // (a line written with another delimiter than the file's, or without the file's)
+      const bool other = s.find_first_of(layout.delimiter == ',' ? ";" : layout.delimiter == ';' ? "," : ",;") !=
+                         std::string_view::npos;
+      if (other || (layout.delimiter != ' ' && s.find(layout.delimiter) == std::string_view::npos))
+        what += ' ' + layout.as_on_first_line();
+      what += ", got " + std::to_string(fields.size()) + (fields.size() == 1 ? " field " : " fields ");
+      r.fail(line, what + shorten(s));
+    }
+    // More columns than x, y and z, and no header to say which they are: an id
+    // column first or intensities after are equally likely, so none is guessed.
+    if (!named && fields.size() > 3) {
+      const std::string d = layout.delimiter == ' ' ? " " : std::string(1, layout.delimiter);
+      r.fail(line, std::to_string(fields.size()) + " columns (" + layout.delimiter_name() +
+                       ") and no header naming x, y and z; add a first line naming the columns, such as 'id" + d + "x" + d +
+                       "y" + d + "z' (or easting, northing, elevation)");
+    }
     static const char* axis[3] = {"x", "y", "z"};
-    for (int a = 0; a < 3; ++a) {
-      double v;
-      const std::string_view tok = fields[cols[a]];
-      if (!parse_double(tok, v)) r.fail(line, std::string(axis[a]) + " is " + shorten(tok) + ", not a number");
-      check_finite(r, line, axis[a], v, tok);
-      out.xyz.push_back(v);
-    }
+    for (int a = 0; a < 3; ++a) out.xyz.push_back(text_number(r, layout, line, axis[a], fields[cols[a]]));
     out.lines.push_back(line);
   });
   return out;
@@ -155,7 +254,7 @@ struct JsonReader {
   }
   std::string near() {
     if (i >= s.size()) return "end of file";
-    return shorten(s.substr(i, std::min<size_t>(20, s.size() - i)));
+    return quote_input(s.substr(i, 20), 20);
   }
   double number(const char* axis) {
     ws();
@@ -211,7 +310,7 @@ ParsedPoints read_json(std::string_view text, const Reader& r) {
         const std::string k = j.key();
         j.expect(':', "':'");
         const int a = k == "x" ? 0 : k == "y" ? 1 : k == "z" ? 2 : -1;
-        if (a < 0) j.fail(where + "unexpected key \"" + k + "\", expected x, y, z");
+        if (a < 0) j.fail(where + "unexpected key " + quote_input(k) + ", expected x, y, z");
         v[a] = j.number(axis[a]);
         have[a] = true;
         if (j.peek() == ',') { ++j.i; continue; }
@@ -245,13 +344,13 @@ ParsedPoints read_ascii_grid(std::string_view text, const Reader& r) {
   for_each_line(text, [&](int line, std::string_view s) {
     if (blank_or_comment(s)) return;
     last_line = line;
-    const auto fields = split_fields(s);
+    const auto fields = split_fields(s, ' ');
     double v;
     if (row == 0 && out.lines.empty() && !parse_double(fields[0], v)) {
       if (fields.size() != 2) r.fail(line, "expected 'key value' in the grid header, got " + shorten(s));
       const std::string k = lower(fields[0]);
       if (!parse_double(fields[1], v) || !std::isfinite(v))
-        r.fail(line, k + " is " + shorten(fields[1]) + ", not a number");
+        r.fail(line, escape_input(k) + " is " + shorten(fields[1]) + ", not a number");
       header[k] = v;
       return;
     }
@@ -318,7 +417,8 @@ std::optional<std::string> binary_format(std::string_view b) {
 
 }  // namespace
 
-ParsedPoints read_points(std::string_view text, const std::string& name, PointFormat format) {
+ParsedPoints read_points(std::string_view text, const std::string& file_name, PointFormat format) {
+  const std::string name = escape_input(file_name);  // (a name may hold anything a file system allows)
   if (const auto binary = binary_format(text)) throw InputError(name + ": " + *binary);
   const Reader r{name};
   // A byte order mark would otherwise make the first line look like a header.

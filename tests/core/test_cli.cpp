@@ -1,7 +1,9 @@
 // The CLI contract through a fake front end: files in memory, progress recorded.
 #include <doctest/doctest.h>
 
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 
 #include "hodt/cli.hpp"
@@ -174,4 +176,52 @@ TEST_CASE("--version and --help") {
           std::string::npos);
   CHECK(std::string(objective_unit(Objective::MinmaxEdgeNormalAngle)).rfind("radians", 0) == 0);
   CHECK(std::string(objective_unit(Objective::MinmaxTriangleArea)) == "squared plane units");
+}
+
+namespace {
+std::string fixture_text(const std::string& name) {
+  std::ifstream in(std::string(HODT_FIXTURES) + "/" + name, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+}  // namespace
+
+TEST_CASE("text that is not what it seems: the CLI reads decimal commas, refuses the rest in one line") {
+  FakeHost f;
+  f.files["eu.csv"] = fixture_text("semicolon-decimal-comma.csv");
+  f.files["point.txt"] = "0 0 1.5\n10.25 0 2.25\n10.25 9.5 0.75\n0 9.5 3\n4.5 4.75 8.125\n";
+  const CliResult eu = run_cli({"solve", "eu.csv", "--objective", "min-total-edge-length"}, f.host());
+  const CliResult point = run_cli({"solve", "point.txt", "--objective", "min-total-edge-length"}, f.host());
+  REQUIRE(eu.exit_code == 0);
+  CHECK(eu.out.substr(0, eu.out.find("\"timeMs\"")) == point.out.substr(0, point.out.find("\"timeMs\"")));
+  CHECK(eu.err.empty());
+
+  const std::pair<const char*, const char*> refused[] = {
+      {"bad-mixed-delimiters.csv", "line 2: expected 3 numbers x y z separated by ';' as on line 1, got 1 field '4,5,6'"},
+      {"bad-mixed-decimal-marks.csv", "line 2: x is '2.5' with a decimal point, but line 1 has decimal commas: one decimal mark per file"},
+      {"bad-id-column-no-header.csv", "line 1: 4 columns (',') and no header naming x, y and z; add a first line naming the columns, "
+                                      "such as 'id,x,y,z' (or easting, northing, elevation)"},
+      {"bad-json-key-newlines.json", "line 1: point 0: unexpected key 'y\\n\\n\\n', expected x, y, z"},
+      {"bad-control-characters.csv", "line 2: y is '\\x1b[31m\\x07\\x00', not a number"},
+  };
+  for (const auto& [name, what] : refused) {
+    f.files[name] = fixture_text(name);
+    const CliResult r = run_cli({"stats", name}, f.host());
+    CAPTURE(name);
+    CHECK(r.exit_code == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err == "hodt: " + std::string(name) + ": " + what + "\n");
+  }
+  // A file name that holds a line break is named on one line too.
+  f.files["two\nlines.csv"] = "0 0 0\n1 x 1\n";
+  CHECK(run_cli({"stats", "two\nlines.csv"}, f.host()).err == "hodt: two\\nlines.csv: line 2: y is 'x', not a number\n");
+  CHECK(run_cli({"stats", "eu.csv", "--dedupe", "a\nb"}, f.host()).err == "hodt: --dedupe expects 'first' or 'error', got 'a\\nb'\n");
+  // A front end's reader (the npm CLI's GeoTIFF and LAS loaders) may quote the file in its reason.
+  CliHost loader = f.host();
+  loader.read = [](const std::string&, std::string& error) -> std::optional<std::string> {
+    error = "LAS: system identifier 'a\r\nb\x1b'";
+    return std::nullopt;
+  };
+  CHECK(run_cli({"stats", "x.las"}, loader).err == "hodt: x.las: LAS: system identifier 'a\\r\\nb\\x1b'\n");
 }

@@ -32,7 +32,7 @@ TEST_CASE("crs_of_wkt: the outermost EPSG code, else the definition on one line"
   CHECK(esri->find('\n') == std::string::npos);
   CHECK(esri->rfind("PROJCS[\"WGS_1984_UTM_Zone_17N\"", 0) == 0);
   CHECK(esri->back() == ']');
-  for (const char* bad : {"", "garbage", "PROJCS[\"a\"", "PROJCS[\"a\"]]", "[1]", "PROJCS[\"unclosed]"})
+  for (const char* bad : {"", "garbage", "PROJCS[\"a\"", "PROJCS[\"a\"]]", "[1]", "PROJCS[\"unclosed]", "foo[1]", "LOCAL[\"a\"]"})
     CHECK_MESSAGE(!crs_of_wkt(bad), bad);
   // Bytes that would break a JSON or PLY header are replaced.
   CHECK(crs_of_wkt("LOCAL_CS[\"caf\xC3\xA9\"]") == "LOCAL_CS[\"caf??\"]");
@@ -94,5 +94,35 @@ TEST_CASE("the CLI keeps the CRS of --crs or the .prj sidecar in its JSON and me
   CHECK(r.out.find("\"crs\"") == std::string::npos);
   r = run_cli({"stats", "dem.asc", "--crs", ""}, host);
   CHECK(r.exit_code == 2);
-  CHECK(r.err == "hodt: --crs expects EPSG:N or a WKT definition (at most 16384 characters)\n");
+  CHECK(r.err == "hodt: --crs expects an EPSG code (EPSG:32633), a WKT definition or a PROJ string (+proj=...), got ''\n");
+  // What is not a CRS is refused in one line, not written into the outputs.
+  r = run_cli({"stats", "dem.asc", "--crs", "foo"}, host);
+  CHECK(r.exit_code == 2);
+  CHECK(r.out.empty());
+  CHECK(r.err == "hodt: --crs expects an EPSG code (EPSG:32633), a WKT definition or a PROJ string (+proj=...), got 'foo'\n");
+  r = run_cli({"stats", "dem.asc", "--crs", "EPSG:32633\nrm -rf"}, host);
+  CHECK(r.err == "hodt: --crs expects an EPSG code (EPSG:32633), a WKT definition or a PROJ string (+proj=...), got "
+                 "'EPSG:32633\\nrm -rf'\n");
+  r = run_cli({"stats", "dem.asc", "--crs", std::string(kMaxCrsChars + 1, 'a')}, host);
+  CHECK(r.err == "hodt: --crs is 16385 characters long, expected at most 16384\n");
+  r = run_cli({"stats", "dem.asc", "--crs", "urn:ogc:def:crs:EPSG::25832"}, host);
+  CHECK(r.out.find(", \"crs\": \"EPSG:25832\"}") != std::string::npos);
+}
+
+TEST_CASE("--crs: EPSG codes in their usual spellings, WKT and PROJ strings; nothing else") {
+  for (const char* epsg : {"EPSG:32633", "epsg:32633", " Epsg:32633 ", "EPSG::32633", "urn:ogc:def:crs:EPSG::32633",
+                           "urn:ogc:def:crs:EPSG:9.8.15:32633", "URN:OGC:DEF:CRS:EPSG::32633",
+                           "http://www.opengis.net/def/crs/EPSG/0/32633", "https://www.opengis.net/def/crs/EPSG/0/32633", "32633",
+                           "EPSG:032633"}) {
+    CAPTURE(epsg);
+    CHECK(crs_of_text(epsg) == "EPSG:32633");
+  }
+  CHECK(crs_of_text("+proj=utm +zone=33  +datum=WGS84 +units=m +no_defs") == "+proj=utm +zone=33 +datum=WGS84 +units=m +no_defs");
+  CHECK(crs_of_text("GEOGCRS[\"WGS 84\",ID[\"EPSG\",4326]]") == "EPSG:4326");
+  for (const char* bad : {"foo", "EPSG", "EPSG:", "EPSG:abc", "EPSG:0", "EPSG:1234567890", "ESPG:4326", "EPSG:4326 x", "4326m",
+                          "foo[1]", "WGS84", "+proj", "+proj=", "+zone=33", "+proj=utm zone=33", "+proj=utm +zone=33\n+x",
+                          "+proj=utm +z\x01=1", "urn:ogc:def:crs:EPSG::", "http://example.com/EPSG/0/4326", "EPSG:32633\nfoo"}) {
+    CAPTURE(bad);
+    CHECK(!crs_of_text(bad));
+  }
 }

@@ -58,7 +58,7 @@ TEST_CASE("duplicates: an error naming both indices, or dropped with dedupe firs
 }
 
 TEST_CASE("text files: separators, header, comments") {
-  const ParsedPoints a = read_points("x,y,z\n0,0,1\n1,0,2\n\n# comment\n0;1;3\n", "a.csv");
+  const ParsedPoints a = read_points("x,y,z\n0,0,1\n1,0,2\n\n# comment\n0, 1 ,3,\n", "a.csv");
   CHECK(a.xyz == std::vector<double>{0, 0, 1, 1, 0, 2, 0, 1, 3});
   CHECK(a.lines == std::vector<int>{2, 3, 6});
   const ParsedPoints b = read_points("0 0 1\r\n1\t0\t2\r\n0   1 3", "b.txt");

@@ -26,7 +26,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     error = "ENOENT";  // (a .prj sidecar: none)
     return std::nullopt;
   });
-  const bool one_line = !r.err.empty() && r.err.find('\n') == r.err.size() - 1;
+  // One printable line: no control character before the final newline (file content is quoted escaped).
+  bool one_line = !r.err.empty() && r.err.back() == '\n';
+  for (size_t i = 0; one_line && i + 1 < r.err.size(); ++i)
+    one_line = static_cast<unsigned char>(r.err[i]) >= 0x20 && r.err[i] != 0x7f;
   if (r.exit_code == 0) {
     for (const char* bad : {"nan", "NaN", "inf", "Infinity"})
       if (r.out.find(bad) != std::string::npos) {

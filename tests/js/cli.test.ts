@@ -47,6 +47,23 @@ describe('hodt stats', () => {
     expect(hodt(['stats', fixture(name)]).out).toBe(native(['stats', fixture(name)]).out);
   });
 
+  it('a semicolon file with decimal commas reads as its decimal-point twin', () => {
+    const twin = '0 0 1.5\n10.25 0 2.25\n10.25 9.5 0.75\n0 9.5 3\n4.5 4.75 8.125\n';
+    const r = hodt(['stats', fixture('semicolon-decimal-comma.csv')]);
+    expect(r.code).toBe(0);
+    expect(r.err).toBe('');
+    expect(r.out).toBe(hodt(['stats', '-'], twin).out);
+  });
+
+  it('--crs takes EPSG codes in their usual spellings into the output', () => {
+    for (const spelling of ['EPSG:32633', 'epsg:32633', 'urn:ogc:def:crs:EPSG::32633', 'http://www.opengis.net/def/crs/EPSG/0/32633', '32633']) {
+      const r = hodt(['stats', fixture('uniform-12.csv'), '--crs', spelling]);
+      expect(r.code).toBe(0);
+      expect(JSON.parse(r.out).crs).toBe('EPSG:32633');
+    }
+    expect(JSON.parse(hodt(['stats', fixture('uniform-12.csv'), '--crs', '+proj=utm +zone=33 +datum=WGS84']).out).crs).toBe('+proj=utm +zone=33 +datum=WGS84');
+  });
+
   it('reads standard input with -', () => {
     const r = hodt(['stats', '-'], '0 0 0\n1 0 1\n0 1 2\n1 1 0\n');
     expect(r.code).toBe(0);
@@ -93,6 +110,13 @@ describe('bad input: exit 2 and one line naming what is wrong', () => {
     ['unknown option', ['stats', fixture('uniform-12.csv'), '--frobnicate'], /unknown option '--frobnicate'/],
     ['bad epsilon', ['solve', fixture('uniform-12.csv'), '--objective', 'minmax-degree', '--epsilon', 'x'], /--epsilon expects a number, got 'x'/],
     ['epsilon out of range', ['solve', fixture('uniform-12.csv'), '--objective', 'minmax-degree', '--epsilon', '2'], /epsilon is 2, expected a number in \(0, 1\)/],
+    ['mixed delimiters', ['stats', fixture('bad-mixed-delimiters.csv')], /line 2: expected 3 numbers x y z separated by ';' as on line 1, got 1 field '4,5,6'$/m],
+    ['mixed decimal marks', ['stats', fixture('bad-mixed-decimal-marks.csv')], /line 2: x is '2\.5' with a decimal point, but line 1 has decimal commas: one decimal mark per file$/m],
+    ['an id column and no header', ['stats', fixture('bad-id-column-no-header.csv')], /line 1: 4 columns \(','\) and no header naming x, y and z; add a first line naming the columns, such as 'id,x,y,z'/],
+    ['a JSON key holding newlines', ['stats', fixture('bad-json-key-newlines.json')], /line 1: point 0: unexpected key 'y\\n\\n\\n', expected x, y, z$/m],
+    ['control characters', ['stats', fixture('bad-control-characters.csv')], /line 2: y is '\\x1b\[31m\\x07\\x00', not a number$/m],
+    ['--crs that is no CRS', ['stats', fixture('uniform-12.csv'), '--crs', 'foo'], /--crs expects an EPSG code \(EPSG:32633\), a WKT definition or a PROJ string \(\+proj=\.\.\.\), got 'foo'$/m],
+    ['--crs with a line break', ['stats', fixture('uniform-12.csv'), '--crs', 'EPSG:4326\nx'], /got 'EPSG:4326\\nx'$/m],
   ];
   it.each(cases)('%s', (_name, args, message) => {
     const r = hodt(args);

@@ -10,11 +10,15 @@ namespace hodt {
 
 // "EPSG:N" when a WKT definition (WKT1 AUTHORITY["EPSG","N"] or WKT2
 // ID["EPSG",N] of the outermost CRS) names one, else the definition on one line
-// (ESRI .prj files name none). nullopt: not WKT.
+// (ESRI .prj files name none). nullopt: not WKT (a CRS keyword such as PROJCS or
+// GEOGCRS, then balanced brackets).
 std::optional<std::string> crs_of_wkt(std::string_view wkt);
 
-// A CRS given on the command line: "EPSG:N" (any case), or WKT as above; other
-// text is kept as given. nullopt: empty or longer than kMaxCrsChars.
+// A CRS given on the command line, as far as it can be recognised: an EPSG code
+// in its usual spellings (EPSG:N in any case, EPSG::N, urn:ogc:def:crs:EPSG::N,
+// http://www.opengis.net/def/crs/EPSG/0/N, or N alone) as "EPSG:N"; WKT as
+// above; a PROJ string (+proj=... +key=value ...) on one line. nullopt for
+// anything else, for empty text and for more than kMaxCrsChars.
 std::optional<std::string> crs_of_text(std::string_view text);
 constexpr size_t kMaxCrsChars = 16384;
 

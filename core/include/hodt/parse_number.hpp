@@ -4,11 +4,13 @@
 
 namespace hodt {
 
-// Parses the whole token; false if it is not a number. Correctly rounded for any
-// number of digits, a leading '+' and exponents (1E+03) included, the same as
-// strtod; plain decimals of up to 2^53 in their digits and at most 22 after the
-// point take a fast exact path (Clinger: both operands of one IEEE division are
-// exact, so its rounding is the decimal's).
-bool parse_double(std::string_view token, double& out);
+// Parses the whole token as a decimal: [+-]digits[.digits][(e|E)[+-]digits],
+// "inf", "infinity" and "nan" in any case (the readers then name them as not
+// finite); false for anything else (hex floats and surrounding spaces too).
+// Correctly rounded for any number of digits, as strtod: fast_float's
+// from_chars (Eisel-Lemire with an exact big-decimal fallback), the same in wasm
+// as natively. decimal_mark is the character between the integer and the
+// fraction: '.' or, for files written with decimal commas, ','.
+bool parse_double(std::string_view token, double& out, char decimal_mark = '.');
 
 }  // namespace hodt
