@@ -62,7 +62,7 @@ function boostLibraries(headers) {
 // A stand-alone "License: NAME" paragraph of a Debian copyright file, as text.
 function debianLicense(file, name) {
   const lines = read(file).split('\n');
-  const at = lines.findIndex((l, i) => l === `License: ${name}` && (i === 0 || lines[i - 1] === ''));
+  const at = lines.findIndex((l, i) => /^License:\s+(.*?)\s*$/.exec(l)?.[1] === name && (i === 0 || lines[i - 1].trim() === ''));
   if (at < 0) throw new Error(`notices: no "License: ${name}" paragraph in ${file}`);
   const body = [];
   for (const l of lines.slice(at + 1)) {
