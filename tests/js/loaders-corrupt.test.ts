@@ -27,6 +27,7 @@ const EXPECTED: Record<string, RegExp> = {
   'raw-flagged-zstd.tif': /^GeoTIFF: strip 0: its data are flagged ZSTD but do not start a ZSTD frame$/,
   'raw-flagged-lzw.tif': /^GeoTIFF: strip 0: its LZW data cannot be decoded/,
   'pixel-scale-nan.tif': /^GeoTIFF: ModelPixelScale \(33550\) is \(NaN, 2\.5, 0\), expected finite non-zero cell sizes$/,
+  'pixel-scale-1e308.tif': /^GeoTIFF: the georeferencing puts the raster's corner \(column 40, row 0\) at an infinite coordinate$/,
   'ifd-offset-past-end.tif': /^TIFF: the first IFD's offset is 1048576, outside the file's 1205 bytes$/,
   'record-length-0.las': /^LAS: point record length 0, expected at least 20 for point format 0$/,
   'count-100000000.las': /^LAS: the header promises 100000000 points of 20 bytes from byte 1207; the file has 22507 bytes, room for 1065$/,

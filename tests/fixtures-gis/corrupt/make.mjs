@@ -63,6 +63,13 @@ export const FILES = {
     new DataView(b.buffer).setFloat64(entry(b, PIXEL_SCALE).value, NaN, true);
     return b;
   },
+  // ModelPixelScale 1e308: the raster's far corner at an infinite coordinate,
+  // read as points at -Infinity (a loader fuzzer finding).
+  'pixel-scale-1e308.tif': () => {
+    const b = read('dem-utm-int16-lzw.tif');
+    new DataView(b.buffer).setFloat64(entry(b, PIXEL_SCALE).value, 1e308, true);
+    return b;
+  },
   // The first IFD's offset past the end of the file: "Offset is outside the bounds of the DataView".
   'ifd-offset-past-end.tif': () => {
     const b = read('dem-utm-int16-lzw.tif');
