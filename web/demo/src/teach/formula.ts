@@ -38,7 +38,7 @@ export function parseCnf(text: string, minLiterals: number, maxLiterals: number,
     .filter((c) => c !== '');
   if (parts.length === 0) throw new FormulaError(`type at least one clause, for example "${example}"`);
   const count = (k: number) => ['no', 'one', 'two', 'three'][k] ?? String(k);
-  const wanted = minLiterals === maxLiterals ? `${count(minLiterals)} literals` : `${count(minLiterals)} to ${count(maxLiterals)} literals`;
+  const wanted = minLiterals === maxLiterals ? `${count(minLiterals)} literals` : `${count(minLiterals)} ${maxLiterals === minLiterals + 1 ? 'or' : 'to'} ${count(maxLiterals)} literals`;
   for (const part of parts) {
     const literals = part.split(/\s*(?:\|\|?|∨|\bor\b)\s*/i).filter((l) => l.trim() !== '');
     if (literals.length < minLiterals || literals.length > maxLiterals) throw new FormulaError(`"${part}" should have ${wanted} joined by |`);
