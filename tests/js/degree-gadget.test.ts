@@ -72,4 +72,21 @@ describe('max degree gadget (Section 3.2)', () => {
     expect(accepted).toBeGreaterThan(100);
     expect(unsatisfiable).toBeGreaterThan(5);
   });
+
+  test('longer chains of up to six variables, several chains on one line', () => {
+    for (const [text, sat] of [
+      ['a | b, !b | c, c | !d, d | e, !e | f, !a, !f', true],
+      ['a | b, !b | c, !c | d, !d | e, !e | f, !a, !f', false],
+      ['a | b, c | d, e | f, !a, !b, !c', false],
+      ['a, b, c, d, e, !f', true],
+    ] as const) {
+      const f = parseCnf(text, 1, 2, 'x');
+      const g = buildDegreeGadget(f);
+      using terrain = hodt.terrain(g.points, { maxEdge: g.maxEdge });
+      const solution = terrain.solve('minmax-degree', { method: 'exact' });
+      expect(satisfyingAssignment(f) !== null, text).toBe(sat);
+      expect(solution.optimal, text).toBe(true);
+      expect(solution.value <= g.bound, text).toBe(sat);
+    }
+  });
 });
