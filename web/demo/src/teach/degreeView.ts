@@ -27,7 +27,7 @@ const clauseText = (f: Cnf, c: Literal[]) => c.map((l) => literalText(f, l)).joi
 export function createDegreeView(ctx: TeachContext): TeachView {
   const { root, side, main, caption } = createPane('degree', 'Why the lowest maximum degree is NP-hard', [
     'Each cell below is a flippable quad, so it adds one to the degree of two opposite corners. A point on a side two cells share has d − 1 fixed neighbours: only one of the two diagonals that could reach it fits under d, so all cells of a row use the same diagonal, rising or falling: a variable. ',
-    'Where two rows meet, the corner that both false literals’ diagonals would reach is a clause vertex: the two cannot both be there. A one-literal clause is a corner with d fixed neighbours. So the maximum degree can be d only if the formula is satisfiable. See ',
+    'Where two rows meet, the corner that both false literals’ diagonals would reach is a clause vertex: the two cannot both be there. A one-literal clause is a corner with d fixed neighbours. So the maximum degree can be at most d only if the formula is satisfiable. See ',
     paperLink('3.2'),
     '.',
   ]);
@@ -137,7 +137,11 @@ export function createDegreeView(ctx: TeachContext): TeachView {
       h('b', { id: 'degree-satisfiable', 'data-value': String(b.satisfying !== null) }, b.satisfying ? 'satisfiable' : 'unsatisfiable'),
       ` (all 2`,
       h('sup', {}, String(n)),
-      ` assignments tried). The gadget: ${(g.points.length / 3).toLocaleString('en')} points, ${b.terrain.numQuads} flippable quads (${g.cells.length} cells; the others lie in the filling, away from every point whose degree the construction fixes), d = ${g.bound}. `,
+      ` assignments tried). The gadget: ${(g.points.length / 3).toLocaleString('en')} points, ${b.terrain.numQuads} flippable quads (${g.cells.length} cells; ${
+        b.map.otherQuadsAtFixedPoints === 0
+          ? 'the others lie in the filling, away from every point whose degree the construction fixes'
+          : `${b.map.otherQuadsAtFixedPoints} others touch a point whose degree the construction fixes`
+      }), d = ${g.bound}. `,
       b.solution
         ? `The library (exact${b.solution.optimal ? ', proven optimal' : ', not proven optimal'}) finds a lowest maximum degree of ${b.solution.value} in ${b.solution.timeMs.toFixed(0)} ms.`
         : b.failure
