@@ -69,8 +69,8 @@ describe('max degree gadget (Section 3.2)', () => {
     const { page, context, errors } = await openPage(env.demo);
     await page.click('.segmented button[data-view="teach"]');
     await page.click('#teach-tab-degree');
-    const v = await build(page, 'x | y, !x | !y');
-    expect(v.error).toMatch(/two clauses/);
+    const v = await build(page, 'x | y, x | !y');
+    expect(v.error).toMatch(/share two variables/);
     expect(v.holds).toBeNull();
     expect(await page.locator('#degree-summary').textContent()).toMatch(/^Cannot build the gadget: /);
     expect(await page.locator('#degree-check').count()).toBe(0);

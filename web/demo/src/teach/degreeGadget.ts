@@ -12,7 +12,8 @@
 //   that the false literal's diagonal reaches is the same point on both sides, the
 //   clause vertex, with d - 1 fixed neighbours, so the two literals cannot both be
 //   false (the paper's clause vertex has d - k + 1 for k literals). Its other
-//   corner has d - 2, so it takes both diagonals.
+//   corner has d - 2, so it takes both diagonals, or it is the vertex of a second
+//   clause on the same two variables whose literals are the first one's negations.
 // - a clause of one literal is a joint with a dummy cell (no variable) whose
 //   corner has d fixed neighbours: no diagonal may reach it, so the literal is true.
 // - chains follow each other along one line; where one ends and the next begins
@@ -101,6 +102,8 @@ export interface DegreeGadget {
   chains: number[][];
 }
 
+const clauseText = (f: Cnf, c: Literal[]) => c.map((l) => (l.negated ? '¬' : '') + f.names[l.variable]).join(' ∨ ');
+
 interface Occurrence {
   clause: number;
   literal: Literal;
@@ -108,26 +111,33 @@ interface Occurrence {
 
 /** Chains of variables joined by two-literal clauses, or a message saying why the
  * formula cannot be laid out with straight wires. */
-export function chainLayout(f: Cnf): { chains: number[][]; joints: Map<string, number>; units: Occurrence[][] } {
+export function chainLayout(f: Cnf): { chains: number[][]; joints: Map<string, number[]>; units: Occurrence[][] } {
   const n = f.names.length;
   const occurrences: Occurrence[][] = Array.from({ length: n }, () => []);
   f.clauses.forEach((c, k) => c.forEach((literal) => occurrences[literal.variable]!.push({ clause: k, literal })));
   f.clauses.forEach((c) => {
-    if (c.length > 2) throw new DegreeLayoutError(`"${c.map((l) => (l.negated ? '¬' : '') + f.names[l.variable]).join(' ∨ ')}" has three literals: this page lays out clauses of one or two literals only (see the note below)`);
+    if (c.length > 2) throw new DegreeLayoutError(`"${clauseText(f, c)}" has three literals: this page lays out clauses of one or two literals only (see the note below)`);
   });
   occurrences.forEach((o, v) => {
     if (o.length > 2) throw new DegreeLayoutError(`${f.names[v]} is in ${o.length} clauses: a wire has two ends, so each variable may be in at most two`);
   });
   const neighbours: number[][] = Array.from({ length: n }, () => []);
-  const joints = new Map<string, number>();
+  const joints = new Map<string, number[]>();
   f.clauses.forEach((c, k) => {
     if (c.length !== 2) return;
     const [a, b] = [c[0]!.variable, c[1]!.variable];
-    if (neighbours[a]!.includes(b)) throw new DegreeLayoutError(`${f.names[a]} and ${f.names[b]} share two clauses: that closes a cycle, and the wires are straight`);
+    const shared = joints.get(`${a},${b}`);
+    if (shared) {
+      // A second clause on the same two variables fits on the joint's other corner.
+      if (shared.length > 1) throw new DegreeLayoutError(`${f.names[a]} and ${f.names[b]} share three clauses: a joint has two corners`);
+      shared.push(k);
+      return;
+    }
     neighbours[a]!.push(b);
     neighbours[b]!.push(a);
-    joints.set(`${a},${b}`, k);
-    joints.set(`${b},${a}`, k);
+    const list = [k];
+    joints.set(`${a},${b}`, list);
+    joints.set(`${b},${a}`, list);
   });
   const units = occurrences.map((o) => o.filter((x) => f.clauses[x.clause]!.length === 1));
   const seen = new Uint8Array(n);
@@ -217,18 +227,30 @@ export function buildDegreeGadget(f: Cnf): DegreeGadget {
         // previous wire's false literal reaches; this wire's polarity makes its
         // own false literal reach the same corner.
         const prevWire = wires[wire - 1]!;
-        const k = joints.get(`${chain[i - 1]},${variable}`)!;
-        const lits = f.clauses[k]!;
-        const mine = lits.find((l) => l.variable === variable)!;
-        const theirs = lits.find((l) => l.variable !== variable)!;
+        const [k, second] = joints.get(`${chain[i - 1]},${variable}`)!;
+        const sides = (c: number) => {
+          const lits = f.clauses[c]!;
+          return [lits.find((l) => l.variable === variable)!, lits.find((l) => l.variable !== variable)!] as const;
+        };
+        const [mine, theirs] = sides(k!);
         const corner = cornerOf(prevWire, theirs, true);
         if (cornerOf(w, mine, false) !== corner) w.risingIsTrue = false;
-        const clauseVertex = point(x0, corner === 'north' ? y0 + WIDTH : y0);
-        const slack = point(x0, corner === 'north' ? y0 : y0 + WIDTH);
-        targets.set(clauseVertex, DEGREE_BOUND - 1);
-        roleOf.set(clauseVertex, 'clause');
-        roleOf.set(slack, 'slack');
-        clauses.push({ clause: k, point: clauseVertex, literals: lits });
+        const at = (c: 'north' | 'south') => point(x0, c === 'north' ? y0 + WIDTH : y0);
+        const other = corner === 'north' ? 'south' : 'north';
+        const clauseAt = (c: number, where: 'north' | 'south') => {
+          targets.set(at(where), DEGREE_BOUND - 1);
+          roleOf.set(at(where), 'clause');
+          clauses.push({ clause: c, point: at(where), literals: f.clauses[c]! });
+        };
+        clauseAt(k!, corner);
+        if (second === undefined) roleOf.set(at(other), 'slack');
+        else {
+          const [mine2, theirs2] = sides(second);
+          if (cornerOf(prevWire, theirs2, true) !== other || cornerOf(w, mine2, false) !== other) {
+            throw new DegreeLayoutError(`${clauseText(f, f.clauses[k!]!)} and ${clauseText(f, f.clauses[second]!)} share two variables, and only clauses whose literals are each other's negations fit on the two corners of one joint`);
+          }
+          clauseAt(second, other);
+        }
       }
       x0 += CELLS_PER_WIRE * CELL;
     });

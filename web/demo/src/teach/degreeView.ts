@@ -41,7 +41,7 @@ export function createDegreeView(ctx: TeachContext): TeachView {
     'p',
     { class: 'teach-note' },
     h('b', {}, 'What this page does not show. '),
-    'The rows are straight and have two ends, so it lays out chains only: clauses of one or two literals, every variable in at most two clauses, no cycle. The paper also splits rows (a ring of quads) and has clause vertices of three literals (d − 2 fixed neighbours); without them these formulas are ones 2-SAT solves, so this page shows how the gadgets work, not why the problem is hard. ',
+    'The rows are straight and have two ends, so it lays out chains only: clauses of one or two literals, every variable in at most two clauses, no cycle (two clauses on the same two variables only when one negates both literals of the other). The paper also splits rows (a ring of quads) and has clause vertices of three literals (d − 2 fixed neighbours); without them these formulas are ones 2-SAT solves, so this page shows how the gadgets work, not why the problem is hard. ',
     h('b', {}, 'A domain. '),
     'The degrees are measured with a longest edge of 1.35 (a triangle with a longer edge is not measured): it leaves out the long triangles that fill the convex hull around the rows, which the paper triangulates with Ruppert’s algorithm instead. Every instance is checked above, not assumed.',
   );
