@@ -49,8 +49,8 @@ export function createDegreeView(ctx: TeachContext): TeachView {
     h('label', { for: 'degree-formula', class: 'teach-label' }, 'Formula (clauses of one or two literals, up to 6 variables)'),
     input,
     h('div', { class: 'buttons' }, build),
-    summary,
     verdict,
+    summary,
     clauses,
     legend([
       ['fill', CATEGORICAL[0]!, 'a variable’s cells (one colour per variable); grey: a one-literal clause’s dummy cell'],
