@@ -120,6 +120,12 @@ export function trianglePath(c: FittedCanvas, points: Float64Array, triangles: A
 }
 
 /** A categorical palette for components, variables and layers. */
+/** A #rrggbb colour with an alpha. */
+export function tint(hex: string, alpha: number): string {
+  const v = parseInt(hex.slice(1), 16);
+  return `rgba(${(v >> 16) & 255}, ${(v >> 8) & 255}, ${v & 255}, ${alpha})`;
+}
+
 export const CATEGORICAL = ['#1f77b4', '#e6550d', '#31a354', '#9467bd', '#d62728', '#17becf', '#bcbd22', '#8c564b', '#e377c2', '#636363'] as const;
 
 /** Sequential colours for layers 0..count-1 (outer to inner). */

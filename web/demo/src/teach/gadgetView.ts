@@ -3,7 +3,7 @@
 import type { Solution, Terrain } from 'hodt';
 import { h } from '../ui/dom.ts';
 import { EDGE_COLORS } from '../views/palette.ts';
-import { CATEGORICAL, createFittedCanvas, type FittedCanvas } from './canvas.ts';
+import { CATEGORICAL, createFittedCanvas, tint, type FittedCanvas } from './canvas.ts';
 import { button, createPane, legend, paperLink, type TeachContext, type TeachView } from './common.ts';
 import { clauseTrue, countSatisfied, formatClause, FormulaError, maxSatisfiable, parseFormula, type Formula } from './formula.ts';
 import { buildGadget, LayoutError, type Gadget } from './gadget.ts';
@@ -377,9 +377,4 @@ export function createGadgetView(ctx: TeachContext): TeachView {
       };
     },
   };
-}
-
-function tint(hex: string, alpha: number): string {
-  const v = parseInt(hex.slice(1), 16);
-  return `rgba(${(v >> 16) & 255}, ${(v >> 8) & 255}, ${v & 255}, ${alpha})`;
 }

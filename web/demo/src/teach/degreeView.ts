@@ -1,0 +1,278 @@
+// Teaching view: the NP-hardness construction of Section 3.2 (lowest maximum
+// degree), built from a small formula, solved exactly by the library and checked.
+import type { Solution, Terrain } from 'hodt';
+import { h } from '../ui/dom.ts';
+import { CATEGORICAL, createFittedCanvas, tint, type FittedCanvas } from './canvas.ts';
+import { button, createPane, legend, paperLink, type TeachContext, type TeachView } from './common.ts';
+import { FormulaError, literalTrue, parseCnf, satisfyingAssignment, type Cnf, type Literal } from './formula.ts';
+import { buildDegreeGadget, DegreeLayoutError, type DegreeGadget } from './degreeGadget.ts';
+import { certifyDegree, mapDegreeCells, readDegreeAssignment, type DegreeCells, type DegreeCertificate } from './degreeCheck.ts';
+
+export const DEFAULT_DEGREE_FORMULA = 'x | y, !y | z, !x';
+
+interface Built {
+  formula: Cnf;
+  gadget: DegreeGadget;
+  terrain: Terrain;
+  map: DegreeCells;
+  satisfying: boolean[] | null;
+  certificate: DegreeCertificate;
+  solution: Solution | null;
+  failure: string | null;
+}
+
+const literalText = (f: Cnf, l: Literal) => `${l.negated ? '¬' : ''}${f.names[l.variable]}`;
+const clauseText = (f: Cnf, c: Literal[]) => c.map((l) => literalText(f, l)).join(' ∨ ');
+
+export function createDegreeView(ctx: TeachContext): TeachView {
+  const { root, side, main, caption } = createPane('degree', 'Why the lowest maximum degree is NP-hard', [
+    'Each cell below is a flippable quad, so it adds one to the degree of two opposite corners. A point on a side two cells share has d − 1 fixed neighbours: only one of the two diagonals that could reach it fits under d, so all cells of a row use the same diagonal, rising or falling: a variable. ',
+    'Where two rows meet, the corner that both false literals’ diagonals would reach is a clause vertex: the two cannot both be there. A one-literal clause is a corner with d fixed neighbours. So the maximum degree can be at most d only if the formula is satisfiable. See ',
+    paperLink('3.2'),
+    '.',
+  ]);
+  const input = h('textarea', { id: 'degree-formula', rows: 2, spellcheck: false, 'aria-label': 'Formula for the maximum degree gadget' });
+  input.value = DEFAULT_DEGREE_FORMULA;
+  const build = button('degree-build', 'Build and solve', 'Build the gadget for this formula and solve it exactly (lowest maximum degree)', () => run(), false);
+  const summary = h('p', { class: 'teach-status', id: 'degree-summary', 'aria-live': 'polite' });
+  const verdict = h('p', { class: 'teach-verdict', id: 'degree-verdict' });
+  const clauses = h('table', { class: 'teach-table', id: 'degree-clauses' });
+  const honesty = h(
+    'p',
+    { class: 'teach-note' },
+    h('b', {}, 'What this page does not show. '),
+    'The rows are straight and have two ends, so it lays out chains only: clauses of one or two literals, every variable in at most two clauses, no cycle (two clauses on the same two variables only when one negates both literals of the other). The paper also splits rows (a ring of quads) and has clause vertices of three literals (d − 2 fixed neighbours); without them these formulas are ones 2-SAT solves, so this page shows how the gadgets work, not why the problem is hard. ',
+    h('b', {}, 'A domain. '),
+    'The degrees are measured with a longest edge of 1.35 (a triangle with a longer edge is not measured): it leaves out the long triangles that fill the convex hull around the rows, which the paper triangulates with Ruppert’s algorithm instead. Every instance is checked above, not assumed.',
+  );
+  side.append(
+    h('label', { for: 'degree-formula', class: 'teach-label' }, 'Formula (clauses of one or two literals, up to 6 variables)'),
+    input,
+    h('div', { class: 'buttons' }, build),
+    verdict,
+    summary,
+    clauses,
+    legend([
+      ['fill', CATEGORICAL[0]!, 'a variable’s cells (one colour per variable); grey: a one-literal clause’s dummy cell'],
+      ['line', '#111', 'the diagonal each cell uses in the solver’s optimum'],
+      ['dot', '#17804a', 'clause vertex within d; red: a point over d'],
+      ['dot', 'rgba(90, 100, 96, 0.6)', 'fixed neighbours (the paper’s Figure 9)'],
+    ]),
+    honesty,
+  );
+  const canvas = createFittedCanvas(main, (c, f) => draw(c, f), 'The maximum degree gadget: rows of cells, clause vertices and their fixed neighbours');
+
+  let built: Built | null = null;
+  let error: string | null = null;
+  let token = 0;
+
+  function run(): void {
+    const my = ++token;
+    built?.terrain.dispose();
+    built = null;
+    error = null;
+    let formula: Cnf;
+    let gadget: DegreeGadget;
+    try {
+      formula = parseCnf(input.value, 1, 2, 'x | y, !x');
+      if (formula.names.length > MAX_VARIABLES) throw new FormulaError(`${formula.names.length} variables: this gadget takes at most ${MAX_VARIABLES}`);
+      gadget = buildDegreeGadget(formula);
+    } catch (e) {
+      if (!(e instanceof FormulaError) && !(e instanceof DegreeLayoutError)) throw e;
+      error = e.message;
+      render();
+      return;
+    }
+    const terrain = ctx.hodt.terrain(gadget.points, { maxEdge: gadget.maxEdge });
+    const map = mapDegreeCells(gadget, terrain.quads);
+    const certificate = certifyDegree(gadget, map, terrain.numQuads, (c) => terrain.evaluate(c)['minmax-degree']);
+    built = { formula, gadget, terrain, map, satisfying: satisfyingAssignment(formula), certificate, solution: null, failure: null };
+    const b = built;
+    canvas.fit(gadget.points, 16);
+    render();
+    void ctx.solver.solve({ points: gadget.points, objective: 'minmax-degree', method: 'exact', epsilon: 0.1, order: 1, maxEdge: gadget.maxEdge }).then((o) => {
+      if (my !== token) return;
+      if (o.status !== 'solved') b.failure = o.status === 'failed' ? o.message : 'cancelled';
+      else b.solution = o.solution;
+      render();
+    });
+  }
+
+  /** Does the reduction hold on this instance, and if not, where does it fail? */
+  function judge(b: Built): { holds: boolean | null; text: string } {
+    const d = b.gadget.bound;
+    const s = b.solution;
+    if (!s) return { holds: null, text: '' };
+    if (!s.optimal) return { holds: false, text: `The solver’s ${s.value} is not proven optimal, so this instance is not verified.` };
+    const sat = b.satisfying !== null;
+    const wrong = b.certificate.wrong.length;
+    const per = wrong === 0 ? `each of the ${b.certificate.values.length} assignments’ triangulations has maximum degree at most ${d} exactly when the assignment satisfies the formula, and ` : `${wrong} assignment(s) break “maximum degree at most ${d} exactly when satisfied”, and `;
+    if ((s.value <= d) === sat && wrong === 0) {
+      return {
+        holds: true,
+        text: `Check: ${per}the proven optimum is ${s.value} ${sat ? `≤ d = ${d}, and the formula is satisfiable` : `> d = ${d}, and the formula is unsatisfiable`}: on this instance the reduction holds.`,
+      };
+    }
+    return {
+      holds: false,
+      text: `Check failed: ${per}the proven optimum is ${s.value} while the formula is ${sat ? 'satisfiable' : 'unsatisfiable'}: on this instance the reduction does not hold.`,
+    };
+  }
+
+  function render(): void {
+    canvas.redraw();
+    caption.textContent = built?.solution ? 'The exact optimum: each cell’s diagonal; points labelled with their degree where it matters' : 'The construction';
+    if (error || !built) {
+      summary.replaceChildren(error ? h('span', { class: 'error' }, `Cannot build the gadget: ${error}.`) : 'Type a formula and press Build and solve.');
+      verdict.replaceChildren();
+      clauses.replaceChildren();
+      return;
+    }
+    const b = built;
+    const f = b.formula;
+    const g = b.gadget;
+    const n = f.names.length;
+    summary.replaceChildren(
+      `${n} variable${n === 1 ? '' : 's'}, ${f.clauses.length} clause${f.clauses.length === 1 ? '' : 's'}: `,
+      h('b', { id: 'degree-satisfiable', 'data-value': String(b.satisfying !== null) }, b.satisfying ? 'satisfiable' : 'unsatisfiable'),
+      ` (all 2`,
+      h('sup', {}, String(n)),
+      ` assignments tried). The gadget: ${(g.points.length / 3).toLocaleString('en')} points, ${b.terrain.numQuads} flippable quads (${g.cells.length} cells; ${
+        b.map.otherQuadsAtFixedPoints === 0
+          ? 'the others lie in the filling, away from every point whose degree the construction fixes'
+          : `${b.map.otherQuadsAtFixedPoints} others touch a point whose degree the construction fixes`
+      }), d = ${g.bound}. `,
+      b.solution
+        ? `The library (exact${b.solution.optimal ? ', proven optimal' : ', not proven optimal'}) finds a lowest maximum degree of ${b.solution.value} in ${b.solution.timeMs.toFixed(0)} ms.`
+        : b.failure
+          ? h('span', { class: 'error' }, `The library could not solve it: ${b.failure}.`)
+          : 'Solving…',
+    );
+    const read = b.solution ? readDegreeAssignment(g, b.map, b.solution.choice) : null;
+    const degrees = b.solution ? b.terrain.measures(b.solution.choice).degree : null;
+    clauses.replaceChildren(
+      h('thead', {}, h('tr', {}, h('th', {}, '#'), h('th', {}, 'clause'), h('th', { title: 'by the values read from the rows of the optimum' }, 'satisfied'), h('th', { title: 'degree of the clause vertex in the optimum' }, 'vertex'))),
+      h(
+        'tbody',
+        {},
+        ...g.clauses.map((cv) =>
+          h(
+            'tr',
+            {},
+            h('td', {}, `C${cv.clause + 1}`),
+            h('td', {}, clauseText(f, cv.literals)),
+            h('td', {}, read ? (cv.literals.some((l) => literalTrue(l, read.assignment)) ? '✓' : '✗') : ''),
+            h('td', {}, degrees ? `degree ${degrees[cv.point]}` : ''),
+          ),
+        ),
+      ),
+    );
+    const j = judge(b);
+    verdict.replaceChildren();
+    if (j.holds === null) return;
+    if (read) {
+      verdict.append(
+        'Values read from the rows: ',
+        f.names.map((name, v) => `${name} = ${read.assignment[v] ? 'T' : 'F'}`).join(', '),
+        '. ',
+      );
+    }
+    verdict.append(h('span', { id: 'degree-check', 'data-ok': String(j.holds), class: j.holds ? 'good' : 'bad' }, j.text));
+  }
+
+  function draw(c: CanvasRenderingContext2D, fc: FittedCanvas): void {
+    const b = built;
+    if (!b) return;
+    const g = b.gadget;
+    const p = g.points;
+    const X = (i: number) => fc.sx(p[3 * i]!);
+    const Y = (i: number) => fc.sy(p[3 * i + 1]!);
+    const choice = b.solution?.choice ?? null;
+    const degrees = b.terrain.measures(choice ?? undefined).degree;
+    g.cells.forEach((cell, i) => {
+      const [sw, se, ne, nw] = cell.corners;
+      c.beginPath();
+      c.moveTo(X(sw), Y(sw));
+      c.lineTo(X(se), Y(se));
+      c.lineTo(X(ne), Y(ne));
+      c.lineTo(X(nw), Y(nw));
+      c.closePath();
+      const v = cell.wire >= 0 ? g.wires[cell.wire]!.variable : -1;
+      c.fillStyle = v >= 0 ? tint(CATEGORICAL[v % CATEGORICAL.length]!, 0.35) : 'rgba(120, 120, 120, 0.25)';
+      c.fill();
+      c.strokeStyle = '#555';
+      c.lineWidth = 1;
+      c.stroke();
+      const q = b.map.quad[i]!;
+      const rises = (choice ? choice[q] === 0 : true) === (b.map.delaunayRises[i] === 1);
+      c.beginPath();
+      if (rises) {
+        c.moveTo(X(sw), Y(sw));
+        c.lineTo(X(ne), Y(ne));
+      } else {
+        c.moveTo(X(nw), Y(nw));
+        c.lineTo(X(se), Y(se));
+      }
+      c.strokeStyle = '#111';
+      c.lineWidth = Math.max(1.5, fc.scale * 0.04);
+      c.stroke();
+    });
+    const r = Math.max(2, Math.min(5, fc.scale * 0.07));
+    for (let i = 0; i < p.length / 3; i++) {
+      const role = g.roles[i]!;
+      const over = degrees[i]! > g.bound;
+      c.fillStyle = over ? '#d62728' : role === 'clause' || role === 'unit' ? '#17804a' : role === 'pendant' ? 'rgba(90, 100, 96, 0.6)' : '#333';
+      c.beginPath();
+      c.arc(X(i), Y(i), role === 'pendant' && !over ? r * 0.6 : r, 0, 2 * Math.PI);
+      c.fill();
+    }
+    c.font = `600 ${Math.max(10, Math.min(13, fc.scale * 0.22))}px system-ui, sans-serif`;
+    c.textAlign = 'center';
+    c.textBaseline = 'middle';
+    for (const cv of g.clauses) {
+      const i = cv.point;
+      const up = p[3 * i + 1]! > 0.4 ? -1 : 1;
+      c.fillStyle = degrees[i]! > g.bound ? '#d62728' : '#17804a';
+      c.fillText(`C${cv.clause + 1}: ${degrees[i]}`, X(i), Y(i) + up * fc.scale * 0.28);
+    }
+    for (const w of g.wires) {
+      const first = g.cells[w.cells[0]!]!, last = g.cells[w.cells.at(-1)!]!;
+      c.fillStyle = CATEGORICAL[w.variable % CATEGORICAL.length]!;
+      c.fillText(b.formula.names[w.variable]!, (fc.sx(first.x) + fc.sx(last.x + 1)) / 2, fc.sy(first.y + 1.55));
+    }
+  }
+
+  return {
+    id: 'degree',
+    label: 'Max degree',
+    root,
+    activate() {
+      if (!built && !error) run();
+      canvas.redraw();
+    },
+    deactivate() {},
+    changed() {
+      // The gadget does not depend on the page's terrain.
+    },
+    hooks() {
+      const b = built;
+      const j = b ? judge(b) : null;
+      return {
+        error,
+        formula: input.value,
+        points: b ? Array.from(b.gadget.points) : [],
+        maxEdge: b?.gadget.maxEdge ?? null,
+        bound: b?.gadget.bound ?? null,
+        satisfiable: b ? b.satisfying !== null : null,
+        solved: b?.solution != null,
+        failure: b?.failure ?? null,
+        value: b?.solution?.value ?? null,
+        optimal: b?.solution?.optimal ?? null,
+        wrongAssignments: b ? b.certificate.wrong.length : null,
+        holds: j?.holds ?? null,
+      };
+    },
+  };
+}
+
+const MAX_VARIABLES = 6;
