@@ -4,6 +4,7 @@
 #include <emscripten/heap.h>
 #include <emscripten/val.h>
 
+#include "hodt/domain.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/cli.hpp"
 #include "hodt/error.hpp"
@@ -82,6 +83,8 @@ class TerrainHandle {
   // The domain: Infinity for none.
   double maxEdge() const { return t_.max_edge(); }
   void setMaxEdge(double max_edge) { guarded([&] { t_.set_max_edge(max_edge); }); }
+  // The warning of a domain that leaves almost nothing inside ("" for none).
+  std::string emptyDomainWarning() const { return empty_domain_warning(t_.structure().base).value_or(""); }
 
   // Live edits (input indices; see Terrain::add_point).
   uint32_t addPoint(double x, double y, double z) { return guarded([&] { return t_.add_point(x, y, z); }); }
@@ -401,6 +404,7 @@ EMSCRIPTEN_BINDINGS(hodt) {
       .function("quadEdges", &TerrainHandle::quadEdges)
       .function("quadOfTriangle", &TerrainHandle::quadOfTriangle)
       .function("maxEdge", &TerrainHandle::maxEdge)
+      .function("emptyDomainWarning", &TerrainHandle::emptyDomainWarning)
       .function("setMaxEdge", &TerrainHandle::setMaxEdge)
       .function("addPoint", &TerrainHandle::addPoint)
       .function("movePoint", &TerrainHandle::movePoint)

@@ -235,6 +235,8 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     times.build_ms = ms_since(started);
     if (!quiet)
       if (const auto w = degrees_warning(parsed.xyz)) r.err += "hodt: warning: " + name + ": " + *w + "\n";
+    if (!quiet)
+      if (const auto w = empty_domain_warning(terrain.structure().base)) r.err += "hodt: warning: " + name + ": " + *w + "\n";
     const uint32_t dropped = terrain.num_input_points() - terrain.structure().base.num_vertices();
     if (dropped > 0 && !quiet)
       r.err += "hodt: warning: " + name + ": dropped " + std::to_string(dropped) + " point" + (dropped == 1 ? "" : "s") +

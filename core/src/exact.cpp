@@ -111,13 +111,19 @@ BottleneckModel pair_model(const FirstOrder& fo, Objective o, const Progress& pr
   // Within a domain only pairs of inside triangles are measured; whether a
   // triangle is inside depends on its own quad's choice alone, so the model keeps
   // its terms and a pair with a triangle outside is worth 0 (the least value).
+  // A measure may answer any value up to the cut for a pair at most the cut
+  // (pair_measures.hpp), as 0 is: only a value above it needs the domain's word.
   const bool domain = has_domain(m);
-  auto measured = [&](const Tri& s, const Tri& t) { return !domain || (triangle_inside(m, s) && triangle_inside(m, t)); };
+  auto measured = [&](const Tri& s, const Tri& t, double cut, double v) {
+    return v <= cut || !domain || (triangle_inside(m, s) && triangle_inside(m, t)) ? v : 0;
+  };
   // With a cut: the search needs only values above the floor (a pruned model),
   // and most pairs are far below it (pair_measures.hpp).
-  auto ratio = [&](const Tri& s, const Tri& t, double cut) { return measured(s, t) ? pair_area_ratio(m, s, t, cut) : 0; };
-  auto angle = [&](const Tri& s, const Tri& t, double cut) { return measured(s, t) ? pair_normal_angle(m, s, t, cut) : 0; };
-  auto circle = [&](const Tri& s, const Tri& t, double cut) { return measured(s, t) ? pair_enclosing_circle(m, s, t, cut) : 0; };
+  auto ratio = [&](const Tri& s, const Tri& t, double cut) { return measured(s, t, cut, pair_area_ratio(m, s, t, cut)); };
+  auto angle = [&](const Tri& s, const Tri& t, double cut) { return measured(s, t, cut, pair_normal_angle(m, s, t, cut)); };
+  auto circle = [&](const Tri& s, const Tri& t, double cut) {
+    return measured(s, t, cut, pair_enclosing_circle(m, s, t, cut));
+  };
   // A star's filter sees its inside triangles only.
   std::vector<Tri> inside;
   auto inside_of = [&](const Tri* t, size_t n) {

@@ -175,3 +175,17 @@ TEST_CASE("--version and --help") {
   CHECK(std::string(objective_unit(Objective::MinmaxEdgeNormalAngle)).rfind("radians", 0) == 0);
   CHECK(std::string(objective_unit(Objective::MinmaxTriangleArea)) == "squared plane units");
 }
+
+TEST_CASE("a domain that leaves every triangle outside: a warning with the count and the spacing") {
+  FakeHost fake;
+  fake.files["p.txt"] = "0 0 0\n10 0 1\n10 10 0\n0 10 1\n4 6 9\n";
+  const CliResult r = run_cli({"solve", "p.txt", "--objective", "min-local-minima", "--max-edge", "2"}, fake.host());
+  CHECK(r.exit_code == 0);
+  CHECK(r.err.find("hodt: warning: p.txt: the domain (maxEdge 2) leaves 0 of 4 triangles inside to be measured") !=
+        std::string::npos);
+  CHECK(r.err.find("median Delaunay edge length") != std::string::npos);
+  const CliResult fine = run_cli({"solve", "p.txt", "--objective", "min-local-minima", "--max-edge", "20"}, fake.host());
+  CHECK(fine.err.find("warning") == std::string::npos);
+  const CliResult quiet = run_cli({"solve", "p.txt", "--objective", "min-local-minima", "--max-edge", "2", "--quiet"}, fake.host());
+  CHECK(quiet.err.empty());
+}

@@ -293,3 +293,27 @@ TEST_CASE("domain: rasters with holes at order 1: the first order paths equal br
   CHECK(tried > 100);
   CHECK(changed > 200);  // (the domain changed many optima)
 }
+
+TEST_CASE("domain: one that leaves almost every triangle outside says so, with the count and the spacing") {
+  // A 20 x 20 grid of unit cells: edges of 1 and 1.41, median 1.
+  FirstOrder fo = first_order(delaunay(validate_points(grid_points(20, 20, 3)).xyz));
+  CHECK(!empty_domain_warning(fo.base));  // (no domain)
+  fo.base.coords.set_max_edge(5);
+  CHECK(!empty_domain_warning(fo.base));  // (every triangle inside)
+  fo.base.coords.set_max_edge(0.5);       // every triangle outside
+  const std::optional<std::string> none = empty_domain_warning(fo.base);
+  REQUIRE(none);
+  CHECK(none->find("leaves 0 of " + std::to_string(fo.base.num_triangles()) + " triangles inside") != std::string::npos);
+  CHECK(none->find("median Delaunay edge length) is 1") != std::string::npos);
+  CHECK(none->find("maxEdge 0.5") != std::string::npos);
+  // A few triangles inside, at most 1%: still a warning; all inside: none.
+  std::vector<double> p = grid_points(20, 20, 3);
+  for (int k = 0; k < 3; ++k) p.insert(p.end(), {20 + 0.1 * k, 0.05 * k * k, 0});
+  FirstOrder few = first_order(delaunay(validate_points(p).xyz));
+  few.base.coords.set_max_edge(0.5);
+  const std::optional<std::string> w = empty_domain_warning(few.base);
+  REQUIRE(w);
+  CHECK(w->find("leaves 1 of") != std::string::npos);  // (the three added points' triangle)
+  fo.base.coords.set_max_edge(1.5);
+  CHECK(!empty_domain_warning(fo.base));
+}

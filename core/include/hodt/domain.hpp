@@ -4,6 +4,8 @@
 // measured. The triangulations themselves are unchanged.
 #pragma once
 #include <cstdint>
+#include <optional>
+#include <string>
 
 #include "hodt/first_order.hpp"
 #include "hodt/mesh.hpp"
@@ -29,6 +31,12 @@ std::vector<uint8_t> inside_triangles(const Mesh& m);
 // i.e. one of its four sides or two diagonals is longer than max_edge. Every other
 // quad has both triangles inside whatever it chooses. (All 0 without a domain.)
 std::vector<uint8_t> quads_touching_outside(const FirstOrder& fo);
+
+// A warning when the domain leaves almost nothing to measure: at most 1% of the
+// Delaunay triangulation's triangles inside (none at all included). It names
+// how many are inside and the points' typical spacing, the median Delaunay edge
+// length, to compare max_edge with. Nothing without a domain or with more inside.
+std::optional<std::string> empty_domain_warning(const Mesh& dt);
 
 // Checks a max_edge given by a caller: a positive number, or infinity for none
 // (InputError naming the value otherwise).

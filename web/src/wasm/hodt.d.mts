@@ -52,6 +52,7 @@ export interface RawTerrain {
   quadOfTriangle(): Int32Array;
   maxEdge(): number;
   setMaxEdge(maxEdge: number): void;
+  emptyDomainWarning(): string;
   addPoint(x: number, y: number, z: number): number;
   movePoint(i: number, x: number, y: number, z: number): void;
   removePoint(i: number): void;
