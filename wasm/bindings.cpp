@@ -337,7 +337,8 @@ val mesh_data(const TinData& tin) {
 
 // The CLI. read(path) returns the file's text or bytes, or an Error. io (optional):
 // {writeFile(path, bytes), writeMesh(path, format, mesh)} returning nothing or an
-// Error, progress(text), stderrIsTerminal.
+// Error, progress(text), notes(text) (the input's notes once it is accepted),
+// stderrIsTerminal.
 val runCli(val args, val read, val io) {
   std::vector<std::string> a;
   const unsigned n = args["length"].as<unsigned>();
@@ -368,6 +369,8 @@ val runCli(val args, val read, val io) {
     };
   if (have_io && is_function(io["progress"]))
     host.show_progress = [&](const std::string& text) { io.call<void>("progress", text); };
+  if (have_io && is_function(io["notes"]))
+    host.show_notes = [&](const std::string& text) { io.call<void>("notes", text); };
   host.stderr_is_terminal = have_io && io["stderrIsTerminal"].isTrue();
   const CliResult r = run_cli(a, host);
   val out = val::object();

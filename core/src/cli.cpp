@@ -241,6 +241,13 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     if (dropped > 0 && !quiet)
       r.err += "hodt: warning: " + name + ": dropped " + std::to_string(dropped) + " point" + (dropped == 1 ? "" : "s") +
                " at the same (x, y) as an earlier one (--dedupe first)\n";
+    // The input is accepted: its notes now, not after the solve (a refused input
+    // never reaches here, so its notes are never shown).
+    if (host.show_notes && !quiet) {
+      progress.clear_line();
+      host.show_notes(r.err);
+      r.err.clear();
+    }
 
     // The document printed, the one written to .json (with the triangles), and the
     // triangulation the mesh formats get.

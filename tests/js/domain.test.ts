@@ -114,6 +114,18 @@ describe('the raster default in the CLIs', () => {
     }
   });
 
+  it('prints the loaders\' and the core\'s notes once the input is read, before the solve', () => {
+    const r = npm(['solve', inlet('tif'), '--objective', 'min-local-minima', '--progress']);
+    expect(r.status).toBe(0);
+    const solving = r.stderr.indexOf('hodt: solving');
+    expect(solving).toBeGreaterThan(0);
+    expect(r.stderr.indexOf('are outside the domain')).toBeGreaterThan(r.stderr.indexOf('hodt: triangulating'));
+    expect(r.stderr.indexOf('are outside the domain')).toBeLessThan(solving);
+    expect(r.stderr.indexOf('coordinates in EPSG:32633, kept as read')).toBeGreaterThan(0);
+    expect(r.stderr.indexOf('coordinates in EPSG:32633, kept as read')).toBeLessThan(solving);
+    expect(r.stderr.match(/are outside the domain/g)?.length).toBe(1);
+  });
+
   it('readPoints gives an ASCII grid with NODATA its default domain, and other files none', () => {
     expect(hodt.readPoints(new Uint8Array(readFileSync(inlet('asc'))), 'inlet.asc').maxEdge).toBe(7.5);
     expect(hodt.readPoints('0 0 0\n1 0 0\n0 1 1\n').maxEdge).toBeUndefined();

@@ -119,10 +119,15 @@ const result = hodt.runCli(
     progress: (text) => {
       writeSync(2, text);
     },
+    // Once the core accepts the input: the loaders' notes, then its own (a
+    // refused input shows none).
+    notes: (text) => {
+      if (!args.includes('--quiet')) for (const n of notes.splice(0)) writeSync(2, n);
+      writeSync(2, text);
+    },
     stderrIsTerminal: process.stderr.isTTY === true,
   },
 );
-if (!args.includes('--quiet')) for (const n of notes) process.stderr.write(n);
 process.stdout.write(result.stdout);
 process.stderr.write(result.stderr);
 process.exitCode = result.exitCode;

@@ -108,6 +108,7 @@ export interface RawCliIo {
   writeFile?: (path: string, bytes: Uint8Array) => Error | undefined;
   writeMesh?: (path: string, format: 'obj' | 'ply' | 'geojson' | 'glb', mesh: RawMesh) => Error | undefined;
   progress?: (text: string) => void;
+  notes?: (text: string) => void;
   stderrIsTerminal?: boolean;
 }
 export interface HodtModule {
