@@ -15,10 +15,11 @@ std::vector<uint8_t> inside_triangles(const Mesh& m) {
   std::vector<uint8_t> inside(m.num_triangles(), 1);
   if (!has_domain(m)) return inside;
   // Each edge decided once, from its first halfedge, for both its triangles.
+  const double max_edge = m.coords.max_edge();
   for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
     const int32_t f = m.halfedges[e];
     if (f >= 0 && static_cast<uint32_t>(f) < e) continue;
-    if (!edge_inside(m, m.origin(e), m.target(e))) {
+    if (compare_length(m.point(m.origin(e)), m.point(m.target(e)), max_edge) > 0) {
       inside[e / 3] = 0;
       if (f >= 0) inside[static_cast<uint32_t>(f) / 3] = 0;
     }

@@ -219,6 +219,7 @@ void domain_length_terms(const FirstOrder& fo, bool constants, FactorGraph& g) {
   for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
     const int32_t f = m.halfedges[e];
     if (diagonal[e] || f > static_cast<int32_t>(e)) continue;
+    if (!constants && fo.quad_of_triangle[e / 3] < 0 && (f < 0 || fo.quad_of_triangle[static_cast<uint32_t>(f) / 3] < 0)) continue;
     const Side L = side_of(fo, e);
     const Side R = f >= 0 ? side_of(fo, static_cast<uint32_t>(f)) : Side{-1, {}};
     if (!constants && L.quad < 0 && R.quad < 0) continue;
