@@ -4,6 +4,7 @@
 #include <emscripten/heap.h>
 #include <emscripten/val.h>
 
+#include "hodt/domain.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/cli.hpp"
 #include "hodt/error.hpp"
@@ -82,6 +83,8 @@ class TerrainHandle {
   // The domain: Infinity for none.
   double maxEdge() const { return t_.max_edge(); }
   void setMaxEdge(double max_edge) { guarded([&] { t_.set_max_edge(max_edge); }); }
+  // The warning of a domain that leaves almost nothing inside ("" for none).
+  std::string emptyDomainWarning() const { return empty_domain_warning(t_.structure().base).value_or(""); }
 
   // Live edits (input indices; see Terrain::add_point).
   uint32_t addPoint(double x, double y, double z) { return guarded([&] { return t_.add_point(x, y, z); }); }
@@ -334,7 +337,8 @@ val mesh_data(const TinData& tin) {
 
 // The CLI. read(path) returns the file's text or bytes, or an Error. io (optional):
 // {writeFile(path, bytes), writeMesh(path, format, mesh)} returning nothing or an
-// Error, progress(text), stderrIsTerminal.
+// Error, progress(text), notes(text) (the input's notes once it is accepted),
+// stderrIsTerminal.
 val runCli(val args, val read, val io) {
   std::vector<std::string> a;
   const unsigned n = args["length"].as<unsigned>();
@@ -365,6 +369,8 @@ val runCli(val args, val read, val io) {
     };
   if (have_io && is_function(io["progress"]))
     host.show_progress = [&](const std::string& text) { io.call<void>("progress", text); };
+  if (have_io && is_function(io["notes"]))
+    host.show_notes = [&](const std::string& text) { io.call<void>("notes", text); };
   host.stderr_is_terminal = have_io && io["stderrIsTerminal"].isTrue();
   const CliResult r = run_cli(a, host);
   val out = val::object();
@@ -401,6 +407,7 @@ EMSCRIPTEN_BINDINGS(hodt) {
       .function("quadEdges", &TerrainHandle::quadEdges)
       .function("quadOfTriangle", &TerrainHandle::quadOfTriangle)
       .function("maxEdge", &TerrainHandle::maxEdge)
+      .function("emptyDomainWarning", &TerrainHandle::emptyDomainWarning)
       .function("setMaxEdge", &TerrainHandle::setMaxEdge)
       .function("addPoint", &TerrainHandle::addPoint)
       .function("movePoint", &TerrainHandle::movePoint)

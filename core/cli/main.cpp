@@ -74,6 +74,7 @@ int main(int argc, char** argv) {
   host.read = read_file;
   host.write = write_file;
   host.show_progress = [](const std::string& text) { std::cerr << text << std::flush; };
+  host.show_notes = host.show_progress;
   host.stderr_is_terminal = isatty(STDERR_FILENO) != 0;
   const hodt::CliResult r = hodt::run_cli(args, host);
   std::cout << r.out;

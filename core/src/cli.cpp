@@ -243,10 +243,19 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     times.build_ms = ms_since(started);
     if (!quiet)
       if (const auto w = degrees_warning(parsed.xyz)) r.err += "hodt: warning: " + name + ": " + *w + "\n";
+    if (!quiet)
+      if (const auto w = empty_domain_warning(terrain.structure().base)) r.err += "hodt: warning: " + name + ": " + *w + "\n";
     const uint32_t dropped = terrain.num_input_points() - terrain.structure().base.num_vertices();
     if (dropped > 0 && !quiet)
       r.err += "hodt: warning: " + name + ": dropped " + std::to_string(dropped) + " point" + (dropped == 1 ? "" : "s") +
                " at the same (x, y) as an earlier one (--dedupe first)\n";
+    // The input is accepted: its notes now, not after the solve (a refused input
+    // never reaches here, so its notes are never shown).
+    if (host.show_notes && !quiet) {
+      progress.clear_line();
+      host.show_notes(r.err);
+      r.err.clear();
+    }
 
     // The document printed, the one written to .json (with the triangles), and the
     // triangulation the mesh formats get.

@@ -14,8 +14,11 @@ const char* const kClearLine = "\r\x1b[K";  // carriage return, erase to the end
 CliProgress::CliProgress(Show show, bool terminal, bool forced)
     : show_(std::move(show)), terminal_(terminal), forced_(forced) {}
 
-CliProgress::~CliProgress() {
+CliProgress::~CliProgress() { clear_line(); }
+
+void CliProgress::clear_line() {
   if (drawn_) show_(kClearLine);
+  drawn_ = false;
 }
 
 void CliProgress::draw(const std::string& line) {

@@ -1,24 +1,57 @@
 #include "hodt/domain.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "hodt/error.hpp"
 #include "hodt/format.hpp"
+#include "hodt/measures.hpp"
 #include "hodt/predicates.hpp"
 
 namespace hodt {
 
-bool edge_inside(const Mesh& m, uint32_t u, uint32_t v) {
-  return !has_domain(m) || compare_length(m.point(u), m.point(v), m.coords.max_edge()) <= 0;
-}
-
 std::vector<uint8_t> inside_triangles(const Mesh& m) {
   std::vector<uint8_t> inside(m.num_triangles(), 1);
   if (!has_domain(m)) return inside;
-  for (uint32_t t = 0; t < m.num_triangles(); ++t)
-    inside[t] = triangle_inside(m, {m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]});
+  // Each edge decided once, from its first halfedge, for both its triangles.
+  const double max_edge = m.coords.max_edge();
+  for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
+    const int32_t f = m.halfedges[e];
+    if (f >= 0 && static_cast<uint32_t>(f) < e) continue;
+    if (compare_length(m.point(m.origin(e)), m.point(m.target(e)), max_edge) > 0) {
+      inside[e / 3] = 0;
+      if (f >= 0) inside[static_cast<uint32_t>(f) / 3] = 0;
+    }
+  }
   return inside;
+}
+
+std::vector<uint8_t> quads_touching_outside(const FirstOrder& fo) {
+  std::vector<uint8_t> touching(fo.num_quads(), 0);
+  if (!has_domain(fo.base)) return touching;
+  const Mesh& m = fo.base;
+  for (uint32_t q = 0; q < fo.num_quads(); ++q) {
+    const Quad& k = fo.quads[q];
+    touching[q] = !edge_inside(m, k.a, k.b) || !edge_inside(m, k.c, k.d) || !edge_inside(m, k.a, k.c) ||
+                  !edge_inside(m, k.c, k.b) || !edge_inside(m, k.b, k.d) || !edge_inside(m, k.d, k.a);
+  }
+  return touching;
+}
+
+std::optional<std::string> empty_domain_warning(const Mesh& dt) {
+  if (!has_domain(dt) || dt.num_triangles() == 0) return std::nullopt;
+  const std::vector<uint8_t> inside = inside_triangles(dt);
+  const size_t in = static_cast<size_t>(std::count(inside.begin(), inside.end(), 1)), all = inside.size();
+  if (100 * in > all) return std::nullopt;
+  std::vector<double> lengths;  // each edge once
+  for (uint32_t e = 0; e < dt.halfedges.size(); ++e)
+    if (dt.halfedges[e] < static_cast<int32_t>(e)) lengths.push_back(edge_length(dt.point(dt.origin(e)), dt.point(dt.target(e))));
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  const double median = lengths[lengths.size() / 2];
+  return "the domain (maxEdge " + format_number(dt.coords.max_edge()) + ") leaves " + std::to_string(in) + " of " +
+         std::to_string(all) + " triangles inside to be measured; the points' typical spacing (median Delaunay edge length) is " +
+         format_number(median) + ": a larger maxEdge, or none, measures the terrain";
 }
 
 void check_max_edge(double max_edge) {

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "hodt/bottleneck.hpp"
+#include "hodt/domain.hpp"
 #include "hodt/format.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/pair_measures.hpp"
@@ -40,22 +41,23 @@ struct StarChoices {
 // work(d): steps to compute one entry for d neighbours. Terms over the budget are
 // refused or left out (g.relaxed counts them) before any table is allocated.
 template <class Work, class Value>
-void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, const DpLimits& limits, OverBudget over,
-                  Work work, Value value) {
+void vertex_terms(const FirstOrder& fo, bool interior_only, bool constants, FactorGraph& g, const DpLimits& limits,
+                  OverBudget over, Work work, Value value) {
   const Mesh& m = fo.base;
   const VertexIncidence vi = vertex_incidence(fo);
   std::vector<uint8_t> on_hull(m.num_vertices(), 0);
   for (uint32_t v : m.hull) on_hull[v] = 1;
   // Fixed neighbours: the ends of non-diagonal edges (each seen from both ends, or
   // once on the hull: then the apex side gives the other).
-  const Stars st = build_stars(m, limits.progress);
-  std::vector<uint32_t> fixed;
+  const std::vector<int32_t> out = vertex_halfedges(m);
+  std::vector<uint32_t> fixed, around;
   auto fixed_neighbours = [&](uint32_t v) {
     fixed.clear();
+    around.clear();
+    if (out[v] >= 0) walk_star(m, static_cast<uint32_t>(out[v]), [&](uint32_t w, uint32_t) { around.push_back(w); });
     const uint32_t* qs = vi.quads_begin(v);
     const uint32_t nq = static_cast<uint32_t>(vi.quads_end(v) - qs);
-    for (uint32_t k = st.offset[v]; k < st.offset[v + 1]; ++k) {
-      const uint32_t w = st.neighbor[k];
+    for (uint32_t w : around) {
       bool is_diagonal = false;  // v w is the base diagonal of one of v's quads
       for (uint32_t i = 0; i < nq; ++i) {
         const Quad& q = fo.quads[qs[i]];
@@ -65,12 +67,28 @@ void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, cons
     }
   };
   const uint32_t n = m.num_vertices();
+  // Within a domain an interior vertex counts only with all its triangles inside
+  // (docs/objectives.md, "The domain"): one beside a fixed triangle outside never
+  // counts and has no term; per quad, the choices that put a triangle at the
+  // vertex outside zero its term.
+  const bool domain = has_domain(m);
+  if (domain && !interior_only) throw std::logic_error("vertex terms within a domain: interior vertex sums only");
+  auto left_out = [&](uint32_t v) {  // (on the hull, or beside a fixed triangle outside)
+    if (on_hull[v] || !domain) return on_hull[v] != 0;
+    for (uint32_t k = vi.fixed_offset[v]; k < vi.fixed_offset[v + 1]; ++k)
+      if (!triangle_inside(m, base_triangle(m, vi.fixed[k]))) return true;
+    return false;
+  };
   std::vector<TermSize> sizes(n, TermSize{0, 0});
   WorkCounter progress;
   for (uint32_t v = 0; v < n; ++v) {
     if (progress.tick(32)) report(limits.progress, 0, n);
-    if (interior_only && on_hull[v]) continue;
     const uint32_t nq = static_cast<uint32_t>(vi.quads_end(v) - vi.quads_begin(v));
+    if (!constants && nq == 0) continue;
+    if (interior_only && left_out(v)) {
+      on_hull[v] = 1;
+      continue;
+    }
     if (nq == 0) continue;
     fixed_neighbours(v);
     sizes[v] = TermSize{nq, work(static_cast<uint32_t>(fixed.size()) + nq)};
@@ -83,7 +101,7 @@ void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, cons
   StarChoices star;
   for (uint32_t v = 0; v < n; ++v) {
     if (progress.tick(32)) report(limits.progress, v, n);
-    if (interior_only && on_hull[v]) continue;
+    if ((interior_only && on_hull[v]) || (!constants && vi.quads_end(v) == vi.quads_begin(v))) continue;
     if (!keep[v]) {
       ++g.relaxed;
       continue;
@@ -100,14 +118,26 @@ void vertex_terms(const FirstOrder& fo, bool interior_only, FactorGraph& g, cons
     star.optional.clear();
     for (uint32_t w : fixed) star.fixed.push_back(m.point(w));
     uint32_t when_flipped = 0;  // bit i: quad i's corner comes with its flipped diagonal
+    uint32_t outside_when[2] = {0, 0};  // bit i: quad i's choice puts a triangle at v outside
     for (uint32_t i = 0; i < nq; ++i) {
       const Quad& q = fo.quads[qs[i]];
       const bool on_base = v == q.a || v == q.b;
       star.optional.push_back(m.point(on_base ? (v == q.a ? q.b : q.a) : (v == q.c ? q.d : q.c)));
       if (!on_base) when_flipped |= 1u << i;
+      for (int x = 0; x < 2 && domain; ++x) {
+        Tri t[2];
+        const uint32_t count = quad_triangles_at(fo, qs[i], v, x, t);
+        for (uint32_t j = 0; j < count; ++j)
+          if (!triangle_inside(m, t[j])) outside_when[x] |= 1u << i;
+      }
     }
     for (size_t idx = 0; idx < f.table.size(); ++idx) {
       star.present = ~(static_cast<uint32_t>(idx) ^ when_flipped) & ((nq < 32 ? 1u << nq : 0u) - 1);
+      const uint32_t choice = static_cast<uint32_t>(idx);
+      if ((~choice & outside_when[0]) | (choice & outside_when[1])) {
+        f.table[idx] = 0;
+        continue;
+      }
       f.table[idx] = value(star);
       if (progress.tick(sizes[v].work_per_entry + 1)) report(limits.progress, v, n);
     }
@@ -123,12 +153,26 @@ void add_factor(FactorGraph& g, std::vector<uint32_t> scope, std::vector<double>
   g.factors.push_back(Factor{std::move(scope), std::move(table)});
 }
 
+// A sum term over the quads beside an edge: value(x, y) for choice x on the left
+// (side L) and y on the right (R); a constant if both sides are fixed.
+template <class Value>
+void add_edge_factor(FactorGraph& g, const Side& L, const Side& R, Value value) {
+  if (L.quad < 0 && R.quad < 0) g.constant += value(0, 0);
+  else if (R.quad < 0) add_factor(g, {static_cast<uint32_t>(L.quad)}, {value(0, 0), value(1, 0)});
+  else if (L.quad < 0) add_factor(g, {static_cast<uint32_t>(R.quad)}, {value(0, 0), value(0, 1)});
+  else
+    add_factor(g, {static_cast<uint32_t>(L.quad), static_cast<uint32_t>(R.quad)},
+               {value(0, 0), value(1, 0), value(0, 1), value(1, 1)});
+}
+
 // Convex edges: a term per edge of the skeleton and per quad diagonal.
 void convex_edge_terms(const FirstOrder& fo, FactorGraph& g, const Progress& progress) {
   WorkCounter work;  // a unit: about one predicate
   const double total = static_cast<double>(fo.num_quads() + fo.base.halfedges.size());
   const Mesh& m = fo.base;
+  // Within a domain an interior edge counts with an inside triangle on each side.
   auto convex = [&](const Tri& left, uint32_t x) {  // edge left[0] -> left[1], x across it
+    if (has_domain(m) && (!triangle_inside(m, left) || !triangle_inside(m, {left[1], left[0], x}))) return 0.0;
     return edge_shape(m.point(left[0]), m.point(left[1]), m.point(left[2]), m.point(x)) == kConvexEdge ? 1.0 : 0.0;
   };
   auto across = [](const Tri& t, uint32_t u, uint32_t v) {  // the vertex of t other than u, v
@@ -155,12 +199,33 @@ void convex_edge_terms(const FirstOrder& fo, FactorGraph& g, const Progress& pro
       const Tri lu = l[0] == u ? l : l[1] == u ? Tri{l[1], l[2], l[0]} : Tri{l[2], l[0], l[1]};
       return convex(lu, across(R.tri[y], u, v));
     };
-    if (L.quad < 0 && R.quad < 0) g.constant += value(0, 0);
-    else if (R.quad < 0) add_factor(g, {static_cast<uint32_t>(L.quad)}, {value(0, 0), value(1, 0)});
-    else if (L.quad < 0) add_factor(g, {static_cast<uint32_t>(R.quad)}, {value(0, 0), value(0, 1)});
-    else
-      add_factor(g, {static_cast<uint32_t>(L.quad), static_cast<uint32_t>(R.quad)},
-                 {value(0, 0), value(1, 0), value(0, 1), value(1, 1)});
+    add_edge_factor(g, L, R, value);
+  }
+}
+
+// Total edge length within a domain: an edge counts with an inside triangle on
+// either side, so an edge of a quad's boundary depends on the quads on both sides.
+// (The constant is a plain sum: the solvers report the value they evaluate on
+// the triangulation, never this one.)
+void domain_length_terms(const FirstOrder& fo, bool constants, FactorGraph& g) {
+  const Mesh& m = fo.base;
+  auto in = [&](const Tri& t) { return triangle_inside(m, t); };
+  for (uint32_t q = 0; q < fo.num_quads(); ++q) {
+    const Quad& k = fo.quads[q];
+    const bool base = in({k.a, k.b, k.c}) || in({k.b, k.a, k.d}), flipped = in({k.d, k.c, k.a}) || in({k.c, k.d, k.b});
+    add_factor(g, {q}, {base ? edge_length(m.point(k.a), m.point(k.b)) : 0, flipped ? edge_length(m.point(k.c), m.point(k.d)) : 0});
+  }
+  const std::vector<uint8_t> diagonal = fo.diagonal_mask();
+  for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
+    const int32_t f = m.halfedges[e];
+    if (diagonal[e] || f > static_cast<int32_t>(e)) continue;
+    if (!constants && fo.quad_of_triangle[e / 3] < 0 && (f < 0 || fo.quad_of_triangle[static_cast<uint32_t>(f) / 3] < 0)) continue;
+    const Side L = side_of(fo, e);
+    const Side R = f >= 0 ? side_of(fo, static_cast<uint32_t>(f)) : Side{-1, {}};
+    if (!constants && L.quad < 0 && R.quad < 0) continue;
+    const double len = edge_length(m.point(m.origin(e)), m.point(m.target(e)));
+    auto value = [&](int x, int y) { return in(L.tri[x]) || (f >= 0 && in(R.tri[y])) ? len : 0.0; };
+    add_edge_factor(g, L, R, value);
   }
 }
 
@@ -174,7 +239,7 @@ void pair_terms(const BottleneckModel& bm, FactorGraph& g) {
 
 }  // namespace
 
-FactorGraph factor_model(const FirstOrder& fo, Objective o, const DpLimits& limits, OverBudget over) {
+FactorGraph factor_model(const FirstOrder& fo, Objective o, const DpLimits& limits, OverBudget over, bool constants) {
   const Mesh& m = fo.base;
   FactorGraph g;
   g.num_vars = fo.num_quads();
@@ -200,30 +265,34 @@ FactorGraph factor_model(const FirstOrder& fo, Objective o, const DpLimits& limi
   auto circle = [&](const Tri& s, const Tri& t) { return pair_enclosing_circle(m, s, t); };
   switch (o) {
     case Objective::MaxConvexVertices:
-      vertex_terms(fo, true, g, limits, over, triples,
+      vertex_terms(fo, true, constants, g, limits, over, triples,
                    [&](const StarChoices& star) { return count(class_of(star) == kConvex); });
       break;
     case Objective::MinMixedVertices:
-      vertex_terms(fo, true, g, limits, over, triples,
+      vertex_terms(fo, true, constants, g, limits, over, triples,
                    [&](const StarChoices& star) { return count(class_of(star) == kMixed); });
       break;
     case Objective::MinLocalMinima:
-      vertex_terms(fo, true, g, limits, over, scan,
+      vertex_terms(fo, true, constants, g, limits, over, scan,
                    [&](const StarChoices& star) { return count(extremum_of(star) == kLocalMinimum); });
       break;
     case Objective::MinLocalExtrema:
-      vertex_terms(fo, true, g, limits, over, scan,
+      vertex_terms(fo, true, constants, g, limits, over, scan,
                    [&](const StarChoices& star) { return count(extremum_of(star) != kNotExtremum); });
       break;
     case Objective::MinmaxDegree:
       g.combine = Combine::Max;
-      vertex_terms(fo, false, g, limits, over, scan,
+      vertex_terms(fo, false, constants, g, limits, over, scan,
                    [](const StarChoices& star) { return static_cast<double>(star.fixed.size() + __builtin_popcount(star.present)); });
       break;
     case Objective::MaxConvexEdges:
       convex_edge_terms(fo, g, limits.progress);
       break;
     case Objective::MinTotalEdgeLength: {
+      if (has_domain(m)) {
+        domain_length_terms(fo, constants, g);
+        break;
+      }
       // Fixed edges as one constant, each quad its diagonal's length.
       std::vector<double> fixed;
       const std::vector<uint8_t> diagonal = fo.diagonal_mask();

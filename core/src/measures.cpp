@@ -181,19 +181,11 @@ Stars build_stars(const Mesh& m, const Progress& progress) {
     s.offset[v] = static_cast<uint32_t>(s.neighbor.size());
     s.tri_offset[v] = static_cast<uint32_t>(s.triangle.size());
     if (start[v] < 0) continue;
-    uint32_t e = static_cast<uint32_t>(start[v]);
-    s.on_hull[v] = m.halfedges[e] < 0;
-    for (;;) {
-      s.neighbor.push_back(m.target(e));
-      s.triangle.push_back(e / 3);
-      const int32_t t = m.halfedges[prev_halfedge(e)];
-      if (t < 0) {
-        s.neighbor.push_back(m.apex(e));
-        break;
-      }
-      e = static_cast<uint32_t>(t);
-      if (e == static_cast<uint32_t>(start[v])) break;
-    }
+    s.on_hull[v] = m.halfedges[static_cast<uint32_t>(start[v])] < 0;
+    walk_star(m, static_cast<uint32_t>(start[v]), [&](uint32_t w, uint32_t t) {
+      s.neighbor.push_back(w);
+      if (t != UINT32_MAX) s.triangle.push_back(t);
+    });
   }
   s.offset[n] = static_cast<uint32_t>(s.neighbor.size());
   s.tri_offset[n] = static_cast<uint32_t>(s.triangle.size());

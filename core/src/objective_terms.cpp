@@ -169,9 +169,18 @@ uint32_t neighbor_classes(const ObjectiveTerms& d, const Mesh& m, uint32_t v, co
   return mask;
 }
 
+namespace {
+const std::array<ObjectiveTerms, kNumObjectives>& plain_table() {
+  static const std::array<ObjectiveTerms, kNumObjectives> table = make_table();
+  return table;
+}
+// The plain terms, read by evaluate_terms where it has checked the domain itself.
+const ObjectiveTerms& objective_terms_without_domain(Objective o) { return plain_table()[static_cast<size_t>(o)]; }
+}  // namespace
+
 const ObjectiveTerms& objective_terms(Objective o, const Mesh& m) {
-  static const std::array<ObjectiveTerms, kNumObjectives> table = make_table(), domain_table = with_domain(make_table());
-  return (has_domain(m) ? domain_table : table)[static_cast<size_t>(o)];
+  static const std::array<ObjectiveTerms, kNumObjectives> domain_table = with_domain(make_table());
+  return (has_domain(m) ? domain_table : plain_table())[static_cast<size_t>(o)];
 }
 
 namespace {
@@ -243,6 +252,12 @@ double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
     if (d.combine == TermCombine::Sum) terms.push_back(t);
     else max = std::max(max, t);
   };
+  // Within a domain each triangle is decided inside once; a term whose triangles
+  // are all inside reads as without one, and a vertex, edge or triangle the
+  // definitions leave out adds nothing (the degree and vertex pairs read their
+  // stars' inside triangles in vertex_term).
+  const std::vector<uint8_t> inside = d.domain ? inside_triangles(m) : std::vector<uint8_t>{};
+  const ObjectiveTerms& plain = d.domain ? objective_terms_without_domain(o) : d;
   if (vertex_site(d.site)) {
     const Stars st = build_stars(m, progress);
     std::vector<Tri> tris;
@@ -250,6 +265,12 @@ double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
       const double deg = st.degree(v);
       step(v, m.num_vertices(), 16 + deg * deg * (d.site == TermSite::VertexPair ? 4 : deg));
       if (interior_only(d.site) && st.on_hull[v]) continue;
+      if (d.domain && d.site == TermSite::InteriorVertex) {  // counted only when its whole star is inside
+        bool all = true;
+        for (uint32_t i = st.tri_offset[v]; i < st.tri_offset[v + 1] && all; ++i) all = inside[st.triangle[i]] != 0;
+        if (all) add(plain.vertex(m, Star(v, st.neighbor.data() + st.offset[v], st.degree(v), nullptr, 0)));
+        continue;
+      }
       tris.clear();  // (only pair terms and domains read the triangles)
       if (reads_star_triangles(d))
         for (uint32_t i = st.tri_offset[v]; i < st.tri_offset[v + 1]; ++i) tris.push_back(base_triangle(m, st.triangle[i]));
@@ -261,10 +282,17 @@ double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
       step(e, static_cast<double>(m.halfedges.size()), 32);
       const int32_t f = m.halfedges[e];
       if (f < 0 ? interior_only(d.site) : f < static_cast<int32_t>(e)) continue;
-      add(edge_term(d, m, m.origin(e), m.target(e), m.apex(e), f < 0 ? kNoApex : m.apex(static_cast<uint32_t>(f)), max));
+      if (d.domain) {  // an interior edge with an inside triangle on each side, a length with one on either
+        const bool left = inside[e / 3] != 0, right = f >= 0 && inside[static_cast<uint32_t>(f) / 3] != 0;
+        if (d.site == TermSite::Edge ? !left && !right : !left || !right) continue;
+      }
+      add(edge_term(plain, m, m.origin(e), m.target(e), m.apex(e), f < 0 ? kNoApex : m.apex(static_cast<uint32_t>(f)), max));
     }
   } else {
-    for (uint32_t t = 0; t < m.num_triangles(); ++t) step(t, m.num_triangles(), 16), add(triangle_term(d, m, base_triangle(m, t)));
+    for (uint32_t t = 0; t < m.num_triangles(); ++t) {
+      step(t, m.num_triangles(), 16);
+      if (!d.domain || inside[t]) add(triangle_term(plain, m, base_triangle(m, t)));
+    }
   }
   return d.combine == TermCombine::Sum ? order_free_sum(std::move(terms), progress) : max;
 }

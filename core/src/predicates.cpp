@@ -115,13 +115,7 @@ int orient3d(const double* a, const double* b, const double* c, const double* d)
   return sign(CGAL::orientation(p3(a), p3(b), p3(c), p3(d)));
 }
 
-int compare_length(const double* a, const double* b, double length) {
-  if (length == INFINITY) return -1;  // (coordinates are finite)
-  const double dx = a[0] - b[0], dy = a[1] - b[1];
-  const double d2 = dx * dx + dy * dy, l2 = length * length;
-  // d2 is within 4 eps of |ab|^2 (rounded differences, squares, sum), l2 within
-  // one eps of length^2.
-  if (std::abs(d2 - l2) > 8 * kEps * (d2 + l2) && d2 + l2 > kTiny && d2 + l2 < INFINITY) return sign_of(d2 - l2);
+int detail::compare_length_exact(const double* a, const double* b, double length) {
   using F = CGAL::MP_Float;  // exact sums and products of doubles
   const F x = F(a[0]) - F(b[0]), y = F(a[1]) - F(b[1]), l = F(length);
   return sign(CGAL::compare(x * x + y * y, l * l));

@@ -116,20 +116,27 @@ Solution dispatch(const FirstOrder& fo, Objective objective, const SolveOptions&
 // every measure is the one without a domain, and the first order paths apply.
 bool domain_reachable(const FirstOrder& fo) {
   if (!has_domain(fo.base)) return false;
-  const std::vector<uint8_t> inside = inside_triangles(fo.base);
-  if (std::find(inside.begin(), inside.end(), 0) != inside.end()) return true;
-  for (uint32_t q = 0; q < fo.num_quads(); ++q) {
-    uint32_t t[6];
-    fo.triangles_of(q, true, t);
-    if (!triangle_inside(fo.base, {t[0], t[1], t[2]}) || !triangle_inside(fo.base, {t[3], t[4], t[5]})) return true;
-  }
+  const Mesh& m = fo.base;
+  for (uint32_t t = 0; t < m.num_triangles(); ++t)  // (the first one outside answers)
+    if (!triangle_inside(m, base_triangle(m, t))) return true;
+  for (uint32_t q = 0; q < fo.num_quads(); ++q)
+    if (!edge_inside(m, fo.quads[q].c, fo.quads[q].d)) return true;  // (its sides are the base's)
   return false;
 }
 
-// Within a domain the first order rules (Theorem 1, the extrema and 2-SAT
-// models, Baker) do not hold: the region engine, which reads the objective's
-// terms as the domain measures them, solves order 1 too (its regions are the
-// quads), and its triangulation becomes a choice of diagonals.
+// Within a domain the exact first order paths read what the domain measures: a
+// triangle's being inside depends on its own quad's choice only, so the 2-SAT
+// models keep their terms, the extrema keep their claim structure, and the rules
+// for convex vertices and total edge length leave to the factor graph only the
+// quads that touch a triangle outside (exact.cpp, extrema.cpp, factor_models.cpp).
+// The degree's feasibility tests count each vertex's neighbours over inside
+// triangles (min_max_degree.cpp).
+bool has_exact_in_domain(Method method) { return method == Method::Exact || method == Method::Auto; }
+
+// Elsewhere (Baker's scheme, and what is over the factor graph's
+// budget) the region engine, which reads the objective's terms as the domain
+// measures them, solves order 1 too (its regions are the quads), and its
+// triangulation becomes a choice of diagonals.
 Solution solve_in_domain(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
   if (!fo.is_delaunay) throw InputError("a domain (maxEdge) needs a terrain built from points, not a given triangulation");
   Solution s = k_order_solution(fo, objective, 1, options);
@@ -150,9 +157,21 @@ Solution solve(const FirstOrder& fo, Objective objective, const SolveOptions& op
   SolveOptions run = options;
   run.progress = paced(options.progress, options.progress_interval_ms);
   if (run.order > 1) return k_order_solution(fo, objective, run.order, run);
-  if (run.method != Method::BruteForce && domain_reachable(fo)) return solve_in_domain(fo, objective, run);
+  const bool domain = run.method != Method::BruteForce && domain_reachable(fo);
+  if (domain && (!fo.is_delaunay || !has_exact_in_domain(run.method))) return solve_in_domain(fo, objective, run);
   const auto t0 = std::chrono::steady_clock::now();
-  Solution s = dispatch(fo, objective, run);
+  Solution s;
+  if (domain) {
+    try {
+      SolveOptions exact = run;
+      exact.method = Method::Exact;
+      s = dispatch(fo, objective, exact);
+    } catch (const LimitError&) {
+      return solve_in_domain(fo, objective, run);
+    }
+  } else {
+    s = dispatch(fo, objective, run);
+  }
   if (!s.critical && is_pair_objective(objective))
     s.critical = critical_pair(objective, triangulate(fo, s.choice), run.progress);
   s.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

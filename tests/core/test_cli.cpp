@@ -21,6 +21,7 @@ struct FakeHost {
   std::map<std::string, std::pair<OutputFormat, TinData>> meshes;
   std::string progress;
   bool terminal = false;
+  bool notes = false;  // notes shown at once, into progress (marked), as the CLIs do
 
   CliHost host(bool with_mesh_writer = true) {
     CliHost h;
@@ -43,6 +44,7 @@ struct FakeHost {
         return true;
       };
     h.show_progress = [this](const std::string& text) { progress += text; };
+    if (notes) h.show_notes = [this](const std::string& text) { progress += "[notes]" + text; };
     h.stderr_is_terminal = terminal;
     return h;
   }
@@ -224,4 +226,41 @@ TEST_CASE("text that is not what it seems: the CLI reads decimal commas, refuses
     return std::nullopt;
   };
   CHECK(run_cli({"stats", "x.las"}, loader).err == "hodt: x.las: LAS: system identifier 'a\\r\\nb\\x1b'\n");
+}
+
+TEST_CASE("a domain that leaves every triangle outside: a warning with the count and the spacing") {
+  FakeHost fake;
+  fake.files["p.txt"] = "0 0 0\n10 0 1\n10 10 0\n0 10 1\n4 6 9\n";
+  const CliResult r = run_cli({"solve", "p.txt", "--objective", "min-local-minima", "--max-edge", "2"}, fake.host());
+  CHECK(r.exit_code == 0);
+  CHECK(r.err.find("hodt: warning: p.txt: the domain (maxEdge 2) leaves 0 of 4 triangles inside to be measured") !=
+        std::string::npos);
+  CHECK(r.err.find("median Delaunay edge length") != std::string::npos);
+  const CliResult fine = run_cli({"solve", "p.txt", "--objective", "min-local-minima", "--max-edge", "20"}, fake.host());
+  CHECK(fine.err.find("warning") == std::string::npos);
+  const CliResult quiet = run_cli({"solve", "p.txt", "--objective", "min-local-minima", "--max-edge", "2", "--quiet"}, fake.host());
+  CHECK(quiet.err.empty());
+}
+
+TEST_CASE("the input's notes: shown once it is accepted, before the solve; never for a refused input") {
+  FakeHost fake;
+  fake.notes = true;
+  fake.files["p.txt"] = kPoints;  // a duplicate (x, y): refused without --dedupe
+  fake.files["p.prj"] = "GEOGCS[\"WGS 84\",AUTHORITY[\"EPSG\",\"4326\"]]";
+  const std::vector<std::string> args = {"solve", "p.txt", "--objective", "min-local-minima", "--progress"};
+  const CliResult refused = run_cli(args, fake.host());
+  CHECK(refused.exit_code == 2);
+  CHECK(fake.progress.find("[notes]") == std::string::npos);
+  CHECK(refused.err.find("EPSG:4326") == std::string::npos);  // (the .prj's note: the input was refused)
+  fake.progress.clear();
+  std::vector<std::string> deduped = args;
+  deduped.insert(deduped.end(), {"--dedupe", "first"});
+  const CliResult r = run_cli(deduped, fake.host());
+  CHECK(r.exit_code == 0);
+  const size_t notes = fake.progress.find("[notes]"), solving = fake.progress.find("hodt: solving");
+  REQUIRE(notes != std::string::npos);
+  CHECK(notes < solving);
+  CHECK(fake.progress.find("dropped 1 point", notes) < solving);
+  CHECK(fake.progress.find("EPSG:4326", notes) < solving);
+  CHECK(r.err.empty());  // (all shown already)
 }

@@ -235,3 +235,85 @@ TEST_CASE("domain: a terrain keeps its max_edge through edits and rejects bad le
   t.set_max_edge(INFINITY);
   CHECK(t.delaunay_value(Objective::MinTotalEdgeLength) > before);
 }
+
+namespace {
+
+// A small raster with NODATA: a w x h grid (exact, or jittered), heights of few
+// levels (ties) or smooth, with a few cells dropped, and max_edge between 1.2 and
+// 2.5 cells, so that the holes' bridges and some diagonals are outside.
+FirstOrder raster_with_holes(uint64_t seed) {
+  Rng r(seed);
+  const int w = 4 + static_cast<int>(r.below(2)), h = 4 + static_cast<int>(r.below(2));
+  const bool jitter = r.below(2) != 0, ties = r.below(2) != 0;
+  std::vector<double> p;
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      if (r.below(6) == 0 && i > 0 && j > 0 && i + 1 < w && j + 1 < h) continue;  // a NODATA cell
+      const double dx = jitter ? (static_cast<double>(r.below(1000)) / 1000 - 0.5) * 0.3 : 0;
+      const double dy = jitter ? (static_cast<double>(r.below(1000)) / 1000 - 0.5) * 0.3 : 0;
+      p.insert(p.end(), {i + dx, j + dy, ties ? static_cast<double>(r.below(3)) : dem_height(i / 3.0, j / 3.0, seed)});
+    }
+  FirstOrder fo = first_order(delaunay(validate_points(p).xyz));
+  fo.base.coords.set_max_edge(1.2 + static_cast<double>(r.below(1000)) / 1000 * 1.3);
+  return fo;
+}
+
+}  // namespace
+
+TEST_CASE("domain: rasters with holes at order 1: the first order paths equal brute force") {
+  // Every objective keeps its first order algorithm within a
+  // domain (2-SAT, the claim structure of the extrema, the rules with the factor
+  // graph on the quads touching a triangle outside), not the region engine.
+  uint64_t tried = 0, changed = 0;
+  for (uint64_t seed = 1; seed <= 150; ++seed) {
+    const FirstOrder fo = raster_with_holes(seed);
+    if (fo.num_quads() > 20) continue;
+    ++tried;
+    for (const auto& oi : objectives()) {
+      CAPTURE(seed);
+      CAPTURE(oi.id);
+      SolveOptions bf;
+      bf.method = Method::BruteForce;
+      const Solution want = solve(fo, oi.objective, bf);
+      for (Method method : {Method::Exact, Method::Auto}) {
+        SolveOptions run;
+        run.method = method;
+        const Solution got = solve(fo, oi.objective, run);
+        CHECK(got.optimal);
+        CHECK(got.value == want.value);
+        CHECK(got.value == evaluate(oi.objective, triangulate(fo, got.choice)));
+        CHECK(got.details.find("regions") == std::string::npos);
+        if (got.critical) CHECK(got.critical->value == got.value);
+      }
+      FirstOrder plain = fo;
+      plain.base.coords.set_max_edge(INFINITY);
+      changed += want.value != solve(plain, oi.objective, bf).value;
+    }
+  }
+  CHECK(tried > 100);
+  CHECK(changed > 200);  // (the domain changed many optima)
+}
+
+TEST_CASE("domain: one that leaves almost every triangle outside says so, with the count and the spacing") {
+  // A 20 x 20 grid of unit cells: edges of 1 and 1.41, median 1.
+  FirstOrder fo = first_order(delaunay(validate_points(grid_points(20, 20, 3)).xyz));
+  CHECK(!empty_domain_warning(fo.base));  // (no domain)
+  fo.base.coords.set_max_edge(5);
+  CHECK(!empty_domain_warning(fo.base));  // (every triangle inside)
+  fo.base.coords.set_max_edge(0.5);       // every triangle outside
+  const std::optional<std::string> none = empty_domain_warning(fo.base);
+  REQUIRE(none);
+  CHECK(none->find("leaves 0 of " + std::to_string(fo.base.num_triangles()) + " triangles inside") != std::string::npos);
+  CHECK(none->find("median Delaunay edge length) is 1") != std::string::npos);
+  CHECK(none->find("maxEdge 0.5") != std::string::npos);
+  // A few triangles inside, at most 1%: still a warning; all inside: none.
+  std::vector<double> p = grid_points(20, 20, 3);
+  for (int k = 0; k < 3; ++k) p.insert(p.end(), {20 + 0.1 * k, 0.05 * k * k, 0});
+  FirstOrder few = first_order(delaunay(validate_points(p).xyz));
+  few.base.coords.set_max_edge(0.5);
+  const std::optional<std::string> w = empty_domain_warning(few.base);
+  REQUIRE(w);
+  CHECK(w->find("leaves 1 of") != std::string::npos);  // (the three added points' triangle)
+  fo.base.coords.set_max_edge(1.5);
+  CHECK(!empty_domain_warning(fo.base));
+}

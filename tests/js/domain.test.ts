@@ -41,6 +41,24 @@ describe('the domain in the API', () => {
     plain.dispose();
   });
 
+  it('warns when it leaves (almost) every triangle outside, naming the count and the spacing', () => {
+    const points = randomPoints(200, 3); // in the unit square: spacing about 0.07
+    const t = hodt.terrain(points, { maxEdge: 0.001 });
+    expect(t.warnings.length).toBe(1);
+    expect(t.warnings[0]).toMatch(/leaves 0 of \d+ triangles inside to be measured/);
+    expect(t.warnings[0]).toMatch(/median Delaunay edge length\) is 0\.0\d+/);
+    t.maxEdge = 0.5;
+    expect(t.warnings).toEqual([]);
+    t.maxEdge = null;
+    expect(t.warnings).toEqual([]);
+    t.dispose();
+    const r = spawnSync('node', [`${root}dist/cli.js`, 'solve', inlet('asc'), '--objective', 'min-local-minima', '--max-edge', '1'], {
+      encoding: 'utf8',
+    });
+    expect(r.status).toBe(0);
+    expect(r.stderr).toMatch(/warning: .*inlet-nodata\.asc: the domain \(maxEdge 1\) leaves 0 of \d+ triangles inside.* is 2\.5/);
+  });
+
   it('every objective, order 1 and 2, equals brute force within the domain', () => {
     let differs = 0;
     for (let seed = 1; seed <= 12; ++seed) {
@@ -94,6 +112,18 @@ describe('the raster default in the CLIs', () => {
         expect(outside.filter((o) => o === 1).length).toBe(s.outsideTriangles);
       }
     }
+  });
+
+  it('prints the loaders\' and the core\'s notes once the input is read, before the solve', () => {
+    const r = npm(['solve', inlet('tif'), '--objective', 'min-local-minima', '--progress']);
+    expect(r.status).toBe(0);
+    const solving = r.stderr.indexOf('hodt: solving');
+    expect(solving).toBeGreaterThan(0);
+    expect(r.stderr.indexOf('are outside the domain')).toBeGreaterThan(r.stderr.indexOf('hodt: triangulating'));
+    expect(r.stderr.indexOf('are outside the domain')).toBeLessThan(solving);
+    expect(r.stderr.indexOf('coordinates in EPSG:32633, kept as read')).toBeGreaterThan(0);
+    expect(r.stderr.indexOf('coordinates in EPSG:32633, kept as read')).toBeLessThan(solving);
+    expect(r.stderr.match(/are outside the domain/g)?.length).toBe(1);
   });
 
   it('readPoints gives an ASCII grid with NODATA its default domain, and other files none', () => {

@@ -127,11 +127,15 @@ const result = hodt.runCli(
     progress: (text) => {
       writeSync(2, text);
     },
+    // Once the core accepts the input: the loaders' notes, then its own (a
+    // refused input shows none).
+    notes: (text) => {
+      if (!args.includes('--quiet')) for (const n of notes.splice(0)) writeSync(2, n);
+      writeSync(2, text);
+    },
     stderrIsTerminal: process.stderr.isTTY === true,
   },
 );
-// (an input refused in the end gets its one error line, without notes about it)
-if (!args.includes('--quiet') && result.exitCode !== 2) for (const n of notes) process.stderr.write(n);
 process.stdout.write(result.stdout);
 process.stderr.write(origin ? result.stderr.replace(/\(line (\d+)\)/g, (_, line: string) => `(${origin!(Number(line) - 1)})`) : result.stderr);
 process.exitCode = result.exitCode;

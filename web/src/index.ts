@@ -68,6 +68,10 @@ export interface CliIo {
   ) => Error | undefined;
   /** Receives progress text for stderr as it happens (with its own line ends). */
   progress?: (text: string) => void;
+  /** Receives the input's notes and warnings for stderr once the input is
+   * accepted, before the solve (never for a refused input). Without it they
+   * come at the end, in the result's stderr. */
+  notes?: (text: string) => void;
   /** Is stderr a terminal: progress then appears after a second, redrawn in place. */
   stderrIsTerminal?: boolean;
 }

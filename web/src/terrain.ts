@@ -231,6 +231,16 @@ export class Terrain implements Disposable {
     }
     guard(() => raw.setMaxEdge(maxEdge ?? Infinity));
   }
+  /**
+   * Warnings about the terrain as it stands: a domain (maxEdge) that leaves at
+   * most 1% of the Delaunay triangles inside gives one naming how many are
+   * inside and the points' typical spacing (the median Delaunay edge length).
+   * Empty otherwise.
+   */
+  get warnings(): string[] {
+    const w = this.#handle.emptyDomainWarning();
+    return w ? [w] : [];
+  }
 
   /**
    * Live edits: the triangulation and the flippable quads are updated around the

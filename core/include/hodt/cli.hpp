@@ -34,6 +34,9 @@ struct CliHost {
   FileWriter write;           // --output FILE.json; empty: --output is refused
   MeshWriter write_mesh;      // --output FILE.obj/.ply/.geojson/.glb; empty: refused (the native binary)
   std::function<void(const std::string& text)> show_progress;  // stderr, at once; empty: no progress
+  // stderr, at once: the input's notes and warnings, once it is accepted (before
+  // the solve); empty: they come with the result's err.
+  std::function<void(const std::string& text)> show_notes;
   bool stderr_is_terminal = false;
 };
 

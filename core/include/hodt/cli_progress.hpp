@@ -23,6 +23,8 @@ class CliProgress {
   void step(const std::string& what);
   // SolveOptions::progress: done out of total in the current phase; never cancels.
   bool tick(double done, double total);
+  // Clears the terminal line it drew, for other text (the input's notes).
+  void clear_line();
 
  private:
   using Clock = std::chrono::steady_clock;

@@ -4,8 +4,12 @@
 // measured. The triangulations themselves are unchanged.
 #pragma once
 #include <cstdint>
+#include <optional>
+#include <string>
 
+#include "hodt/first_order.hpp"
 #include "hodt/mesh.hpp"
+#include "hodt/predicates.hpp"
 #include "hodt/skeleton.hpp"
 
 namespace hodt {
@@ -13,13 +17,26 @@ namespace hodt {
 inline bool has_domain(const Mesh& m) { return m.coords.max_edge() < INFINITY; }
 
 // Is the plane length of uv at most max_edge? (Exact; true without a domain.)
-bool edge_inside(const Mesh& m, uint32_t u, uint32_t v);
+inline bool edge_inside(const Mesh& m, uint32_t u, uint32_t v) {
+  return !has_domain(m) || compare_length(m.point(u), m.point(v), m.coords.max_edge()) <= 0;
+}
 // Are all three edges of t inside?
 inline bool triangle_inside(const Mesh& m, const Tri& t) {
   return !has_domain(m) || (edge_inside(m, t[0], t[1]) && edge_inside(m, t[1], t[2]) && edge_inside(m, t[2], t[0]));
 }
 // Per triangle of m: 1 if inside (all 1 without a domain).
 std::vector<uint8_t> inside_triangles(const Mesh& m);
+
+// Per quad of fo: 1 if one of its four triangles (two per diagonal) is outside,
+// i.e. one of its four sides or two diagonals is longer than max_edge. Every other
+// quad has both triangles inside whatever it chooses. (All 0 without a domain.)
+std::vector<uint8_t> quads_touching_outside(const FirstOrder& fo);
+
+// A warning when the domain leaves almost nothing to measure: at most 1% of the
+// Delaunay triangulation's triangles inside (none at all included). It names
+// how many are inside and the points' typical spacing, the median Delaunay edge
+// length, to compare max_edge with. Nothing without a domain or with more inside.
+std::optional<std::string> empty_domain_warning(const Mesh& dt);
 
 // Checks a max_edge given by a caller: a positive number, or infinity for none
 // (InputError naming the value otherwise).

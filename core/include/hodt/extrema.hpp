@@ -23,14 +23,20 @@
 // loops, min(V, E) vertices can be claimed (a spanning tree claims every vertex but
 // its root; one more edge or loop claims the root) and no more (each edge claims
 // one). When ties make some |H_s(q)| = 2, the same objective is solved exactly by
-// the factor graph engine on the claim structure.
+// the factor graph engine on the claim structure, component by component.
+//
+// Within a domain a vertex counts only if all its triangles are inside
+// (docs/objectives.md, "The domain"). A vertex beside a fixed triangle outside is
+// never a candidate; a side whose triangle is outside also helps that triangle's
+// candidate corners. Sides can then help up to four vertices, and for minima both
+// sides of a quad can help: the same claim structure, solved the same way.
 #pragma once
 #include "hodt/first_order.hpp"
 #include "hodt/factor_graph.hpp"
 
 namespace hodt {
 
-Choice fewest_local_minima(const FirstOrder& fo, const Progress& progress = {});
+Choice fewest_local_minima(const FirstOrder& fo, const DpLimits& limits = {});
 Choice fewest_local_extrema(const FirstOrder& fo, const DpLimits& limits = {});
 
 }  // namespace hodt

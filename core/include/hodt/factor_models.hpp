@@ -14,7 +14,10 @@ namespace hodt {
 // limits (max_term_scope, max_term_work) are refused with a LimitError naming the
 // vertex, or with OverBudget::Relax left out (counted in FactorGraph::relaxed).
 // limits.progress is called while the tables are filled.
+// Without constants, the vertex terms of vertices in no quad and the length terms
+// of edges beside no quad are left out (total edge length and the vertex sums):
+// the optimal choice is the same, its value is not.
 FactorGraph factor_model(const FirstOrder& fo, Objective o, const DpLimits& limits = {},
-                         OverBudget over = OverBudget::Refuse);
+                         OverBudget over = OverBudget::Refuse, bool constants = true);
 
 }  // namespace hodt

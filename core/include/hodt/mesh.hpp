@@ -75,6 +75,24 @@ std::string link_halfedges(Mesh& mesh);
 // walking twin(prev(e)) from it visits the whole star counterclockwise.
 std::vector<int32_t> vertex_halfedges(const Mesh& mesh);
 
+// Walks the star of a vertex counterclockwise from its halfedge `start`
+// (vertex_halfedges): neighbour(w, t) for each neighbour w with the triangle t
+// that follows it, the last neighbour of a hull vertex with t = UINT32_MAX.
+template <class Neighbour>
+void walk_star(const Mesh& m, uint32_t start, Neighbour neighbour) {
+  uint32_t e = start;
+  for (;;) {
+    neighbour(m.target(e), e / 3);
+    const int32_t t = m.halfedges[prev_halfedge(e)];
+    if (t < 0) {
+      neighbour(m.apex(e), UINT32_MAX);
+      return;
+    }
+    e = static_cast<uint32_t>(t);
+    if (e == start) return;
+  }
+}
+
 // Checks every invariant: triangles counterclockwise and non-degenerate, halfedges
 // symmetric and matching, hull a counterclockwise cycle of the twinless halfedges.
 // Returns an empty string if valid, else what is wrong.

@@ -18,6 +18,7 @@ constexpr double kInCircleBound = (10.0 + 96.0 * kEps) * kEps;
 constexpr double kTiny = 0x1p-900;
 int orient2d_exact(const double* a, const double* b, const double* c);
 int in_circle_exact(const double* a, const double* b, const double* c, const double* d);
+int compare_length_exact(const double* a, const double* b, double length);
 bool in_circle_perturbed(const double* a, const double* b, const double* c, const double* d);
 }  // namespace detail
 
@@ -60,8 +61,19 @@ inline bool in_circle(const double* a, const double* b, const double* c, const d
 // Position of r against the circle with diameter pq: +1 inside, 0 on, -1 outside.
 int diametral_sign(const double* p, const double* q, const double* r);
 
-// Sign of the plane (xy) length of ab minus `length`, exact: -1, 0, +1.
-int compare_length(const double* a, const double* b, double length);
+// Sign of the plane (xy) length of ab minus `length`, exact: -1, 0, +1. (Inline:
+// a domain asks it of every triangle's edges, and the filter decides almost all.)
+inline int compare_length(const double* a, const double* b, double length) {
+  if (length == INFINITY) return -1;  // (coordinates are finite)
+  const double dx = a[0] - b[0], dy = a[1] - b[1];
+  const double d2 = dx * dx + dy * dy, l2 = length * length;
+  // d2 is within 4 eps of |ab|^2 (rounded differences, squares, sum), l2 within
+  // one eps of length^2.
+  const double diff = d2 - l2, sum = d2 + l2;
+  if ((diff > 8 * detail::kEps * sum || -diff > 8 * detail::kEps * sum) && sum > detail::kTiny && sum < INFINITY)
+    return diff > 0 ? 1 : -1;
+  return detail::compare_length_exact(a, b, length);
+}
 
 // Lexicographic xy order, exact: -1, 0, +1.
 int compare_xy(const double* a, const double* b);

@@ -52,6 +52,7 @@ export interface RawTerrain {
   quadOfTriangle(): Int32Array;
   maxEdge(): number;
   setMaxEdge(maxEdge: number): void;
+  emptyDomainWarning(): string;
   addPoint(x: number, y: number, z: number): number;
   movePoint(i: number, x: number, y: number, z: number): void;
   removePoint(i: number): void;
@@ -107,6 +108,7 @@ export interface RawCliIo {
   writeFile?: (path: string, bytes: Uint8Array) => Error | undefined;
   writeMesh?: (path: string, format: 'obj' | 'ply' | 'geojson' | 'glb', mesh: RawMesh) => Error | undefined;
   progress?: (text: string) => void;
+  notes?: (text: string) => void;
   stderrIsTerminal?: boolean;
 }
 export interface HodtModule {
