@@ -207,13 +207,14 @@ TEST_CASE("text that is not what it seems: the CLI reads decimal commas, refuses
       {"bad-json-key-newlines.json", "line 1: point 0: unexpected key 'y\\n\\n\\n', expected x, y, z"},
       {"bad-control-characters.csv", "line 2: y is '\\x1b[31m\\x07\\x00', not a number"},
   };
-  for (const auto& [name, what] : refused) {
+  for (const auto& entry : refused) {
+    const std::string name = entry.first, what = entry.second;  // (CAPTURE cannot take a structured binding in clang 14)
     f.files[name] = fixture_text(name);
     const CliResult r = run_cli({"stats", name}, f.host());
     CAPTURE(name);
     CHECK(r.exit_code == 2);
     CHECK(r.out.empty());
-    CHECK(r.err == "hodt: " + std::string(name) + ": " + what + "\n");
+    CHECK(r.err == "hodt: " + name + ": " + what + "\n");
   }
   // A file name that holds a line break is named on one line too.
   f.files["two\nlines.csv"] = "0 0 0\n1 x 1\n";
