@@ -7,23 +7,11 @@
 import { copyFileSync, mkdirSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, test } from 'vitest';
-import { openPage, resultsDir, root, screenshot, setUpDemo } from './harness.ts';
+import { buildGadget, openPage, resultsDir, root, screenshot, setUpDemo } from './harness.ts';
 
 const env = setUpDemo();
 
-async function build(page: Page, formula: string): Promise<Record<string, any>> {
-  await page.fill('#mixed-formula', formula);
-  await page.click('#mixed-build');
-  await page.waitForFunction(
-    (f) => {
-      const v = window.__hodtTeach!.view('mixed')!;
-      return v.formula === f && (v.error !== null || v.solved === true || v.failure !== null);
-    },
-    formula,
-    { timeout: 60_000 },
-  );
-  return page.evaluate(() => window.__hodtTeach!.view('mixed')!) as Promise<Record<string, any>>;
-}
+const build = (page: Page, formula: string) => buildGadget(page, 'mixed', formula);
 
 describe('mixed vertices gadget (Section 3.1)', () => {
   for (const [formula, satisfiable, viewport, shot] of [

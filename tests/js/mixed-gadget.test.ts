@@ -6,6 +6,7 @@
 // vertices, and the fans of the optimum read back as a satisfying assignment.
 import { loadHodt, type Hodt } from 'hodt';
 import { beforeAll, describe, expect, test } from 'vitest';
+import { smallFormulas } from './smallFormulas.ts';
 import { parseCnf, satisfyingAssignment } from '../../web/demo/src/teach/formula.ts';
 import { ChainLayoutError } from '../../web/demo/src/teach/chainLayout.ts';
 import { buildMixedGadget } from '../../web/demo/src/teach/mixedGadget.ts';
@@ -15,22 +16,6 @@ let hodt: Hodt;
 beforeAll(async () => {
   hodt = await loadHodt();
 });
-
-/** Every formula over x, y, z with one to three clauses of one or two literals. */
-function smallFormulas(): string[] {
-  const literals = ['x', '!x', 'y', '!y', 'z', '!z'];
-  const clauses: string[] = [...literals];
-  for (let a = 0; a < 6; a++) for (let b = a + 1; b < 6; b++) if (a >> 1 !== b >> 1) clauses.push(`${literals[a]} | ${literals[b]}`);
-  const out: string[] = [];
-  for (let i = 0; i < clauses.length; i++) {
-    out.push(clauses[i]!);
-    for (let j = i; j < clauses.length; j++) {
-      out.push(`${clauses[i]}, ${clauses[j]}`);
-      for (let k = j; k < clauses.length; k++) out.push(`${clauses[i]}, ${clauses[j]}, ${clauses[k]}`);
-    }
-  }
-  return out;
-}
 
 function check(text: string): { sat: boolean } {
   const f = parseCnf(text, 1, 2, 'x');

@@ -4,8 +4,8 @@ import type { Solution, Terrain } from 'hodt';
 import { h } from '../ui/dom.ts';
 import { CATEGORICAL, createFittedCanvas, tint, type FittedCanvas } from './canvas.ts';
 import { legend, paperLink, type TeachContext, type TeachView } from './common.ts';
-import { createGadgetPane, gadgetRunner, showUnbuilt } from './gadgetPane.ts';
-import { FormulaError, literalTrue, parseCnf, satisfyingAssignment, type Cnf, type Literal } from './formula.ts';
+import { createGadgetPane, fillClauseTable, formulaLine, gadgetRunner, showUnbuilt, solverLine, valuesText } from './gadgetPane.ts';
+import { FormulaError, parseCnf, satisfyingAssignment, type Cnf } from './formula.ts';
 import { buildDegreeGadget, DegreeLayoutError, type DegreeGadget } from './degreeGadget.ts';
 import { certifyDegree, mapDegreeCells, readDegreeAssignment, type DegreeCells, type DegreeCertificate } from './degreeCheck.ts';
 
@@ -22,8 +22,6 @@ interface Built {
   failure: string | null;
 }
 
-const literalText = (f: Cnf, l: Literal) => `${l.negated ? '¬' : ''}${f.names[l.variable]}`;
-const clauseText = (f: Cnf, c: Literal[]) => c.map((l) => literalText(f, l)).join(' ∨ ');
 
 export function createDegreeView(ctx: TeachContext): TeachView {
   const { root, side, main, caption, input, build, summary, verdict } = createGadgetPane({ id: 'degree', title: 'Why the lowest maximum degree is NP-hard', formula: DEFAULT_DEGREE_FORMULA, rows: 2, ariaLabel: 'Formula for the maximum degree gadget', buildTitle: 'Build the gadget for this formula and solve it exactly (lowest maximum degree)', run: () => runner.run(), lead: [
@@ -109,51 +107,26 @@ export function createDegreeView(ctx: TeachContext): TeachView {
     const b = built;
     const f = b.formula;
     const g = b.gadget;
-    const n = f.names.length;
     summary.replaceChildren(
-      `${n} variable${n === 1 ? '' : 's'}, ${f.clauses.length} clause${f.clauses.length === 1 ? '' : 's'}: `,
-      h('b', { id: 'degree-satisfiable', 'data-value': String(b.satisfying !== null) }, b.satisfying ? 'satisfiable' : 'unsatisfiable'),
-      ` (all 2`,
-      h('sup', {}, String(n)),
-      ` assignments tried). The gadget: ${(g.points.length / 3).toLocaleString('en')} points, ${b.terrain.numQuads} flippable quads (${g.cells.length} cells; ${
+      ...formulaLine('degree', f, b.satisfying !== null),
+      `The gadget: ${(g.points.length / 3).toLocaleString('en')} points, ${b.terrain.numQuads} flippable quads (${g.cells.length} cells; ${
         b.map.otherQuadsAtFixedPoints === 0
           ? 'the others lie in the filling, away from every point whose degree the construction fixes'
           : `${b.map.otherQuadsAtFixedPoints} others touch a point whose degree the construction fixes`
       }), d = ${g.bound}. `,
-      b.solution
-        ? `The library (exact${b.solution.optimal ? ', proven optimal' : ', not proven optimal'}) finds a lowest maximum degree of ${b.solution.value} in ${b.solution.timeMs.toFixed(0)} ms.`
-        : b.failure
-          ? h('span', { class: 'error' }, `The library could not solve it: ${b.failure}.`)
-          : 'Solving…',
+      solverLine(b, (v) => `a lowest maximum degree of ${v}`),
     );
     const read = b.solution ? readDegreeAssignment(g, b.map, b.solution.choice) : null;
     const degrees = b.solution ? b.terrain.measures(b.solution.choice).degree : null;
-    clauses.replaceChildren(
-      h('thead', {}, h('tr', {}, h('th', {}, '#'), h('th', {}, 'clause'), h('th', { title: 'by the values read from the rows of the optimum' }, 'satisfied'), h('th', { title: 'degree of the clause vertex in the optimum' }, 'vertex'))),
-      h(
-        'tbody',
-        {},
-        ...g.clauses.map((cv) =>
-          h(
-            'tr',
-            {},
-            h('td', {}, `C${cv.clause + 1}`),
-            h('td', {}, clauseText(f, cv.literals)),
-            h('td', {}, read ? (cv.literals.some((l) => literalTrue(l, read.assignment)) ? '✓' : '✗') : ''),
-            h('td', {}, degrees ? `degree ${degrees[cv.point]}` : ''),
-          ),
-        ),
-      ),
-    );
+    fillClauseTable(clauses, f, g.clauses, read?.assignment ?? null, degrees ? (p) => `degree ${degrees[p]}` : null, {
+      satisfied: 'by the values read from the rows of the optimum',
+      vertex: 'degree of the clause vertex in the optimum',
+    });
     const j = judge(b);
     verdict.replaceChildren();
     if (j.holds === null) return;
     if (read) {
-      verdict.append(
-        'Values read from the rows: ',
-        f.names.map((name, v) => `${name} = ${read.assignment[v] ? 'T' : 'F'}`).join(', '),
-        '. ',
-      );
+      verdict.append(`${valuesText(f, 'rows', read.assignment)}. `);
     }
     verdict.append(h('span', { id: 'degree-check', 'data-ok': String(j.holds), class: j.holds ? 'good' : 'bad' }, j.text));
   }

@@ -7,6 +7,8 @@ import type { Solution, Terrain } from 'hodt';
 import { h } from '../ui/dom.ts';
 import type { SolveJob } from '../solver/solverClient.ts';
 import { button, createPane, type TeachContext } from './common.ts';
+import { literalTrue, type Cnf, type Literal } from './formula.ts';
+import { clauseText } from './chainLayout.ts';
 
 export interface GadgetPane {
   root: HTMLElement;
@@ -106,3 +108,53 @@ export function gadgetRunner<B extends BuiltGadget>(
   };
   return self;
 }
+
+/** "3 variables, 2 clauses: satisfiable (all 2^3 assignments tried)". */
+export function formulaLine(id: string, f: Cnf, satisfiable: boolean): (Node | string)[] {
+  const n = f.names.length;
+  return [
+    `${n} variable${n === 1 ? '' : 's'}, ${f.clauses.length} clause${f.clauses.length === 1 ? '' : 's'}: `,
+    h('b', { id: `${id}-satisfiable`, 'data-value': String(satisfiable) }, satisfiable ? 'satisfiable' : 'unsatisfiable'),
+    ` (all 2`,
+    h('sup', {}, String(n)),
+    ` assignments tried). `,
+  ];
+}
+
+/** What the exact solver found (`finds`: the value in words), its failure, or that it runs. */
+export function solverLine(b: BuiltGadget, finds: (value: number) => string): Node | string {
+  if (b.solution) return `The library (exact${b.solution.optimal ? ', proven optimal' : ', not proven optimal'}) finds ${finds(b.solution.value)} in ${b.solution.timeMs.toFixed(0)} ms.`;
+  return b.failure ? h('span', { class: 'error' }, `The library could not solve it: ${b.failure}.`) : 'Solving…';
+}
+
+/** The clause table of a 3.1 or 3.2 gadget: each clause vertex, whether the values
+ * read from the optimum satisfy its clause, and what its vertex is there. */
+export function fillClauseTable(
+  table: HTMLElement,
+  f: Cnf,
+  vertices: readonly { clause: number; point: number; literals: Literal[] }[],
+  read: readonly boolean[] | null,
+  vertex: ((point: number) => string) | null,
+  titles: { satisfied: string; vertex: string },
+): void {
+  table.replaceChildren(
+    h('thead', {}, h('tr', {}, h('th', {}, '#'), h('th', {}, 'clause'), h('th', { title: titles.satisfied }, 'satisfied'), h('th', { title: titles.vertex }, 'vertex'))),
+    h(
+      'tbody',
+      {},
+      ...vertices.map((cv) =>
+        h(
+          'tr',
+          {},
+          h('td', {}, `C${cv.clause + 1}`),
+          h('td', {}, clauseText(f, cv.literals)),
+          h('td', {}, read ? (cv.literals.some((l) => literalTrue(l, read)) ? '✓' : '✗') : ''),
+          h('td', {}, vertex ? vertex(cv.point) : ''),
+        ),
+      ),
+    ),
+  );
+}
+
+/** "Values read from the fans: x = F, y = T" and what follows it. */
+export const valuesText = (f: Cnf, where: string, a: readonly boolean[]) => `Values read from the ${where}: ${f.names.map((name, v) => `${name} = ${a[v] ? 'T' : 'F'}`).join(', ')}`;

@@ -4,9 +4,9 @@ import { VertexClass, type Solution, type Terrain } from 'hodt';
 import { h } from '../ui/dom.ts';
 import { CATEGORICAL, createFittedCanvas, tint, type FittedCanvas } from './canvas.ts';
 import { legend, paperLink, type TeachContext, type TeachView } from './common.ts';
-import { FormulaError, literalTrue, parseCnf, satisfyingAssignment, type Cnf } from './formula.ts';
-import { ChainLayoutError, clauseText } from './chainLayout.ts';
-import { createGadgetPane, gadgetRunner, showUnbuilt } from './gadgetPane.ts';
+import { FormulaError, parseCnf, satisfyingAssignment, type Cnf } from './formula.ts';
+import { ChainLayoutError } from './chainLayout.ts';
+import { createGadgetPane, fillClauseTable, formulaLine, gadgetRunner, showUnbuilt, solverLine, valuesText } from './gadgetPane.ts';
 import { buildMixedGadget, sectorCorners, type MixedGadget } from './mixedGadget.ts';
 import { certifyMixed, mapFanSectors, readMixedAssignment, type FanSectors, type MixedCertificate } from './mixedCheck.ts';
 
@@ -120,46 +120,24 @@ export function createMixedView(ctx: TeachContext): TeachView {
     }
     const f = b.formula;
     const g = b.gadget;
-    const n = f.names.length;
     summary.replaceChildren(
-      `${n} variable${n === 1 ? '' : 's'}, ${f.clauses.length} clause${f.clauses.length === 1 ? '' : 's'}: `,
-      h('b', { id: 'mixed-satisfiable', 'data-value': String(b.satisfying !== null) }, b.satisfying ? 'satisfiable' : 'unsatisfiable'),
-      ` (all 2`,
-      h('sup', {}, String(n)),
-      ` assignments tried). The gadget: ${(g.points.length / 3).toLocaleString('en')} points, ${b.terrain.numQuads} flippable quads (${g.fans.length * 8} in fans, the others between fans), floor ${g.floor}. `,
-      b.solution
-        ? `The library (exact${b.solution.optimal ? ', proven optimal' : ', not proven optimal'}) finds ${b.solution.value} mixed vertices at fewest in ${b.solution.timeMs.toFixed(0)} ms.`
-        : b.failure
-          ? h('span', { class: 'error' }, `The library could not solve it: ${b.failure}.`)
-          : 'Solving…',
+      ...formulaLine('mixed', f, b.satisfying !== null),
+      `The gadget: ${(g.points.length / 3).toLocaleString('en')} points, ${b.terrain.numQuads} flippable quads (${g.fans.length * 8} in fans, the others between fans), floor ${g.floor}. `,
+      solverLine(b, (v) => `${v} mixed vertices at fewest`),
     );
     const read = b.solution ? readMixedAssignment(g, b.map, b.solution.choice) : null;
     const classes = b.solution ? b.terrain.measures(b.solution.choice).vertexClass : null;
-    clauses.replaceChildren(
-      h('thead', {}, h('tr', {}, h('th', {}, '#'), h('th', {}, 'clause'), h('th', { title: 'by the values read from the fans of the optimum' }, 'satisfied'), h('th', { title: 'the clause vertex in the optimum' }, 'vertex'))),
-      h(
-        'tbody',
-        {},
-        ...g.clauses.map((cv) =>
-          h(
-            'tr',
-            {},
-            h('td', {}, `C${cv.clause + 1}`),
-            h('td', {}, clauseText(f, cv.literals)),
-            h('td', {}, read ? (cv.literals.some((l) => literalTrue(l, read.assignment)) ? '✓' : '✗') : ''),
-            h('td', {}, classes ? (classes[cv.point] === VertexClass.Mixed ? 'mixed' : 'not mixed') : ''),
-          ),
-        ),
-      ),
-    );
+    fillClauseTable(clauses, f, g.clauses, read?.assignment ?? null, classes ? (p) => (classes[p] === VertexClass.Mixed ? 'mixed' : 'not mixed') : null, {
+      satisfied: 'by the values read from the fans of the optimum',
+      vertex: 'the clause vertex in the optimum',
+    });
     const j = judge(b);
     verdict.replaceChildren();
     if (j.holds === null) return;
     if (read) {
       const impure = f.names.filter((_, v) => read.disagreeing[v]! > 0);
       verdict.append(
-        'Values read from the fans: ',
-        f.names.map((name, v) => `${name} = ${read.assignment[v] ? 'T' : 'F'}`).join(', '),
+        valuesText(f, 'fans', read.assignment),
         impure.length ? ` (by most of their quads: the fan${impure.length === 1 ? '' : 's'} of ${impure.join(', ')} turn${impure.length === 1 ? 's' : ''} both ways, which costs a mixed vertex). ` : '. ',
       );
     }
