@@ -7,23 +7,11 @@
 import { copyFileSync, mkdirSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, test } from 'vitest';
-import { openPage, resultsDir, root, screenshot, setUpDemo } from './harness.ts';
+import { buildGadget, openPage, resultsDir, root, screenshot, setUpDemo } from './harness.ts';
 
 const env = setUpDemo();
 
-async function build(page: Page, formula: string): Promise<Record<string, any>> {
-  await page.fill('#degree-formula', formula);
-  await page.click('#degree-build');
-  await page.waitForFunction(
-    (f) => {
-      const v = window.__hodtTeach!.view('degree')!;
-      return v.formula === f && (v.error !== null || v.solved === true || v.failure !== null);
-    },
-    formula,
-    { timeout: 60_000 },
-  );
-  return page.evaluate(() => window.__hodtTeach!.view('degree')!) as Promise<Record<string, any>>;
-}
+const build = (page: Page, formula: string) => buildGadget(page, 'degree', formula);
 
 /** The library in Node, on the page's points: the exact optimum. */
 function nodeOptimum(v: Record<string, any>): { value: number; optimal: boolean } {

@@ -2,7 +2,7 @@
 // on screen without scrolling, the 3D view's label does not cover the terrain and
 // no point is clipped, and the buttons' tooltips say what they load. A screenshot
 // of every view and Teach tab at both sizes goes to test-results/ (the README's
-// come from render.test.ts and teach.test.ts).
+// come from render.test.ts, teach.test.ts and the gadgets' own tests).
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { hooks, openPage, screenshot, settled, startDemo, type Demo } from './harness.ts';
@@ -86,6 +86,17 @@ describe.each(SIZES)('at $width x $height', (size) => {
       expect(await onScreen(page, '#result')).toBe(true);
       await screenshot(page, `teach-${tab}-${size.width}.png`);
     }
+    // The two gadgets without a lesson step: their own default formula, solved.
+    for (const tab of ['degree', 'mixed']) {
+      await page.click(`#teach-tab-${tab}`);
+      await page.waitForFunction((t) => window.__hodtTeach?.view(t)?.holds != null, tab, { timeout: 60_000 });
+      await page.waitForTimeout(400);
+      expect(await onScreen(page, '#result')).toBe(true);
+      expect(await onScreen(page, `#${tab}-check`)).toBe(true);
+      await screenshot(page, `teach-${tab}-default-${size.width}.png`);
+    }
+    // Every tab fits on one line of the strip.
+    expect(await page.evaluate(() => { const n = document.querySelector('.teach-tabs')!; return n.scrollWidth <= n.clientWidth && new Set([...n.querySelectorAll('button')].map((b) => Math.round(b.getBoundingClientRect().top))).size; })).toBe(1);
     expect(errors).toEqual([]);
     await context.close();
   });

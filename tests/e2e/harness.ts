@@ -123,3 +123,19 @@ export async function emptySpot(page: Page, clear = 16): Promise<{ x: number; y:
     return best;
   }, clear);
 }
+
+/** Types a formula into a hardness gadget view (`id`: degree or mixed), builds it
+ * and waits until it is refused, solved or failed; returns the view's hooks. */
+export async function buildGadget(page: Page, id: string, formula: string): Promise<Record<string, any>> {
+  await page.fill(`#${id}-formula`, formula);
+  await page.click(`#${id}-build`);
+  await page.waitForFunction(
+    ([v, f]) => {
+      const h = window.__hodtTeach!.view(v!)!;
+      return h.formula === f && (h.error !== null || h.solved === true || h.failure !== null);
+    },
+    [id, formula],
+    { timeout: 60_000 },
+  );
+  return page.evaluate((v) => window.__hodtTeach!.view(v)!, id) as Promise<Record<string, any>>;
+}

@@ -5,6 +5,7 @@
 // reaches d exactly when the assignment satisfies the formula.
 import { loadHodt, type Hodt } from 'hodt';
 import { beforeAll, describe, expect, test } from 'vitest';
+import { smallFormulas } from './smallFormulas.ts';
 import { FormulaError, parseCnf, satisfyingAssignment } from '../../web/demo/src/teach/formula.ts';
 import { buildDegreeGadget, DegreeLayoutError } from '../../web/demo/src/teach/degreeGadget.ts';
 import { certifyDegree, mapDegreeCells, readDegreeAssignment, satisfies } from '../../web/demo/src/teach/degreeCheck.ts';
@@ -13,22 +14,6 @@ let hodt: Hodt;
 beforeAll(async () => {
   hodt = await loadHodt();
 });
-
-/** Every formula over x, y, z with one to three clauses of one or two literals. */
-function smallFormulas(): string[] {
-  const literals = ['x', '!x', 'y', '!y', 'z', '!z'];
-  const clauses: string[] = [...literals];
-  for (let a = 0; a < 6; a++) for (let b = a + 1; b < 6; b++) if (a >> 1 !== b >> 1) clauses.push(`${literals[a]} | ${literals[b]}`);
-  const out: string[] = [];
-  for (let i = 0; i < clauses.length; i++) {
-    out.push(clauses[i]!);
-    for (let j = i; j < clauses.length; j++) {
-      out.push(`${clauses[i]}, ${clauses[j]}`);
-      for (let k = j; k < clauses.length; k++) out.push(`${clauses[i]}, ${clauses[j]}, ${clauses[k]}`);
-    }
-  }
-  return out;
-}
 
 describe('max degree gadget (Section 3.2)', () => {
   test('formulas with one to three literals per clause parse, and bad ones say why', () => {

@@ -38,6 +38,7 @@
 // instance behaves as claimed is checked by the view with the exact solver
 // (degreeCheck.ts).
 import type { Cnf, Literal } from './formula.ts';
+import { chainLayout, ChainLayoutError, clauseText } from './chainLayout.ts';
 
 export const DEGREE_BOUND = 7;
 /** The domain the gadget is measured in: cell diagonals (1.28) and every edge
@@ -50,9 +51,8 @@ const CELLS_PER_WIRE = 2;
 /** How far outside a cell's circle its Figure 9 points are. */
 const GAP = 0.03;
 
-export class DegreeLayoutError extends Error {
-  override name = 'DegreeLayoutError';
-}
+/** A formula the chain layout cannot take (chainLayout.ts). */
+export { ChainLayoutError as DegreeLayoutError };
 
 export interface DegreeCell {
   /** Lower-left corner. */
@@ -102,65 +102,6 @@ export interface DegreeGadget {
   chains: number[][];
 }
 
-const clauseText = (f: Cnf, c: Literal[]) => c.map((l) => (l.negated ? '¬' : '') + f.names[l.variable]).join(' ∨ ');
-
-interface Occurrence {
-  clause: number;
-  literal: Literal;
-}
-
-/** Chains of variables joined by two-literal clauses, or a message saying why the
- * formula cannot be laid out with straight wires. */
-export function chainLayout(f: Cnf): { chains: number[][]; joints: Map<string, number[]>; units: Occurrence[][] } {
-  const n = f.names.length;
-  const occurrences: Occurrence[][] = Array.from({ length: n }, () => []);
-  f.clauses.forEach((c, k) => c.forEach((literal) => occurrences[literal.variable]!.push({ clause: k, literal })));
-  f.clauses.forEach((c) => {
-    if (c.length > 2) throw new DegreeLayoutError(`"${clauseText(f, c)}" has three literals: this page lays out clauses of one or two literals only (see the note below)`);
-  });
-  occurrences.forEach((o, v) => {
-    if (o.length > 2) throw new DegreeLayoutError(`${f.names[v]} is in ${o.length} clauses: a wire has two ends, so each variable may be in at most two`);
-  });
-  const neighbours: number[][] = Array.from({ length: n }, () => []);
-  const joints = new Map<string, number[]>();
-  f.clauses.forEach((c, k) => {
-    if (c.length !== 2) return;
-    const [a, b] = [c[0]!.variable, c[1]!.variable];
-    const shared = joints.get(`${a},${b}`);
-    if (shared) {
-      // A second clause on the same two variables fits on the joint's other corner.
-      if (shared.length > 1) throw new DegreeLayoutError(`${f.names[a]} and ${f.names[b]} share three clauses: a joint has two corners`);
-      shared.push(k);
-      return;
-    }
-    neighbours[a]!.push(b);
-    neighbours[b]!.push(a);
-    const list = [k];
-    joints.set(`${a},${b}`, list);
-    joints.set(`${b},${a}`, list);
-  });
-  const units = occurrences.map((o) => o.filter((x) => f.clauses[x.clause]!.length === 1));
-  const seen = new Uint8Array(n);
-  const chains: number[][] = [];
-  for (let s = 0; s < n; s++) {
-    if (seen[s] || neighbours[s]!.length > 1) continue;
-    const chain = [s];
-    seen[s] = 1;
-    let prev = -1, cur = s;
-    for (;;) {
-      const next = neighbours[cur]!.find((w) => w !== prev);
-      if (next === undefined) break;
-      chain.push(next);
-      seen[next] = 1;
-      prev = cur;
-      cur = next;
-    }
-    chains.push(chain);
-  }
-  const left = [...seen].findIndex((x) => x === 0);
-  if (left >= 0) throw new DegreeLayoutError(`the clauses through ${f.names[left]} form a cycle: the wires are straight, so this page lays out chains only`);
-  return { chains, joints, units };
-}
 
 export function buildDegreeGadget(f: Cnf): DegreeGadget {
   const { chains, joints, units } = chainLayout(f);
@@ -247,7 +188,7 @@ export function buildDegreeGadget(f: Cnf): DegreeGadget {
         else {
           const [mine2, theirs2] = sides(second);
           if (cornerOf(prevWire, theirs2, true) !== other || cornerOf(w, mine2, false) !== other) {
-            throw new DegreeLayoutError(`${clauseText(f, f.clauses[k!]!)} and ${clauseText(f, f.clauses[second]!)} share two variables, and only clauses whose literals are each other's negations fit on the two corners of one joint`);
+            throw new ChainLayoutError(`${clauseText(f, f.clauses[k!]!)} and ${clauseText(f, f.clauses[second]!)} share two variables, and only clauses whose literals are each other's negations fit on the two corners of one joint`);
           }
           clauseAt(second, other);
         }

@@ -3,8 +3,9 @@
 import type { Solution, Terrain } from 'hodt';
 import { h } from '../ui/dom.ts';
 import { CATEGORICAL, createFittedCanvas, tint, type FittedCanvas } from './canvas.ts';
-import { button, createPane, legend, paperLink, type TeachContext, type TeachView } from './common.ts';
-import { FormulaError, literalTrue, parseCnf, satisfyingAssignment, type Cnf, type Literal } from './formula.ts';
+import { legend, paperLink, type TeachContext, type TeachView } from './common.ts';
+import { createGadgetPane, fillClauseTable, formulaLine, gadgetRunner, showUnbuilt, solverLine, valuesText } from './gadgetPane.ts';
+import { FormulaError, parseCnf, satisfyingAssignment, type Cnf } from './formula.ts';
 import { buildDegreeGadget, DegreeLayoutError, type DegreeGadget } from './degreeGadget.ts';
 import { certifyDegree, mapDegreeCells, readDegreeAssignment, type DegreeCells, type DegreeCertificate } from './degreeCheck.ts';
 
@@ -21,21 +22,14 @@ interface Built {
   failure: string | null;
 }
 
-const literalText = (f: Cnf, l: Literal) => `${l.negated ? '¬' : ''}${f.names[l.variable]}`;
-const clauseText = (f: Cnf, c: Literal[]) => c.map((l) => literalText(f, l)).join(' ∨ ');
 
 export function createDegreeView(ctx: TeachContext): TeachView {
-  const { root, side, main, caption } = createPane('degree', 'Why the lowest maximum degree is NP-hard', [
+  const { root, side, main, caption, input, build, summary, verdict } = createGadgetPane({ id: 'degree', title: 'Why the lowest maximum degree is NP-hard', formula: DEFAULT_DEGREE_FORMULA, rows: 2, ariaLabel: 'Formula for the maximum degree gadget', buildTitle: 'Build the gadget for this formula and solve it exactly (lowest maximum degree)', run: () => runner.run(), lead: [
     'Each cell below is a flippable quad, so it adds one to the degree of two opposite corners. A point on a side two cells share has d − 1 fixed neighbours: only one of the two diagonals that could reach it fits under d, so all cells of a row use the same diagonal, rising or falling: a variable. ',
     'Where two rows meet, the corner that both false literals’ diagonals would reach is a clause vertex: the two cannot both be there. A one-literal clause is a corner with d fixed neighbours. So the maximum degree can be at most d only if the formula is satisfiable. See ',
     paperLink('3.2'),
     '.',
-  ]);
-  const input = h('textarea', { id: 'degree-formula', rows: 2, spellcheck: false, 'aria-label': 'Formula for the maximum degree gadget' });
-  input.value = DEFAULT_DEGREE_FORMULA;
-  const build = button('degree-build', 'Build and solve', 'Build the gadget for this formula and solve it exactly (lowest maximum degree)', () => run(), false);
-  const summary = h('p', { class: 'teach-status', id: 'degree-summary', 'aria-live': 'polite' });
-  const verdict = h('p', { class: 'teach-verdict', id: 'degree-verdict' });
+  ] });
   const clauses = h('table', { class: 'teach-table', id: 'degree-clauses' });
   const honesty = h(
     'p',
@@ -62,41 +56,22 @@ export function createDegreeView(ctx: TeachContext): TeachView {
   );
   const canvas = createFittedCanvas(main, (c, f) => draw(c, f), 'The maximum degree gadget: rows of cells, clause vertices and their fixed neighbours');
 
-  let built: Built | null = null;
-  let error: string | null = null;
-  let token = 0;
-
-  function run(): void {
-    const my = ++token;
-    built?.terrain.dispose();
-    built = null;
-    error = null;
-    let formula: Cnf;
-    let gadget: DegreeGadget;
-    try {
-      formula = parseCnf(input.value, 1, 2, 'x | y, !x');
+  const runner = gadgetRunner<Built>(ctx, {
+    text: () => input.value,
+    refusals: [FormulaError, DegreeLayoutError],
+    make(text) {
+      const formula = parseCnf(text, 1, 2, 'x | y, !x');
       if (formula.names.length > MAX_VARIABLES) throw new FormulaError(`${formula.names.length} variables: this gadget takes at most ${MAX_VARIABLES}`);
-      gadget = buildDegreeGadget(formula);
-    } catch (e) {
-      if (!(e instanceof FormulaError) && !(e instanceof DegreeLayoutError)) throw e;
-      error = e.message;
-      render();
-      return;
-    }
-    const terrain = ctx.hodt.terrain(gadget.points, { maxEdge: gadget.maxEdge });
-    const map = mapDegreeCells(gadget, terrain.quads);
-    const certificate = certifyDegree(gadget, map, terrain.numQuads, (c) => terrain.evaluate(c)['minmax-degree']);
-    built = { formula, gadget, terrain, map, satisfying: satisfyingAssignment(formula), certificate, solution: null, failure: null };
-    const b = built;
-    canvas.fit(gadget.points, 16);
-    render();
-    void ctx.solver.solve({ points: gadget.points, objective: 'minmax-degree', method: 'exact', epsilon: 0.1, order: 1, maxEdge: gadget.maxEdge }).then((o) => {
-      if (my !== token) return;
-      if (o.status !== 'solved') b.failure = o.status === 'failed' ? o.message : 'cancelled';
-      else b.solution = o.solution;
-      render();
-    });
-  }
+      const gadget = buildDegreeGadget(formula);
+      const terrain = ctx.hodt.terrain(gadget.points, { maxEdge: gadget.maxEdge });
+      const map = mapDegreeCells(gadget, terrain.quads);
+      const certificate = certifyDegree(gadget, map, terrain.numQuads, (c) => terrain.evaluate(c)['minmax-degree']);
+      return { formula, gadget, terrain, map, satisfying: satisfyingAssignment(formula), certificate, solution: null, failure: null };
+    },
+    built: (b) => canvas.fit(b.gadget.points, 16),
+    job: (b) => ({ points: b.gadget.points, objective: 'minmax-degree', method: 'exact', epsilon: 0.1, order: 1, maxEdge: b.gadget.maxEdge }),
+    render: () => render(),
+  });
 
   /** Does the reduction hold on this instance, and if not, where does it fail? */
   function judge(b: Built): { holds: boolean | null; text: string } {
@@ -121,9 +96,10 @@ export function createDegreeView(ctx: TeachContext): TeachView {
 
   function render(): void {
     canvas.redraw();
-    caption.textContent = built?.solution ? 'The exact optimum: each cell’s diagonal; points labelled with their degree where it matters' : 'The construction';
-    if (error || !built) {
-      summary.replaceChildren(error ? h('span', { class: 'error' }, `Cannot build the gadget: ${error}.`) : 'Type a formula and press Build and solve.');
+    caption.textContent = runner.built?.solution ? 'The exact optimum: each cell’s diagonal; points labelled with their degree where it matters' : 'The construction';
+    const built = runner.built;
+    if (!built) {
+      showUnbuilt(summary, runner.error);
       verdict.replaceChildren();
       clauses.replaceChildren();
       return;
@@ -131,57 +107,32 @@ export function createDegreeView(ctx: TeachContext): TeachView {
     const b = built;
     const f = b.formula;
     const g = b.gadget;
-    const n = f.names.length;
     summary.replaceChildren(
-      `${n} variable${n === 1 ? '' : 's'}, ${f.clauses.length} clause${f.clauses.length === 1 ? '' : 's'}: `,
-      h('b', { id: 'degree-satisfiable', 'data-value': String(b.satisfying !== null) }, b.satisfying ? 'satisfiable' : 'unsatisfiable'),
-      ` (all 2`,
-      h('sup', {}, String(n)),
-      ` assignments tried). The gadget: ${(g.points.length / 3).toLocaleString('en')} points, ${b.terrain.numQuads} flippable quads (${g.cells.length} cells; ${
+      ...formulaLine('degree', f, b.satisfying !== null),
+      `The gadget: ${(g.points.length / 3).toLocaleString('en')} points, ${b.terrain.numQuads} flippable quads (${g.cells.length} cells; ${
         b.map.otherQuadsAtFixedPoints === 0
           ? 'the others lie in the filling, away from every point whose degree the construction fixes'
           : `${b.map.otherQuadsAtFixedPoints} others touch a point whose degree the construction fixes`
       }), d = ${g.bound}. `,
-      b.solution
-        ? `The library (exact${b.solution.optimal ? ', proven optimal' : ', not proven optimal'}) finds a lowest maximum degree of ${b.solution.value} in ${b.solution.timeMs.toFixed(0)} ms.`
-        : b.failure
-          ? h('span', { class: 'error' }, `The library could not solve it: ${b.failure}.`)
-          : 'Solving…',
+      solverLine(b, (v) => `a lowest maximum degree of ${v}`),
     );
     const read = b.solution ? readDegreeAssignment(g, b.map, b.solution.choice) : null;
     const degrees = b.solution ? b.terrain.measures(b.solution.choice).degree : null;
-    clauses.replaceChildren(
-      h('thead', {}, h('tr', {}, h('th', {}, '#'), h('th', {}, 'clause'), h('th', { title: 'by the values read from the rows of the optimum' }, 'satisfied'), h('th', { title: 'degree of the clause vertex in the optimum' }, 'vertex'))),
-      h(
-        'tbody',
-        {},
-        ...g.clauses.map((cv) =>
-          h(
-            'tr',
-            {},
-            h('td', {}, `C${cv.clause + 1}`),
-            h('td', {}, clauseText(f, cv.literals)),
-            h('td', {}, read ? (cv.literals.some((l) => literalTrue(l, read.assignment)) ? '✓' : '✗') : ''),
-            h('td', {}, degrees ? `degree ${degrees[cv.point]}` : ''),
-          ),
-        ),
-      ),
-    );
+    fillClauseTable(clauses, f, g.clauses, read?.assignment ?? null, degrees ? (p) => `degree ${degrees[p]}` : null, {
+      satisfied: 'by the values read from the rows of the optimum',
+      vertex: 'degree of the clause vertex in the optimum',
+    });
     const j = judge(b);
     verdict.replaceChildren();
     if (j.holds === null) return;
     if (read) {
-      verdict.append(
-        'Values read from the rows: ',
-        f.names.map((name, v) => `${name} = ${read.assignment[v] ? 'T' : 'F'}`).join(', '),
-        '. ',
-      );
+      verdict.append(`${valuesText(f, 'rows', read.assignment)}. `);
     }
     verdict.append(h('span', { id: 'degree-check', 'data-ok': String(j.holds), class: j.holds ? 'good' : 'bad' }, j.text));
   }
 
   function draw(c: CanvasRenderingContext2D, fc: FittedCanvas): void {
-    const b = built;
+    const b = runner.built;
     if (!b) return;
     const g = b.gadget;
     const p = g.points;
@@ -247,7 +198,7 @@ export function createDegreeView(ctx: TeachContext): TeachView {
     label: 'Max degree',
     root,
     activate() {
-      if (!built && !error) run();
+      if (!runner.built && !runner.error) runner.run();
       canvas.redraw();
     },
     deactivate() {},
@@ -255,10 +206,10 @@ export function createDegreeView(ctx: TeachContext): TeachView {
       // The gadget does not depend on the page's terrain.
     },
     hooks() {
-      const b = built;
+      const b = runner.built;
       const j = b ? judge(b) : null;
       return {
-        error,
+        error: runner.error,
         formula: input.value,
         points: b ? Array.from(b.gadget.points) : [],
         maxEdge: b?.gadget.maxEdge ?? null,

@@ -4,7 +4,8 @@ import type { Solution, Terrain } from 'hodt';
 import { h } from '../ui/dom.ts';
 import { EDGE_COLORS } from '../views/palette.ts';
 import { CATEGORICAL, createFittedCanvas, tint, type FittedCanvas } from './canvas.ts';
-import { button, createPane, legend, paperLink, type TeachContext, type TeachView } from './common.ts';
+import { button, legend, paperLink, type TeachContext, type TeachView } from './common.ts';
+import { createGadgetPane, gadgetRunner, showUnbuilt } from './gadgetPane.ts';
 import { clauseTrue, countSatisfied, formatClause, FormulaError, maxSatisfiable, parseFormula, type Formula } from './formula.ts';
 import { buildGadget, LayoutError, type Gadget } from './gadget.ts';
 import { canonicalStates, cellStates, choiceFor, mapCells, readBack, type CellQuads, type GadgetCertificate, type Readback } from './gadgetCheck.ts';
@@ -26,25 +27,21 @@ interface Built {
 }
 
 export function createGadgetView(ctx: TeachContext): TeachView {
-  const { root, side, main, caption } = createPane('gadget', 'Why most convex edges is NP-hard', [
+  const { root, side, main, caption, input, build, summary, verdict } = createGadgetPane({ id: 'gadget', title: 'Why most convex edges is NP-hard', formula: DEFAULT_FORMULA, rows: 3, ariaLabel: 'MAX-2-SAT formula', buildTitle: 'Build the gadget for this formula and solve it', run: () => runner.run(), lead: [
     'A grid of unit quads with heights f(x, y) = xy − (x² + y²)/10 has one convex (red) and one reflex (blue) diagonal in every quad, and an edge between two quads is convex unless both use their convex diagonal. ',
     'So a large pool of quads scores best in one of two chessboard patterns: a variable. Each clause sends a tentacle from each of its two pools; they meet at one shared edge, which scores when either end quad is reflex, that is when either literal is true. ',
     'High points coat everything else. The best triangulation then satisfies as many clauses as possible: MAX-2-SAT. See ',
     paperLink('3.3'),
     '.',
-  ]);
-  const input = h('textarea', { id: 'gadget-formula', rows: 3, spellcheck: false, 'aria-label': 'MAX-2-SAT formula' });
-  input.value = DEFAULT_FORMULA;
-  const build = button('gadget-build', 'Build and solve', 'Build the gadget for this formula and solve it', () => run(), false);
+  ] });
   const open = button('gadget-open', 'Open in the main views', 'Load the gadget’s points into the page (objective: most convex edges)', () => {
+    const built = runner.built;
     if (!built) return;
     ctx.load(built.gadget.points, 'load the hardness gadget', 'max-convex-edges');
     ctx.showViews();
   });
-  const summary = h('p', { class: 'teach-status', id: 'gadget-summary', 'aria-live': 'polite' });
   const vars = h('table', { class: 'teach-table', id: 'gadget-vars' });
   const clauses = h('table', { class: 'teach-table', id: 'gadget-clauses' });
-  const verdict = h('p', { class: 'teach-verdict', id: 'gadget-verdict' });
   const honesty = h(
     'p',
     { class: 'teach-note' },
@@ -72,55 +69,37 @@ export function createGadgetView(ctx: TeachContext): TeachView {
   const canvas = createFittedCanvas(main, (c, f) => draw(c, f), 'The hardness gadget: variable pools, tentacles and clause edges');
 
   let active = false;
-  let built: Built | null = null;
-  let error: string | null = null;
-  let token = 0;
-
-  function run(): void {
-    const my = ++token;
-    built?.terrain.dispose();
-    built = null;
-    error = null;
-    let formula: Formula;
-    let gadget: Gadget;
-    try {
-      formula = parseFormula(input.value);
-      gadget = buildGadget(formula);
-    } catch (e) {
-      if (!(e instanceof FormulaError) && !(e instanceof LayoutError)) throw e;
-      error = e.message;
-      render();
-      return;
-    }
-    const terrain = ctx.hodt.terrain(gadget.points);
-    built = { formula, gadget, terrain, map: mapCells(gadget, terrain.quads), optimum: maxSatisfiable(formula), solution: null, failure: null, readback: null, certificate: null, checked: 0 };
-    const b = built;
-    const { x0, y0, x1, y1 } = gadget.bounds;
-    canvas.fit(Float64Array.of(x0, y0, 0, x1, y1, 0), 12);
-    render();
-    void ctx.solver.solve({ points: gadget.points, objective: 'max-convex-edges', method: 'auto', epsilon: 0.1, order: 1 }).then((o) => {
-      if (my !== token) return;
-      if (o.status !== 'solved') {
-        b.failure = o.status === 'failed' ? o.message : 'cancelled';
-        render();
-        return;
-      }
-      b.solution = o.solution;
-      b.readback = readBack(b.gadget, b.map, o.solution.choice);
-      render();
-      certifyInSlices(my, b);
-    });
-  }
+  const runner = gadgetRunner<Built>(ctx, {
+    text: () => input.value,
+    refusals: [FormulaError, LayoutError],
+    make(text) {
+      const formula = parseFormula(text);
+      const gadget = buildGadget(formula);
+      const terrain = ctx.hodt.terrain(gadget.points);
+      return { formula, gadget, terrain, map: mapCells(gadget, terrain.quads), optimum: maxSatisfiable(formula), solution: null, failure: null, readback: null, certificate: null, checked: 0 };
+    },
+    built(b) {
+      const { x0, y0, x1, y1 } = b.gadget.bounds;
+      canvas.fit(Float64Array.of(x0, y0, 0, x1, y1, 0), 12);
+    },
+    job: (b) => ({ points: b.gadget.points, objective: 'max-convex-edges', method: 'auto', epsilon: 0.1, order: 1 }),
+    solved(b) {
+      if (!b.solution) return;
+      b.readback = readBack(b.gadget, b.map, b.solution.choice);
+      certifyInSlices(b);
+    },
+    render: () => render(),
+  });
 
   /** Scores the pattern of every assignment, a few per task. */
-  function certifyInSlices(my: number, b: Built): void {
+  function certifyInSlices(b: Built): void {
     const n = b.formula.names.length;
     const evaluate = (choice: Uint8Array) => b.terrain.evaluate(choice)['max-convex-edges'];
     // The same check as certify() in gadgetCheck.ts, 32 assignments per task.
     const total = 1 << n;
     const values: number[] = [];
     const step = () => {
-      if (my !== token) return;
+      if (!runner.current(b)) return;
       const end = Math.min(total, b.checked + 32);
       for (let mask = b.checked; mask < end; mask++) {
         const a = Array.from({ length: n }, (_, v) => ((mask >> v) & 1) === 1);
@@ -145,11 +124,12 @@ export function createGadgetView(ctx: TeachContext): TeachView {
 
   function render(): void {
     canvas.redraw();
+    const built = runner.built;
     caption.textContent = built?.solution
       ? 'Optimum: red convex, blue reflex diagonals · green clause edge convex · dashed: a skipped column'
       : 'The construction';
-    if (error || !built) {
-      summary.replaceChildren(error ? h('span', { class: 'error' }, `Cannot build the gadget: ${error}.`) : 'Type a formula and press Build and solve.');
+    if (!built) {
+      showUnbuilt(summary, runner.error);
       vars.replaceChildren();
       clauses.replaceChildren();
       verdict.replaceChildren();
@@ -246,7 +226,7 @@ export function createGadgetView(ctx: TeachContext): TeachView {
   }
 
   function draw(c: CanvasRenderingContext2D, f: FittedCanvas): void {
-    const b = built;
+    const b = runner.built;
     if (!b) return;
     const g = b.gadget;
     const p = g.points;
@@ -346,7 +326,7 @@ export function createGadgetView(ctx: TeachContext): TeachView {
     root,
     activate() {
       active = true;
-      if (!built && !error) run();
+      if (!runner.built && !runner.error) runner.run();
       canvas.redraw();
     },
     deactivate() {
@@ -357,9 +337,9 @@ export function createGadgetView(ctx: TeachContext): TeachView {
       void active;
     },
     hooks() {
-      const b = built;
+      const b = runner.built;
       return {
-        error,
+        error: runner.error,
         formula: input.value,
         variables: b?.formula.names ?? [],
         clauses: b ? b.formula.clauses.map((c) => c.map((l) => ({ variable: l.variable, negated: l.negated }))) : [],

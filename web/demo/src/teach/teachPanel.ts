@@ -1,4 +1,4 @@
-// The "Teach" tab: six views of the paper's ideas, one visible at a time.
+// The "Teach" tab: seven views of the paper's ideas, one visible at a time.
 import { byId, h } from '../ui/dom.ts';
 import { createBakerView } from './bakerView.ts';
 import { createBruteView } from './bruteView.ts';
@@ -6,10 +6,11 @@ import type { TeachContext, TeachView } from './common.ts';
 import { createDegreeView } from './degreeView.ts';
 import { createGadgetView } from './gadgetView.ts';
 import { createLesson } from './lesson.ts';
+import { createMixedView } from './mixedView.ts';
 import { createOrderView } from './orderView.ts';
 import { createSatView } from './satView.ts';
 
-export const TEACH_TABS = ['sat', 'baker', 'gadget', 'degree', 'brute', 'order'] as const;
+export const TEACH_TABS = ['sat', 'baker', 'gadget', 'degree', 'mixed', 'brute', 'order'] as const;
 export type TeachTab = (typeof TEACH_TABS)[number];
 
 export interface TeachPanel {
@@ -22,7 +23,7 @@ export interface TeachPanel {
 
 export function createTeachPanel(ctx: TeachContext): TeachPanel {
   const root = byId('teach');
-  const views: TeachView[] = [createSatView(ctx), createBakerView(ctx), createGadgetView(ctx), createDegreeView(ctx), createBruteView(ctx), createOrderView(ctx)];
+  const views: TeachView[] = [createSatView(ctx), createBakerView(ctx), createGadgetView(ctx), createDegreeView(ctx), createMixedView(ctx), createBruteView(ctx), createOrderView(ctx)];
   const tabs = views.map((v) => {
     const b = h('button', { type: 'button', role: 'tab', id: `teach-tab-${v.id}`, 'data-teach': v.id, 'aria-selected': 'false', 'aria-controls': `teach-${v.id}` }, v.label);
     b.addEventListener('click', () => select(v.id as TeachTab));

@@ -1,0 +1,257 @@
+// Teaching view: the NP-hardness construction of Section 3.1 (fewest mixed
+// vertices), built from a small formula, solved exactly by the library and checked.
+import { VertexClass, type Solution, type Terrain } from 'hodt';
+import { h } from '../ui/dom.ts';
+import { CATEGORICAL, createFittedCanvas, tint, type FittedCanvas } from './canvas.ts';
+import { legend, paperLink, type TeachContext, type TeachView } from './common.ts';
+import { FormulaError, parseCnf, satisfyingAssignment, type Cnf } from './formula.ts';
+import { ChainLayoutError } from './chainLayout.ts';
+import { createGadgetPane, fillClauseTable, formulaLine, gadgetRunner, showUnbuilt, solverLine, valuesText } from './gadgetPane.ts';
+import { buildMixedGadget, sectorCorners, type MixedGadget } from './mixedGadget.ts';
+import { certifyMixed, mapFanSectors, readMixedAssignment, type FanSectors, type MixedCertificate } from './mixedCheck.ts';
+
+export const DEFAULT_MIXED_FORMULA = 'x | y, !y | z, !x';
+const MAX_VARIABLES = 6;
+
+interface Built {
+  formula: Cnf;
+  gadget: MixedGadget;
+  terrain: Terrain;
+  map: FanSectors;
+  satisfying: boolean[] | null;
+  certificate: MixedCertificate;
+  solution: Solution | null;
+  failure: string | null;
+}
+
+const MIXED = '#d62728';
+
+export function createMixedView(ctx: TeachContext): TeachView {
+  const { root, side, main, caption, input, build, summary, verdict } = createGadgetPane({
+    id: 'mixed',
+    title: 'Why the fewest mixed vertices is NP-hard',
+    formula: DEFAULT_MIXED_FORMULA,
+    rows: 2,
+    ariaLabel: 'Formula for the mixed vertices gadget',
+    buildTitle: 'Build the gadget for this formula and solve it exactly (fewest mixed vertices)',
+    run: () => runner.run(),
+    lead: [
+      'Each variable is a fan: a ring of 8 flippable quads. An inner point is mixed exactly when both quads beside it use the diagonal that reaches it, so the fan is free of mixed points only when every quad turns the same way, clockwise or counterclockwise: the variable’s two values. ',
+      'Two fans share a clause vertex, mixed exactly when the diagonals of both false literals reach it; a one-literal clause is a point mixed when its false diagonal does. The fans’ two centre points are always mixed, so the fewest mixed vertices is that floor exactly when the formula is satisfiable. See ',
+      paperLink('3.1'),
+      '.',
+    ],
+  });
+  const clauses = h('table', { class: 'teach-table', id: 'mixed-clauses' });
+  const honesty = h(
+    'p',
+    { class: 'teach-note' },
+    h('b', {}, 'What this page does not show. '),
+    'The fans sit in a row and share a point with the next one only, so it lays out chains: clauses of one or two literals, every variable in at most two clauses, no cycle (two clauses on the same two variables only when one negates both literals of the other; a one-literal clause needs a free point of its fan whose neighbours no clause pair uses). The paper also splits chains (three fans on one) and has clause vertices of three literals; without them these formulas are ones 2-SAT solves, so this page shows how the gadgets work, not why the problem is hard. The coordinates and heights are this page’s own: every instance is checked above, not assumed.',
+  );
+  side.append(
+    h('label', { for: 'mixed-formula', class: 'teach-label' }, `Formula (clauses of one or two literals, up to ${MAX_VARIABLES} variables)`),
+    input,
+    h('div', { class: 'buttons' }, build),
+    verdict,
+    summary,
+    clauses,
+    legend([
+      ['fill', CATEGORICAL[0]!, 'a variable’s fan (one colour per variable)'],
+      ['line', '#111', 'the diagonal each quad uses in the solver’s optimum'],
+      ['dot', MIXED, 'a mixed vertex of the optimum (the centres always are)'],
+      ['dot', '#17804a', 'clause vertex, not mixed'],
+      ['dot', 'rgba(90, 100, 96, 0.6)', 'other points (heights alternate around the rings)'],
+    ]),
+    honesty,
+  );
+  const canvas = createFittedCanvas(main, (c, f) => draw(c, f), 'The mixed vertices gadget: fans, clause vertices and the diagonals of the optimum');
+
+  const runner = gadgetRunner<Built>(ctx, {
+    text: () => input.value,
+    refusals: [FormulaError, ChainLayoutError],
+    make(text) {
+      const formula = parseCnf(text, 1, 2, 'x | y, !x');
+      if (formula.names.length > MAX_VARIABLES) throw new FormulaError(`${formula.names.length} variables: this gadget takes at most ${MAX_VARIABLES}`);
+      const gadget = buildMixedGadget(formula);
+      const terrain = ctx.hodt.terrain(gadget.points);
+      const map = mapFanSectors(gadget, terrain.quads);
+      const certificate = certifyMixed(gadget, map, terrain.numQuads, (c) => terrain.evaluate(c)['min-mixed-vertices']);
+      return { formula, gadget, terrain, map, satisfying: satisfyingAssignment(formula), certificate, solution: null, failure: null };
+    },
+    built: (b) => canvas.fit(b.gadget.points, 18),
+    job: (b) => ({ points: b.gadget.points, objective: 'min-mixed-vertices', method: 'exact', epsilon: 0.1, order: 1 }),
+    render: () => render(),
+  });
+
+  /** Does the reduction hold on this instance, and if not, where does it fail? */
+  function judge(b: Built): { holds: boolean | null; text: string } {
+    const s = b.solution;
+    if (!s) return { holds: null, text: '' };
+    const floor = b.gadget.floor;
+    if (!s.optimal) return { holds: false, text: `The solver’s ${s.value} is not proven optimal, so this instance is not verified.` };
+    const sat = b.satisfying !== null;
+    const wrong = b.certificate.wrong.length;
+    const per =
+      wrong === 0
+        ? `each of the ${b.certificate.values.length} assignments’ triangulations has ${floor} + (its false clauses) mixed vertices, and `
+        : `${wrong} assignment(s) do not have ${floor} + (their false clauses) mixed vertices, and `;
+    if ((s.value === floor) === sat && s.value >= floor && wrong === 0) {
+      return {
+        holds: true,
+        text: `Check: ${per}the proven optimum is ${s.value} ${sat ? `= ${floor}, the floor, and the formula is satisfiable` : `> ${floor}, the floor, and the formula is unsatisfiable`}: on this instance the reduction holds.`,
+      };
+    }
+    return {
+      holds: false,
+      text: `Check failed: ${per}the proven optimum is ${s.value} against a floor of ${floor} while the formula is ${sat ? 'satisfiable' : 'unsatisfiable'}: on this instance the reduction does not hold.`,
+    };
+  }
+
+  function render(): void {
+    canvas.redraw();
+    const b = runner.built;
+    caption.textContent = b?.solution ? 'The exact optimum: each quad’s diagonal; mixed vertices in red' : 'The construction';
+    if (!b) {
+      showUnbuilt(summary, runner.error);
+      verdict.replaceChildren();
+      clauses.replaceChildren();
+      return;
+    }
+    const f = b.formula;
+    const g = b.gadget;
+    summary.replaceChildren(
+      ...formulaLine('mixed', f, b.satisfying !== null),
+      `The gadget: ${(g.points.length / 3).toLocaleString('en')} points, ${b.terrain.numQuads} flippable quads (${g.fans.length * 8} in fans, the others between fans), floor ${g.floor}. `,
+      solverLine(b, (v) => `${v} mixed vertices at fewest`),
+    );
+    const read = b.solution ? readMixedAssignment(g, b.map, b.solution.choice) : null;
+    const classes = b.solution ? b.terrain.measures(b.solution.choice).vertexClass : null;
+    fillClauseTable(clauses, f, g.clauses, read?.assignment ?? null, classes ? (p) => (classes[p] === VertexClass.Mixed ? 'mixed' : 'not mixed') : null, {
+      satisfied: 'by the values read from the fans of the optimum',
+      vertex: 'the clause vertex in the optimum',
+    });
+    const j = judge(b);
+    verdict.replaceChildren();
+    if (j.holds === null) return;
+    if (read) {
+      const impure = f.names.filter((_, v) => read.disagreeing[v]! > 0);
+      verdict.append(
+        valuesText(f, 'fans', read.assignment),
+        impure.length ? ` (by most of their quads: the fan${impure.length === 1 ? '' : 's'} of ${impure.join(', ')} turn${impure.length === 1 ? 's' : ''} both ways, which costs a mixed vertex). ` : '. ',
+      );
+    }
+    verdict.append(h('span', { id: 'mixed-check', 'data-ok': String(j.holds), class: j.holds ? 'good' : 'bad' }, j.text));
+  }
+
+  function draw(c: CanvasRenderingContext2D, fc: FittedCanvas): void {
+    const b = runner.built;
+    if (!b) return;
+    const g = b.gadget;
+    const p = g.points;
+    const X = (i: number) => fc.sx(p[3 * i]!);
+    const Y = (i: number) => fc.sy(p[3 * i + 1]!);
+    const choice = b.solution?.choice ?? null;
+    const classes = b.terrain.measures(choice ?? undefined).vertexClass;
+    // Every edge of the triangulation, thin, then the fans' quads on top.
+    const tri = b.terrain.triangulation(choice ?? undefined).triangles;
+    c.strokeStyle = 'rgba(60, 72, 68, 0.25)';
+    c.lineWidth = 0.7;
+    c.beginPath();
+    for (let k = 0; k < tri.length; k += 3) {
+      c.moveTo(X(tri[k]!), Y(tri[k]!));
+      c.lineTo(X(tri[k + 1]!), Y(tri[k + 1]!));
+      c.lineTo(X(tri[k + 2]!), Y(tri[k + 2]!));
+      c.closePath();
+    }
+    c.stroke();
+    g.fans.forEach((fan, i) => {
+      const colour = CATEGORICAL[fan.variable % CATEGORICAL.length]!;
+      fan.inner.forEach((_, k) => {
+        const [a, bo, co, d] = sectorCorners(fan, k);
+        c.beginPath();
+        c.moveTo(X(a), Y(a));
+        c.lineTo(X(bo), Y(bo));
+        c.lineTo(X(co), Y(co));
+        c.lineTo(X(d), Y(d));
+        c.closePath();
+        c.fillStyle = tint(colour, 0.3);
+        c.fill();
+        c.strokeStyle = '#777';
+        c.lineWidth = 1;
+        c.stroke();
+        const q = b.map.quad[i]![k]!;
+        const ccw = (choice ? choice[q] === 0 : true) === (b.map.delaunayCcw[i]![k] === 1);
+        c.beginPath();
+        if (ccw) {
+          c.moveTo(X(a), Y(a));
+          c.lineTo(X(co), Y(co));
+        } else {
+          c.moveTo(X(bo), Y(bo));
+          c.lineTo(X(d), Y(d));
+        }
+        c.strokeStyle = '#111';
+        c.lineWidth = Math.max(1.5, fc.scale * 0.035);
+        c.stroke();
+      });
+    });
+    const r = Math.max(2.2, Math.min(5, fc.scale * 0.07));
+    for (let i = 0; i < p.length / 3; i++) {
+      const role = g.roles[i]!;
+      const mixed = classes[i] === VertexClass.Mixed;
+      c.fillStyle = mixed ? MIXED : role === 'clause' || role === 'unit' ? '#17804a' : 'rgba(90, 100, 96, 0.6)';
+      c.beginPath();
+      c.arc(X(i), Y(i), mixed || role === 'clause' || role === 'unit' ? r : r * 0.7, 0, 2 * Math.PI);
+      c.fill();
+    }
+    c.font = `600 ${Math.max(10, Math.min(13, fc.scale * 0.22))}px system-ui, sans-serif`;
+    c.textAlign = 'center';
+    c.textBaseline = 'middle';
+    // Clause labels beside their vertex: below a joint, outside a fan's top or bottom.
+    const labelled = new Map<number, string[]>();
+    for (const cv of g.clauses) labelled.set(cv.point, [...(labelled.get(cv.point) ?? []), `C${cv.clause + 1}`]);
+    for (const [i, names] of labelled) {
+      const y = p[3 * i + 1]!;
+      const offset = g.roles[i] === 'clause' ? -0.45 : Math.sign(y) * 0.45;
+      c.fillStyle = classes[i] === VertexClass.Mixed ? MIXED : '#17804a';
+      c.fillText(names.join(', '), X(i), fc.sy(y + offset));
+    }
+    for (const fan of g.fans) {
+      c.fillStyle = CATEGORICAL[fan.variable % CATEGORICAL.length]!;
+      c.fillText(b.formula.names[fan.variable]!, fc.sx(fan.x), fc.sy(fan.y + 0.5));
+    }
+  }
+
+  return {
+    id: 'mixed',
+    label: 'Mixed vertices',
+    root,
+    activate() {
+      if (!runner.built && !runner.error) runner.run();
+      canvas.redraw();
+    },
+    deactivate() {},
+    changed() {
+      // The gadget does not depend on the page's terrain.
+    },
+    hooks() {
+      const b = runner.built;
+      const j = b ? judge(b) : null;
+      const read = b?.solution ? readMixedAssignment(b.gadget, b.map, b.solution.choice) : null;
+      return {
+        error: runner.error,
+        formula: input.value,
+        points: b ? Array.from(b.gadget.points) : [],
+        floor: b?.gadget.floor ?? null,
+        satisfiable: b ? b.satisfying !== null : null,
+        solved: b?.solution != null,
+        failure: b?.failure ?? null,
+        value: b?.solution?.value ?? null,
+        optimal: b?.solution?.optimal ?? null,
+        assignment: read?.assignment ?? null,
+        wrongAssignments: b ? b.certificate.wrong.length : null,
+        holds: j?.holds ?? null,
+      };
+    },
+  };
+}
