@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "hodt/domain.hpp"
+#include "hodt/exact_sum.hpp"
 #include "hodt/mean_area.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/pair_measures.hpp"
@@ -238,9 +239,9 @@ double triangle_term(const ObjectiveTerms& d, const Mesh& m, const Tri& t) {
 
 double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
   const ObjectiveTerms& d = objective_terms(o, m);
-  // Sums are added in sorted order, so that equal triangulations listed
-  // differently have bit-identical totals.
-  std::vector<double> terms;
+  // Sums are exact until one rounding (exact_sum.hpp), so that equal
+  // triangulations listed differently have bit-identical totals.
+  ExactSum sum;
   double max = 0;
   WorkCounter work;
   // A term's cost in elementary steps: a vertex's grows with its degree (cubic
@@ -249,7 +250,7 @@ double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
     if (work.tick(units)) report(progress, done, total);
   };
   auto add = [&](double t) {
-    if (d.combine == TermCombine::Sum) terms.push_back(t);
+    if (d.combine == TermCombine::Sum) sum.add(t);
     else max = std::max(max, t);
   };
   // Within a domain each triangle is decided inside once; a term whose triangles
@@ -294,7 +295,7 @@ double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
       if (!d.domain || inside[t]) add(triangle_term(plain, m, base_triangle(m, t)));
     }
   }
-  return d.combine == TermCombine::Sum ? order_free_sum(std::move(terms), progress) : max;
+  return d.combine == TermCombine::Sum ? sum.value() : max;
 }
 
 }  // namespace hodt
