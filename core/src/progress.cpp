@@ -40,7 +40,8 @@ class PhaseTracker {
     // A new loop: the phase (re)entered, or the solver's count restarted. It
     // covers the next share of the phase, from where the phase is: the fraction
     // can only grow.
-    if (new_phase || total != s.last_total || done < s.last_done) {
+    const bool new_loop = new_phase || total != s.last_total || done < s.last_done;
+    if (new_loop) {
       ++s.runs;
       s.from = s.fraction;
       if (s.sized && runs > 0 && s.runs <= runs) {
@@ -53,7 +54,9 @@ class PhaseTracker {
     s.last_done = done, s.last_total = total;
     const double share = total > 0 && done > 0 ? std::min(1.0, done / total) : 0;  // (NaN: 0)
     s.fraction = std::max(s.fraction, s.from + (s.to - s.from) * share);
-    if (!new_phase && now - last_passed_ < interval_) return true;
+    // (Each new loop is passed on too, as the solvers' phases were before they
+    // had names: a caller that cancels from its callback is asked at every step.)
+    if (!new_loop && now - last_passed_ < interval_) return true;
     last_passed_ = now;
     return callback_(ProgressPoint{phase, s.fraction, s.sized, s.seconds + seconds_between(entered_, now)});
   }

@@ -68,8 +68,9 @@ using PhaseCallback = std::function<bool(const ProgressPoint& point)>;
 constexpr double kProgressIntervalMs = 5;
 
 // The Progress to give a solve: calls callback at the first point of each phase
-// and otherwise at most every interval_ms (0: at every point); callback returning
-// false cancels. Points in no named phase come as Phase::Solving.
+// and of each loop of the solvers in it, and otherwise at most every interval_ms
+// (0: at every point); callback returning false cancels. Points in no named
+// phase come as Phase::Solving.
 Progress phased(PhaseCallback callback, double interval_ms = kProgressIntervalMs);
 
 // A plain (done, total) callback as one of phased(): it receives each phase's
