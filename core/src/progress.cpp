@@ -16,6 +16,10 @@ constexpr std::array<std::string_view, kNumPhases> kPhaseNames = {
 
 constexpr double kEstimateAfterSeconds = 2;   // a pace measured over less says little
 constexpr double kEstimateAfterFraction = 0.05;
+// A phase of unknown size: the share of what is left that each new loop covers.
+// Small, so that a phase of many loops (a region engine's can make hundreds)
+// still moves late in it, rather than standing at 100% after a dozen.
+constexpr double kUnsizedLoopShare = 0.1;
 
 using Clock = std::chrono::steady_clock;
 
@@ -46,9 +50,9 @@ class PhaseTracker {
       s.from = s.fraction;
       if (s.sized && runs > 0 && s.runs <= runs) {
         s.to = std::max(s.fraction, static_cast<double>(s.runs) / runs);
-      } else {  // more loops than the driver said, or it did not know: half of what is left
+      } else {  // more loops than the driver said, or it did not know
         s.sized = false;
-        s.to = s.fraction + (1 - s.fraction) / 2;
+        s.to = s.fraction + (1 - s.fraction) * kUnsizedLoopShare;
       }
     }
     s.last_done = done, s.last_total = total;

@@ -59,8 +59,8 @@ TEST_CASE("a solver that restarts its count moves its phase on, never back") {
   r.check_monotone();
   REQUIRE(!r.points.empty());
   CHECK(r.points.front().phase == Phase::Searching);
-  CHECK(!r.points.back().sized);  // its size unknown: each loop takes half of what is left
-  CHECK(r.points.back().fraction == doctest::Approx(1 - 1.0 / 16));
+  CHECK(!r.points.back().sized);  // its size unknown: each loop takes a tenth of what is left
+  CHECK(r.points.back().fraction == doctest::Approx(1 - 0.9 * 0.9 * 0.9 * 0.9));
   CHECK(r.points.back().fraction < 1);
 }
 
@@ -78,7 +78,7 @@ TEST_CASE("a phase whose driver knows its loops is sized until it has more") {
   report(exactly, 0, 7);  // a third: more than the driver said
   CHECK(!r.points.back().sized);
   report(exactly, 7, 7);
-  CHECK(r.points.back().fraction == doctest::Approx(0.75 + 0.25 / 2));
+  CHECK(r.points.back().fraction == doctest::Approx(0.75 + 0.25 / 10));
   r.check_monotone();
 }
 

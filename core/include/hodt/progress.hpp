@@ -81,8 +81,8 @@ Progress as_phased(Progress progress, double interval_ms = kProgressIntervalMs);
 // progress with the work it is given reported under phase (what a driver passes
 // to the solvers of one step). runs: how many counted loops the step's work
 // makes, when the driver knows (the phase is then sized: the k-th loop covers
-// the k-th of that many equal shares); 0: unknown (each new loop covers half of
-// what is left). Unchanged if progress is not phased() or an outer driver holds
+// the k-th of that many equal shares); 0: unknown (each new loop covers a tenth
+// of what is left). Unchanged if progress is not phased() or an outer driver holds
 // it in a phase (hold_in_phase).
 Progress in_phase(const Progress& progress, Phase phase, uint32_t runs = 0);
 
