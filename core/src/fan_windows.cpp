@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/fan_terms.hpp"
 #include "hodt/fan_trees.hpp"
@@ -102,7 +101,7 @@ struct Window {
 std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, const Candidates& cand,
                                                    const Mesh& start, const WindowLimits& limits) {
   const ObjectiveTerms& d = objective_terms(o, dt);
-  if (d.combine != TermCombine::Sum || !fan_holds_terms(d) || has_domain(dt)) return std::nullopt;  // (a domain's terms read triangles)
+  if (d.combine != TermCombine::Sum || !fan_holds_terms(d)) return std::nullopt;  // (fan_terms: a domain's too)
   const double sign = info(o).sense == Sense::Max ? 1 : -1;  // (windows maximise sign * value)
   const bool integral = d.term_max < 1e6 && d.term_max == std::floor(d.term_max);  // (counts)
   const uint32_t n = dt.num_vertices();
