@@ -141,20 +141,23 @@ struct FirstOrderStart {
 // triangulations are the choices of a diagonal per quad: a singly flippable
 // structure, which the first order solvers take as it is (their fast paths and
 // proven bounds). The common case of DEM grids whose cells are not square, up
-// to k = 3 or more. Not within a domain (the first order rules do not hold
-// there) and not for brute force (which enumerates the instance).
+// to k = 3 or more. Not for brute force (which enumerates the instance).
 // When the quads are the first order ones (every first order quad is one, so
 // equal counts say so), the first order result is the answer (method auto:
-// the ladder's, solved once).
+// the ladder's, solved once). Within a domain only then: the first order
+// paths read the domain on any quads (a triangle's being inside depends on its
+// quad's diagonal alone, solve.cpp), but where they refuse they hand over to
+// the region engine at order 1, whose regions are the first order quads.
 std::optional<KOrderResult> solve_as_quads(const Mesh& dt, Objective o, const Regions& skeleton,
                                            const SolveOptions& options, FirstOrderStart& first_order) {
-  if (has_domain(dt) || options.method == Method::BruteForce) return std::nullopt;
+  if (options.method == Method::BruteForce) return std::nullopt;
   uint32_t quads_at_k = 0;
   for (const Region& region : skeleton.regions) {
     if (region.delaunay_triangles.size() > 2) return std::nullopt;
     quads_at_k += region.delaunay_triangles.size() == 2;
   }
   const bool same = quads_at_k == first_order.fo.num_quads();
+  if (!same && has_domain(dt)) return std::nullopt;
   std::optional<FirstOrder> own;
   if (!same) {
     std::vector<uint8_t> marked(dt.halfedges.size(), 0);
@@ -815,8 +818,8 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
                            const RegionLimits& budgets) {
   if (!fo.is_delaunay) throw InputError("higher order needs the Delaunay triangulation: not for user triangulations");
   FirstOrderStart first_order{fo, o, options, {}, 0, {}};
-  VertexTermMemo memo;  // (the ladder's orders meet the same stars too; none within a domain)
-  KOrderResult r = solve_regions(fo, o, k, options, budgets, first_order, has_domain(fo.base) ? nullptr : &memo);
+  VertexTermMemo memo;  // (the ladder's orders meet the same stars too)
+  KOrderResult r = solve_regions(fo, o, k, options, budgets, first_order, &memo);
   r.delaunay_value = evaluate(o, fo.base);
   return r;
 }

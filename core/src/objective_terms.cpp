@@ -179,6 +179,15 @@ const std::array<ObjectiveTerms, kNumObjectives>& plain_table() {
 const ObjectiveTerms& objective_terms_without_domain(Objective o) { return plain_table()[static_cast<size_t>(o)]; }
 }  // namespace
 
+const ObjectiveTerms& objective_terms_inside(Objective o) {
+  static const std::array<ObjectiveTerms, kNumObjectives> table = [] {
+    std::array<ObjectiveTerms, kNumObjectives> t = make_table();
+    for (ObjectiveTerms& d : t) d.all_inside = true, d.global_bound = nullptr;  // (a bound on a whole triangulation: not a piece's)
+    return t;
+  }();
+  return table[static_cast<size_t>(o)];
+}
+
 const ObjectiveTerms& objective_terms(Objective o, const Mesh& m) {
   static const std::array<ObjectiveTerms, kNumObjectives> domain_table = with_domain(make_table());
   return (has_domain(m) ? domain_table : plain_table())[static_cast<size_t>(o)];
@@ -215,7 +224,7 @@ double vertex_term_in_domain(const ObjectiveTerms& d, const Mesh& m, const Star&
 }  // namespace
 
 double vertex_term(const ObjectiveTerms& d, const Mesh& m, const Star& s, double cut) {
-  if (d.domain != has_domain(m)) throw std::logic_error("objective terms read with the wrong domain");
+  if (d.domain != has_domain(m) && !d.all_inside) throw std::logic_error("objective terms read with the wrong domain");
   if (d.domain) return vertex_term_in_domain(d, m, s, cut);
   if (d.site != TermSite::VertexPair) return d.vertex(m, s);
   return largest_pair(d, m, s.triangles, s.num_triangles, cut);
