@@ -248,10 +248,14 @@ namespace {
 // A small raster with NODATA: a w x h grid (exact, or jittered), heights of few
 // levels (ties) or smooth, with a few cells dropped, and max_edge between 1.2 and
 // 2.5 cells, so that the holes' bridges and some diagonals are outside.
-FirstOrder raster_with_holes(uint64_t seed) {
+// small: a 4 x 4 raster with its points moved off the lattice (few k-OD
+// triangulations, for brute force at order 3).
+FirstOrder raster_with_holes(uint64_t seed, bool small = false) {
   Rng r(seed);
-  const int w = 4 + static_cast<int>(r.below(2)), h = 4 + static_cast<int>(r.below(2));
-  const bool jitter = r.below(2) != 0, ties = r.below(2) != 0;
+  int w = 4 + static_cast<int>(r.below(2)), h = 4 + static_cast<int>(r.below(2));
+  bool jitter = r.below(2) != 0;
+  const bool ties = r.below(2) != 0;
+  if (small) w = h = 4, jitter = true;
   std::vector<double> p;
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
@@ -274,7 +278,7 @@ TEST_CASE("domain: rasters with holes at order 1: the first order paths equal br
   uint64_t tried = 0, changed = 0;
   for (uint64_t seed = 1; seed <= 150; ++seed) {
     const FirstOrder fo = raster_with_holes(seed);
-    if (fo.num_quads() > 20) continue;
+    if (fo.num_quads() > 14) continue;  // (brute force: 2^quads triangulations per objective)
     ++tried;
     for (const auto& oi : objectives()) {
       CAPTURE(seed);
@@ -297,6 +301,7 @@ TEST_CASE("domain: rasters with holes at order 1: the first order paths equal br
       changed += want.value != solve(plain, oi.objective, bf).value;
     }
   }
+  MESSAGE(tried, " rasters, ", changed, " optima changed by the domain");
   CHECK(tried > 100);
   CHECK(changed > 200);  // (the domain changed many optima)
 }
@@ -329,35 +334,45 @@ TEST_CASE("domain: rasters with holes at orders 2 and 3: every objective equals 
   // The order-k engine within a domain: the vertices away from the holes read
   // the terms without a domain and their summaries, those beside them the
   // domain's (classes with one more, a triangle outside), all against every
-  // k-OD triangulation measured as the domain says.
+  // k-OD triangulation measured as the domain says. Rasters whose k-OD
+  // triangulations are too many to list (cocircular cells at order 3) are
+  // left out: the search tree's size bounds the test's time.
+  constexpr uint64_t kNodes = 300'000;
   uint64_t tried = 0, changed = 0;
   for (uint32_t k : {2u, 3u}) {
-    for (uint64_t seed = 1; seed <= (k == 2 ? 20u : 5u); ++seed) {
-      const FirstOrder fo = raster_with_holes(seed * 3 + k);
+    for (uint64_t seed = 1; seed <= 12; ++seed) {
+      const FirstOrder fo = raster_with_holes(seed * 3 + k, k == 3 && seed % 2 == 0);
+      std::vector<KOrderResult> want;
+      try {
+        for (const auto& oi : objectives()) want.push_back(k_order_brute_force(fo, oi.objective, k, kNodes));
+      } catch (const LimitError&) {
+        continue;
+      }
       ++tried;
       for (const auto& oi : objectives()) {
         CAPTURE(k);
         CAPTURE(seed);
         CAPTURE(oi.id);
-        const KOrderResult want = k_order_brute_force(fo, oi.objective, k, 20'000'000);
+        const KOrderResult& best = want[static_cast<size_t>(oi.objective)];
         for (Method method : {Method::Exact, Method::Auto}) {
           SolveOptions run;
           run.method = method;
           run.order = k;
           const Solution got = solve(fo, oi.objective, run);
           CHECK(got.optimal);
-          CHECK(got.value == want.value);
+          CHECK(got.value == best.value);
           REQUIRE(got.mesh);
           CHECK(got.value == evaluate(oi.objective, *got.mesh));
           CHECK(is_k_order(*got.mesh, fo.base, k));
         }
         FirstOrder plain = fo;
         plain.base.coords.set_max_edge(INFINITY);
-        changed += want.value != k_order_brute_force(plain, oi.objective, k, 20'000'000).value;
+        changed += best.value != k_order_brute_force(plain, oi.objective, k, kNodes).value;
       }
     }
   }
-  CHECK(tried == 25);
+  MESSAGE(tried, " rasters, ", changed, " optima changed by the domain");
+  CHECK(tried >= 12);
   CHECK(changed > 50);  // (the domain changed many optima)
 }
 
@@ -460,17 +475,25 @@ TEST_CASE("domain: at order k the vertices away from the holes keep the fast pat
 TEST_CASE("domain: the vertices' fans read the domain's terms: one fan window over everything, the stars' bound and floor, against brute force (k = 1 to 3)") {
   // A fan decides which of its triangles are inside: one window over every
   // vertex finds the optimum, and the stars never bound past it.
-  int whole = 0, bounds = 0, floors = 0, tight = 0;
+  // (instances whose k-OD triangulations are too many to list are left out)
+  int instances = 0, whole = 0, bounds = 0, floors = 0, tight = 0;
   for (uint32_t k : {1u, 2u, 3u})
     for (uint64_t seed = 1; seed <= 16; ++seed) {
       const FirstOrder fo = seed % 2 ? raster_with_holes(seed * 7 + k) : with_domain(seed * 7 + k, 0.1 + 0.1 * static_cast<double>(seed % 4));
       const Mesh& dt = fo.base;
       const KOrderStructure structure(dt, k, {});
+      std::vector<double> wants;
+      try {
+        for (const auto& oi : objectives()) wants.push_back(k_order_brute_force(fo, oi.objective, k, 300'000).value);
+      } catch (const LimitError&) {
+        continue;
+      }
+      ++instances;
       for (const auto& oi : objectives()) {
         CAPTURE(k);
         CAPTURE(seed);
         CAPTURE(oi.id);
-        const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
+        const double want = wants[static_cast<size_t>(oi.objective)];
         const double delaunay_value = evaluate(oi.objective, dt);
         WindowLimits all;
         all.per_window = 1u << 30, all.max_steps = 100'000'000;
@@ -491,9 +514,10 @@ TEST_CASE("domain: the vertices' fans read the domain's terms: one fan window ov
         }
       }
     }
-  MESSAGE(whole << " whole windows, " << bounds << " star bounds (" << tight << " tight), " << floors << " star floors");
-  CHECK(whole == 3 * 16 * 5);  // (the counts: convex and mixed vertices, minima, extrema, convex edges)
+  MESSAGE(instances << " instances, " << whole << " whole windows, " << bounds << " star bounds (" << tight << " tight), " << floors << " star floors");
+  CHECK(instances >= 36);
+  CHECK(whole == instances * 5);  // (the counts: convex and mixed vertices, minima, extrema, convex edges)
   CHECK(bounds == whole);
   CHECK(tight > bounds / 2);
-  CHECK(floors == 3 * 16 * 7);  // (every min-max objective)
+  CHECK(floors == instances * 7);  // (every min-max objective)
 }
