@@ -151,14 +151,12 @@ const aroundCorner = (c: Cell, k: number): [Cell, number][] => {
 const cellKey = ([q, r]: Cell) => `${q},${r}`;
 const adjacent = (a: Cell, b: Cell) => NEIGHBOUR_DIRS.some(([dq, dr]) => a[0] + dq === b[0] && a[1] + dr === b[1]);
 
-/** Where each clause sits: a corner (cell, corner index of the first literal's
- * cell) and, per literal, its fan's corner index there. */
+/** Where a clause sits: per literal, its variable and that fan's index of the
+ * clause's corner; `key` is the corner's position. */
 interface ClauseSite {
   clause: number;
-  /** Per literal: its variable's cell and that cell's index of the corner. */
   at: { variable: number; literal: Literal; k: number }[];
   key: string;
-  /** A unit's extra point direction is decided with the polarity. */
 }
 
 /** Inner point indices of corner k's two diagonal neighbours in a fan: the
@@ -169,7 +167,7 @@ const candidates = (k: number) => ({ ccw: (k + 5) % 6, cw: (k + 1) % 6 });
  * Three: about 120 degrees apart, so all three leave no plane with them below
  * and any two do (two nearly opposite ones alone would make it mixed); two:
  * nearly opposite, on a line through it. */
-function falseNeighboursSpan(z: [number, number], pts: [number, number][]): boolean {
+function falseNeighboursFit(z: [number, number], pts: [number, number][]): boolean {
   const angle = (a: [number, number], b: [number, number]) => {
     const u = [a[0] - z[0], a[1] - z[1]], v = [b[0] - z[0], b[1] - z[1]];
     return Math.acos((u[0]! * v[0]! + u[1]! * v[1]!) / (Math.hypot(u[0]!, u[1]!) * Math.hypot(v[0]!, v[1]!))) * (180 / Math.PI);
@@ -185,11 +183,11 @@ function falseNeighboursSpan(z: [number, number], pts: [number, number][]): bool
 interface Plan {
   cells: Cell[];
   ccwIsTrue: boolean[];
-  /** Per clause: the corner (cell of its first literal, corner index) and per literal the corner index in its own cell. */
   sites: ClauseSite[];
 }
 
-/** Heights and roles a plan asks for; null when two clauses want one inner point at different heights. */
+/** The level each inner point next to a clause vertex must have ("false": stays
+ * at ±L; "true": drops to ±TRUE_Z·L), or the reason no levels fit. */
 function planHeights(f: Cnf, plan: Plan): { inner: Map<string, 'false' | 'true'>; reason: string | null } {
   const inner = new Map<string, 'false' | 'true'>();
   const want = (cell: Cell, i: number, level: 'false' | 'true'): string | null => {
@@ -291,7 +289,7 @@ function siteWorks(cells: Cell[], ccwIsTrue: boolean[], at: { variable: number; 
     const { ccw, cw } = candidates(a.k);
     return innerOf(cells[a.variable]!, falseIsCcw ? ccw : cw);
   });
-  return falseNeighboursSpan(z, falses);
+  return falseNeighboursFit(z, falses);
 }
 
 /**

@@ -35,8 +35,8 @@ export function createMixedView(ctx: TeachContext): TeachView {
     buildTitle: 'Build the gadget for this formula and solve it exactly (fewest mixed vertices)',
     run: () => runner.run(),
     lead: [
-      'Each variable is a fan on a hexagonal grid: a ring of 6 flippable quads. An inner point is mixed exactly when both quads beside it use the diagonal that reaches it, so the fan is free of mixed points only when every quad turns the same way, clockwise or counterclockwise: the variable’s two values. ',
-      'A clause is a corner where its variables’ fans meet (three around a corner for three literals, two sharing a side for two): the clause vertex is mixed exactly when the diagonals of all its false literals reach it. The centre points of the fans and of the empty cells around them are always mixed, so the fewest mixed vertices is that floor exactly when the formula is satisfiable. See ',
+      'Each variable is a fan: a ring of 6 flippable quads on a hexagonal grid. An inner point is mixed exactly when both quads beside it use the diagonal that reaches it, so a fan free of mixed points turns all one way, clockwise or counterclockwise: the variable’s two values. ',
+      'A clause is a corner where its variables’ fans meet, mixed exactly when the diagonals of all its false literals reach it. The centre points are always mixed, so the fewest mixed vertices is that floor exactly when the formula is satisfiable. See ',
       paperLink('3.1'),
       '.',
     ],
