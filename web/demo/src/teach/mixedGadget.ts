@@ -337,8 +337,9 @@ function polarities(f: Cnf): { ccwIsTrue: boolean[]; part: number[] } {
   return { ccwIsTrue, part: Array.from({ length: n }, (_, v) => find(v)) };
 }
 
-/** Give up a layout search after this many placements tried. */
-const SEARCH_LIMIT = 20000;
+/** Give up a layout search after this many steps (placements and corner
+ * choices), so that the page answers within a second whatever is typed. */
+const SEARCH_LIMIT = 200000;
 
 /** Find cells, polarities and clause corners for the formula, or say why not:
  * each connected part of the formula is placed on its own, its variables one by
@@ -353,7 +354,7 @@ function findPlan(f: Cnf): Plan {
   const ccwIsTrue = pol.ccwIsTrue.slice();
   const sites: ClauseSite[] = [];
   let why = '';
-  let tried = 0;
+  const budget = { steps: 0 };
   let shiftQ = 0;
   for (const part of parts) {
     // Breadth-first order: every variable after the first has a placed clause neighbour.
@@ -368,7 +369,7 @@ function findPlan(f: Cnf): Plan {
         for (const flip of [false, true]) {
           for (const v of part) ccwIsTrue[v] = pol.ccwIsTrue[v] !== flip;
           const local = cells.map((c, w) => (part.includes(w) ? c : undefined)) as Cell[];
-          const got = chooseCorners(f, local, ccwIsTrue, clausesHere, (reason) => (why = reason));
+          const got = chooseCorners(f, local, ccwIsTrue, clausesHere, budget, (reason) => (why = reason));
           if (got) {
             found = got;
             return true;
@@ -376,7 +377,7 @@ function findPlan(f: Cnf): Plan {
         }
         return false;
       }
-      if (++tried > SEARCH_LIMIT) return false;
+      if (++budget.steps > SEARCH_LIMIT) return false;
       const v = order[i]!;
       const near = order.slice(0, i).find((w) => neighbours[v]!.has(w));
       const options: Cell[] = near === undefined ? [[0, 0]] : NEIGHBOUR_DIRS.map(([dq, dr]) => [cells[near]![0] + dq, cells[near]![1] + dr] as Cell);
@@ -396,7 +397,7 @@ function findPlan(f: Cnf): Plan {
       return false;
     };
     if (!place(0) || !found) {
-      if (tried > SEARCH_LIMIT) throw new MixedLayoutError('the search for a layout on the grid gave up: try a smaller formula');
+      if (budget.steps > SEARCH_LIMIT) throw new MixedLayoutError('the search for a layout on the grid gave up: try a smaller formula');
       throw new MixedLayoutError(`this formula does not fit the grid of single fans: ${why || 'the fans of its clauses cannot all meet at corners (three fans around each three-literal clause\'s corner, two sharing a side for a two-literal one)'}`);
     }
     // Move this part right of the previous ones (an even shift of q, with r
@@ -412,12 +413,13 @@ function findPlan(f: Cnf): Plan {
 
 /** A corner per clause (distinct, with its false neighbours around it, heights
  * consistent), or null with the reason given to `fail`. */
-function chooseCorners(f: Cnf, cells: Cell[], ccwIsTrue: boolean[], clauses: number[], fail: (why: string) => void): ClauseSite[] | null {
+function chooseCorners(f: Cnf, cells: Cell[], ccwIsTrue: boolean[], clauses: number[], budget: { steps: number }, fail: (why: string) => void): ClauseSite[] | null {
   const options = clauseOptions(f, cells, clauses);
   const sites: ClauseSite[] = [];
   const taken = new Set<string>();
   let noUnitRoom = false;
   const choose = (i: number): boolean => {
+    if (++budget.steps > SEARCH_LIMIT) return false;
     if (i === clauses.length) {
       const { reason } = planHeights(f, { cells, ccwIsTrue, sites });
       if (reason) fail(reason);
