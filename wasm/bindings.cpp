@@ -150,8 +150,15 @@ class TerrainHandle {
     options.order = order_from_number(order);
     options.trace = trace;
     if (progress.typeOf().as<std::string>() == "function")
-      options.progress = paced([progress](double done, double total) {
-        const val r = progress(done, total);
+      options.progress = phased([progress](const ProgressPoint& p) {
+        // (done, total, info): the phase's fraction as done out of 1, and the phase by name.
+        val info = val::object();
+        info.set("phase", std::string(phase_name(p.phase)));
+        info.set("fraction", p.fraction);
+        info.set("sized", p.sized);
+        const std::optional<double> left = seconds_left(p);
+        info.set("secondsLeft", left ? val(*left) : val::null());
+        const val r = progress(p.fraction, 1, info);
         return !(r.isFalse());
       });
     check_options(options);
@@ -196,14 +203,14 @@ class TerrainHandle {
   // Any order (order k > 1: k-th order Delaunay triangulations; the result then
   // also carries its triangles, input indices, since it is not a choice of
   // diagonals). The core checks every option (check_options). progress:
-  // undefined, or a JS function (done, total) returning false to cancel.
+  // undefined, or a JS function (done, total, info) returning false to cancel.
   val solve(const std::string& objective, const std::string& method, double epsilon, bool trace, double order,
             val progress) const {
     return guarded([&] {
       const Objective o = objective_of(objective);
       const SolveOptions options = options_of(method, epsilon, trace, order, progress);
       // Measured first, where progress can still stop it.
-      const double delaunay_value = t_.delaunay_value(o, options.progress);
+      const double delaunay_value = t_.delaunay_value(o, in_phase(options.progress, Phase::Measuring));
       Solution s = hodt::solve(t_.structure(), o, options);
       s.delaunay_value = delaunay_value;
       return solution_object(s);
@@ -215,7 +222,7 @@ class TerrainHandle {
     return guarded([&] {
       const Objective o = objective_of(objective);
       const SolveOptions options = options_of(method, epsilon, true, order, progress);
-      const double delaunay_value = t_.delaunay_value(o, options.progress);
+      const double delaunay_value = t_.delaunay_value(o, in_phase(options.progress, Phase::Measuring));
       Explanation e = hodt::explain(t_.structure(), o, options);
       e.solution.delaunay_value = delaunay_value;
       if (e.regions) {

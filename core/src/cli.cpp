@@ -211,7 +211,7 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     PhaseTimes times;
     auto started = Clock::now();
     const std::string name = file == "-" ? "stdin" : escape_input(file);
-    progress.step("reading " + name);
+    progress.step(Phase::Reading, name);
     std::string error;
     const std::optional<std::string> text = host.read(file, error);
     if (!text) throw InputError(name + ": " + file_error_message(error, FileAccess::Read));
@@ -221,7 +221,7 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     times.read_ms = ms_since(started);
 
     started = Clock::now();
-    progress.step("triangulating " + std::to_string(parsed.lines.size()) + " points");
+    progress.step(Phase::Triangulating, std::to_string(parsed.lines.size()) + " points");
     PointLabels labels;
     labels.lines = parsed.lines;
     Terrain terrain;
@@ -272,9 +272,8 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
       comment = std::string("hodt ") + version() + ": the Delaunay triangulation of " + name;
     } else {
       started = Clock::now();
-      progress.step("solving " + objective_id);
-      if (!quiet && host.show_progress && (force_progress || host.stderr_is_terminal))
-        options.progress = [&progress](double done, double total) { return progress.tick(done, total); };
+      progress.solving(objective_id + (options.order > 1 ? ", order " + std::to_string(options.order) : ""));
+      options.progress = progress.solve_progress();
       Solution s = solve(terrain.structure(), *objective, options);
       s.delaunay_value = terrain.delaunay_value(*objective);
       times.solve_ms = ms_since(started);
@@ -287,7 +286,7 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
 
     std::optional<TinData> tin;  // made once, for the first mesh format
     for (const Output& o : outputs) {
-      progress.step("writing " + o.path);
+      progress.step(Phase::Writing, o.path);
       bool ok;
       if (o.format == OutputFormat::Json) {
         ok = host.write(o.path, written + "\n", error);

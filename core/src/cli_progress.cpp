@@ -7,8 +7,14 @@ namespace hodt {
 namespace {
 constexpr double kQuietSeconds = 1;         // a terminal sees nothing of shorter runs
 constexpr double kTerminalRedraw = 0.1;     // seconds between redraws in place
-constexpr double kLineInterval = 1;         // seconds between plain progress lines
+constexpr double kLineInterval = 1;         // seconds between plain progress lines of one phase
+constexpr double kPhaseLineInterval = 0.2;  // ... and at least this between those of new phases
 const char* const kClearLine = "\r\x1b[K";  // carriage return, erase to the end of the line
+
+std::string about(double seconds) {
+  if (seconds < 90) return std::to_string(std::lround(std::max(1.0, seconds))) + " s";
+  return std::to_string(std::lround(seconds / 60)) + " min";
+}
 }  // namespace
 
 CliProgress::CliProgress(Show show, bool terminal, bool forced)
@@ -32,19 +38,42 @@ void CliProgress::draw(const std::string& line) {
   }
 }
 
-void CliProgress::step(const std::string& what) {
-  step_ = what;
-  if (forced_ || (terminal_ && seconds() >= kQuietSeconds)) draw("hodt: " + step_);
+void CliProgress::step(Phase phase, const std::string& what) {
+  phase_ = phase;
+  if (forced_ || (terminal_ && seconds() >= kQuietSeconds)) draw("hodt: " + std::string(phase_name(phase)) + " " + what);
 }
 
-bool CliProgress::tick(double done, double total) {
-  if (!show_ || (!forced_ && !terminal_)) return true;
+void CliProgress::solving(const std::string& what) {
+  solving_ = what;
+  phase_ = Phase::Solving;
+  if (forced_ || (terminal_ && seconds() >= kQuietSeconds)) draw("hodt: " + line(ProgressPoint{}, what));
+}
+
+Progress CliProgress::solve_progress() {
+  if (!shown()) return {};
+  return phased([this](const ProgressPoint& p) { return tick(p); });
+}
+
+std::string CliProgress::line(const ProgressPoint& p, const std::string& what) {
+  std::string text = std::string(phase_name(p.phase)) + " (" + what + ")";
+  if (p.sized) {
+    text += ": " + std::to_string(static_cast<int>(std::floor(100 * p.fraction))) + "%";
+    if (const std::optional<double> left = seconds_left(p)) text += ", about " + about(*left) + " left";
+  } else if (p.seconds >= 1) {
+    text += ": " + std::to_string(static_cast<long>(p.seconds)) + " s so far";
+  }
+  return text;
+}
+
+bool CliProgress::tick(const ProgressPoint& point) {
+  if (!shown()) return true;
   const double now = seconds();
   if (!forced_ && now < kQuietSeconds) return true;
-  if (now - last_draw_ < (terminal_ ? kTerminalRedraw : kLineInterval)) return true;
-  const double percent = total > 0 ? std::floor(100 * std::min(1.0, done / total)) : 0;
-  draw("hodt: " + step_ + ": " + std::to_string(static_cast<int>(percent)) + "% of this phase, " +
-       std::to_string(static_cast<long>(now)) + " s");
+  const bool new_phase = phase_ != point.phase;
+  const double interval = terminal_ ? kTerminalRedraw : new_phase ? kPhaseLineInterval : kLineInterval;
+  if (!(new_phase && terminal_) && now - last_draw_ < interval) return true;
+  phase_ = point.phase;
+  draw("hodt: " + line(point, solving_));
   return true;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 
 #include "hodt/error.hpp"
@@ -37,6 +38,30 @@ std::vector<uint8_t> quads_touching_outside(const FirstOrder& fo) {
                   !edge_inside(m, k.c, k.b) || !edge_inside(m, k.b, k.d) || !edge_inside(m, k.d, k.a);
   }
   return touching;
+}
+
+std::vector<uint8_t> vertices_near_outside(const Mesh& dt, const std::vector<std::pair<uint32_t, uint32_t>>& useful) {
+  std::vector<uint8_t> near(dt.num_vertices(), 0);
+  if (!has_domain(dt)) return near;
+  std::vector<std::vector<uint32_t>> adj(dt.num_vertices());
+  auto join = [&](uint32_t u, uint32_t v) { adj[u].push_back(v), adj[v].push_back(u); };
+  for (const auto& [u, v] : useful) join(u, v);
+  for (uint32_t e = 0; e < dt.halfedges.size(); ++e)
+    if (dt.halfedges[e] < static_cast<int32_t>(e)) join(dt.origin(e), dt.target(e));
+  for (auto& a : adj) {
+    std::sort(a.begin(), a.end());
+    a.erase(std::unique(a.begin(), a.end()), a.end());
+  }
+  // A triangle uvw with a long edge uv: u, v and every common neighbour w.
+  for (uint32_t u = 0; u < adj.size(); ++u)
+    for (uint32_t v : adj[u]) {
+      if (v < u || edge_inside(dt, u, v)) continue;
+      near[u] = near[v] = 1;
+      std::vector<uint32_t> common;
+      std::set_intersection(adj[u].begin(), adj[u].end(), adj[v].begin(), adj[v].end(), std::back_inserter(common));
+      for (uint32_t w : common) near[w] = 1;
+    }
+  return near;
 }
 
 std::optional<std::string> empty_domain_warning(const Mesh& dt) {

@@ -42,8 +42,9 @@ RegionExplanation region_explanation(const Mesh& dt, uint32_t k, const Progress&
 Explanation explain(const FirstOrder& fo, Objective objective, SolveOptions options) {
   Explanation e;
   options.explanation = &e;
+  options.progress = as_phased(options.progress, options.progress_interval_ms);  // (one run: the solve and the regions)
   e.solution = solve(fo, objective, options);
-  if (fo.is_delaunay) e.regions = region_explanation(fo.base, options.order, options.progress);
+  if (fo.is_delaunay) e.regions = region_explanation(fo.base, options.order, in_phase(options.progress, Phase::FindingRegions));
   return e;
 }
 

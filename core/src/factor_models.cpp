@@ -303,7 +303,7 @@ FactorGraph factor_model(const FirstOrder& fo, Objective o, const DpLimits& limi
       for (uint32_t e = 0; e < m.halfedges.size(); ++e)
         if (!diagonal[e] && m.halfedges[e] < static_cast<int32_t>(e))
           fixed.push_back(edge_length(m.point(m.origin(e)), m.point(m.target(e))));
-      g.constant = order_free_sum(std::move(fixed));
+      g.constant = order_free_sum(fixed);
       break;
     }
     case Objective::MinmaxTriangleArea: {

@@ -32,6 +32,7 @@ Regions glue_pairs(const Mesh& dt, const Regions& R, const std::function<bool(ui
   Regions out;
   out.order = R.order;
   out.useful = R.useful;
+  out.near_outside = R.near_outside;
   out.fixed = R.fixed;
   for (uint32_t e = 0; e < dt.halfedges.size(); ++e) {
     const int32_t twin = dt.halfedges[e];

@@ -128,6 +128,7 @@ struct FirstOrderStart {
       SolveOptions first = options;
       first.method = Method::Auto;
       first.order = 1;
+      first.progress = hold_in_phase(options.progress, Phase::Searching);  // (the search's start)
       solution = solve(fo, o, first);
       mesh = triangulate(fo, solution->choice);
       value = evaluate(o, *mesh);
@@ -140,20 +141,23 @@ struct FirstOrderStart {
 // triangulations are the choices of a diagonal per quad: a singly flippable
 // structure, which the first order solvers take as it is (their fast paths and
 // proven bounds). The common case of DEM grids whose cells are not square, up
-// to k = 3 or more. Not within a domain (the first order rules do not hold
-// there) and not for brute force (which enumerates the instance).
+// to k = 3 or more. Not for brute force (which enumerates the instance).
 // When the quads are the first order ones (every first order quad is one, so
 // equal counts say so), the first order result is the answer (method auto:
-// the ladder's, solved once).
+// the ladder's, solved once). Within a domain only then: the first order
+// paths read the domain on any quads (a triangle's being inside depends on its
+// quad's diagonal alone, solve.cpp), but where they refuse they hand over to
+// the region engine at order 1, whose regions are the first order quads.
 std::optional<KOrderResult> solve_as_quads(const Mesh& dt, Objective o, const Regions& skeleton,
                                            const SolveOptions& options, FirstOrderStart& first_order) {
-  if (has_domain(dt) || options.method == Method::BruteForce) return std::nullopt;
+  if (options.method == Method::BruteForce) return std::nullopt;
   uint32_t quads_at_k = 0;
   for (const Region& region : skeleton.regions) {
     if (region.delaunay_triangles.size() > 2) return std::nullopt;
     quads_at_k += region.delaunay_triangles.size() == 2;
   }
   const bool same = quads_at_k == first_order.fo.num_quads();
+  if (!same && has_domain(dt)) return std::nullopt;
   std::optional<FirstOrder> own;
   if (!same) {
     std::vector<uint8_t> marked(dt.halfedges.size(), 0);
@@ -534,8 +538,13 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
                            const UsefulEdges* above = nullptr) {
   const Mesh& dt = fo.base;
   if (options.method == Method::BruteForce) {
-    return brute_force_k_order(dt, o, k, budgets.max_nodes_per_region, options.progress);
+    return brute_force_k_order(dt, o, k, budgets.max_nodes_per_region, in_phase(options.progress, Phase::SolvingExactly));
   }
+  // The phases of this order's steps (progress.hpp).
+  const Progress finding = in_phase(options.progress, Phase::FindingRegions);
+  const Progress exactly = in_phase(options.progress, Phase::SolvingExactly);
+  const Progress searching = in_phase(options.progress, Phase::Searching);
+  const Progress proving = in_phase(options.progress, Phase::ProvingBound);
   const ObjectiveTerms& description = objective_terms(o, dt);
   const Sense sense = info(o).sense;
   const double global = description.global_bound ? description.global_bound(dt) : sense == Sense::Min ? -INFINITY : INFINITY;
@@ -551,10 +560,10 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     return r;
   }
   // (The ladder's rungs read their useful edges from the top order's.)
-  const UsefulEdges by_order = above ? UsefulEdges{} : useful_edges_by_order(dt, k, options.progress);
+  const UsefulEdges by_order = above ? UsefulEdges{} : useful_edges_by_order(dt, k, finding);
   const UsefulEdges& orders = above ? *above : by_order;
   std::vector<std::pair<uint32_t, uint32_t>> useful = orders.at(k);
-  Regions skeleton = k_order_skeleton(dt, k, useful, options.progress);
+  Regions skeleton = k_order_skeleton(dt, k, useful, finding);
   if (k >= 2)  // (order 1 stays on the general engine: solve() takes the first order paths itself)
     if (auto quads = solve_as_quads(dt, o, skeleton, options, first_order)) return *quads;
   // The ladder's rung below: every j-OD triangulation (j < k) is k-OD, so the
@@ -571,11 +580,12 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
     if (lower || k < 3) return;
     SolveOptions lower_options = options;
     lower_options.method = Method::Auto;
+    lower_options.progress = hold_in_phase(options.progress, Phase::Searching);  // (a start for this order's search)
     lower = solve_regions(fo, o, k <= 8 ? k - 1 : k / 2, lower_options, budgets, first_order, memo, false, &orders);
   };
   if (k >= 5) solve_lower();
-  const KOrderStructure structure(dt, k, std::move(useful), options.progress);
-  RegionEngine engine(dt, o, structure, std::move(skeleton), budgets, options.progress, memo);
+  const KOrderStructure structure(dt, k, std::move(useful), finding);
+  RegionEngine engine(dt, o, structure, std::move(skeleton), budgets, finding, memo);
   Regions& R = engine.R;
   const Candidates& cand = engine.cand;
   const RegionTerms& terms = engine.terms;
@@ -590,11 +600,11 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // max-convex-edges 21 -> 8.5 s).
   const bool counts = !model.graph.relaxed_terms && integral_sum(model.graph);
   const bool provable = bounded && counts;
-  if (provable && R.incomplete && list_whole(dt, o, engine, options.progress))
+  if (provable && R.incomplete && list_whole(dt, o, engine, finding))
     refused = engine.exact_refusal().value_or("");
   if (refused.empty() && options.method != Method::Approx) {
     uint32_t width = 0;
-    if (auto x = engine.exact(options.progress, refused, &width)) {
+    if (auto x = engine.exact(exactly, refused, &width)) {
       r.triangulation = R.triangulation(dt, *x);
       r.value = evaluate(o, r.triangulation);
       r.optimal = true;
@@ -625,7 +635,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   auto min_max_proof = [&](double value) -> std::string {
     if (!bounded || description.combine != TermCombine::Max || value == not_shown) return "";
     if (!better(sense, terms.floor(), value)) return "its worst term is one that every k-OD triangulation has";
-    if (none_below(relaxation(model.graph), value, options.progress))
+    if (none_below(relaxation(model.graph), value, proving))
       return "no k-OD triangulation has every term below it (arc consistency over the regions' states)";
     not_shown = value;
     return "";
@@ -662,12 +672,12 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // the smooth sample, max-convex-vertices, 4711 for a bound of 4712 led the rest
   // to a bound in 21 s, the rung's start to the proof in 4).
   if (provable && k < 5 && R.incomplete && options.method != Method::Approx) {
-    if (added) model = update_region_model(std::move(model), dt, R, o, changed, engine.model_limits, options.progress);
+    if (added) model = update_region_model(std::move(model), dt, R, o, changed, engine.model_limits, searching);
     changed.assign(R.regions.size(), 0), added = false;
     std::vector<size_t> counts(R.regions.size());
     for (size_t i = 0; i < R.regions.size(); ++i) counts[i] = R.regions[i].states.size();
-    std::string how = take_listed(engine.best_listed(listed_states(R, start), options.progress));
-    bound_by_fill_graphs(dt, o, engine, r, how, options.progress, 0, kQuickSweeps);
+    std::string how = take_listed(engine.best_listed(listed_states(R, start), searching));
+    bound_by_fill_graphs(dt, o, engine, r, how, proving, 0, kQuickSweeps);
     if (r.optimal) return r;
     for (size_t i = 0; i < R.regions.size(); ++i) R.regions[i].states.resize(counts[i]);
   }
@@ -678,8 +688,8 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
       start = std::move(lower->triangulation), start_value = lower->value, start_name = "answer at order " + std::to_string(k <= 8 ? k - 1 : k / 2);
     if (start_proven()) return r;
   }
-  if (added) model = update_region_model(std::move(model), dt, R, o, changed, engine.model_limits, options.progress);
-  const ListedBest listed = engine.best_listed(listed_states(R, start), options.progress);
+  if (added) model = update_region_model(std::move(model), dt, R, o, changed, engine.model_limits, searching);
+  const ListedBest listed = engine.best_listed(listed_states(R, start), searching);
   if (bounded && listed.bound_only && !R.incomplete && !model.graph.relaxed_terms &&
       !better(sense, listed.listed_value, start_value)) {
     // The model is the whole problem, so its mini-bucket value bounds the
@@ -699,7 +709,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // 10), bands of Delaunay triangles kept every lambda layers cut the regions too
   // large for the engine (slower: lambda runs of it).
   if (!refuted && bounded && k >= 2 && options.method == Method::Approx) {
-    const KOrderBaker b = k_order_baker(dt, o, structure, k, options.epsilon, budgets.max_nodes_per_region, options.progress);
+    const KOrderBaker b = k_order_baker(dt, o, structure, k, options.epsilon, budgets.max_nodes_per_region, in_phase(options.progress, Phase::Approximating));
     if (b.triangulation && better(sense, b.value, r.value))
       r.triangulation = std::move(*b.triangulation), r.value = b.value, how = b.summary();
     else if (b.shifts)
@@ -708,19 +718,19 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // Then k-OD flips that improve the terms around them (they reach into the
   // regions too large to list).
   Mesh flipped = r.triangulation;
-  if (!refuted && improve_by_flips(flipped, dt, k, o, options.progress, memo)) {
+  if (!refuted && improve_by_flips(flipped, dt, k, o, searching, memo)) {
     const double v = evaluate(o, flipped);
     if (better(sense, v, r.value)) r.triangulation = std::move(flipped), r.value = v, how += ", then k-OD flips";
   }
   r.method = "heuristic";
   if (!bounded) {  // (a start for a higher order: nothing proven, but the regions' fill graphs may improve it)
     if (counts && R.incomplete)
-      bound_by_fill_graphs(dt, o, engine, r, how, options.progress, 0, k >= 5 ? kRungDualSweeps : kDualSweeps);
+      bound_by_fill_graphs(dt, o, engine, r, how, searching, 0, k >= 5 ? kRungDualSweeps : kDualSweeps);
     r.optimal = false;
     return r;
   }
   StateDpLimits dl;
-  dl.progress = options.progress;
+  dl.progress = proving;
   // The bound: the model's relaxation, or the tighter one that reads the regions
   // too large to list through their views; when those views agree, a
   // triangulation that meets it.
@@ -736,14 +746,14 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // 131k-cell DEM at k = 4, max-convex-vertices, where the views cost twice the
   // dual and proved nothing).
   if (provable && better(sense, bound, r.value)) {
-    if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, options.progress, unglued)) {
+    if (const std::optional<double> d = prove_by_dual(dt, o, engine, r, how, refused, proving, unglued)) {
       if (r.optimal) return r;
       bound = tighter(sense, bound, *d);
     }
     if (dual_first) bound = tighter(sense, bound, relaxed());
   }
   ViewBoundLimits vl;
-  vl.views.progress = vl.dp.progress = options.progress;
+  vl.views.progress = vl.dp.progress = proving;
   vl.model = engine.model_limits;
   const bool met = !better(sense, bound, r.value);
   bool views_moved = false;  // (the regions' views tightened the bound)
@@ -760,7 +770,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // Min-max over regions not listed whole: thresholds refuted by the dual over their fill graphs.
   if (description.combine == TermCombine::Max && R.incomplete && better(sense, bound, r.value)) {
     RegionDualLimits limits;
-    limits.dual.progress = options.progress;
+    limits.dual.progress = proving;
     limits.dual.max_sweeps = 100;
     limits.model = engine.model_limits;
     if (const auto t = region_threshold_bound(dt, R, o, cand, terms, bound, r.value, limits)) {
@@ -773,7 +783,7 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // bound 0 before).
   if (description.combine == TermCombine::Max && better(sense, bound, r.value)) {
     StarBoundLimits stars;
-    stars.progress = options.progress;
+    stars.progress = proving;
     if (const auto f = star_floor(dt, o, cand, stars); f && better(sense, bound, *f)) {
       bound = *f;
       how += ", bound from the vertices' fans";
@@ -782,12 +792,12 @@ KOrderResult solve_regions(const FirstOrder& fo, Objective o, uint32_t k, const 
   // Counts and lengths: the bound from the vertices' stars, which lists no
   // region (one region of thousands of triangles, as from k = 6 on the volcano, too).
   if (description.combine == TermCombine::Sum && better(sense, bound, r.value))
-    bound = by_stars(dt, o, k, cand, r, bound, how, options.progress, memo, views_moved);
+    bound = by_stars(dt, o, k, cand, r, bound, how, proving, memo, views_moved);
   // The regions' fill graphs glued in pairs only now, where the stars left a gap
   // (10,000 DEM points at k = 4, min-mixed-vertices, 30 -> 25 s, and the 131k-cell
   // DEM, 78 -> 70 s: the stars prove what two levels of glue did not).
   if (unglued && better(sense, bound, r.value)) {
-    if (const std::optional<double> d = bound_by_fill_graphs(dt, o, engine, r, how, options.progress, kMaxGlue, kDualSweeps, &unglued)) {
+    if (const std::optional<double> d = bound_by_fill_graphs(dt, o, engine, r, how, proving, kMaxGlue, kDualSweeps, &unglued)) {
       if (r.optimal) return r;
       bound = tighter(sense, bound, *d);
     }
@@ -808,8 +818,8 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
                            const RegionLimits& budgets) {
   if (!fo.is_delaunay) throw InputError("higher order needs the Delaunay triangulation: not for user triangulations");
   FirstOrderStart first_order{fo, o, options, {}, 0, {}};
-  VertexTermMemo memo;  // (the ladder's orders meet the same stars too; none within a domain)
-  KOrderResult r = solve_regions(fo, o, k, options, budgets, first_order, has_domain(fo.base) ? nullptr : &memo);
+  VertexTermMemo memo;  // (the ladder's orders meet the same stars too)
+  KOrderResult r = solve_regions(fo, o, k, options, budgets, first_order, &memo);
   r.delaunay_value = evaluate(o, fo.base);
   return r;
 }
@@ -826,7 +836,7 @@ Solution k_order_solution(const FirstOrder& fo, Objective o, uint32_t k, const S
   check_options(checked);
   const auto t0 = std::chrono::steady_clock::now();
   KOrderResult r = solve_k_order(fo, o, k, options);
-  if (!is_k_order(r.triangulation, fo.base, k, options.progress)) throw std::logic_error("order k result is not k-OD");
+  if (!is_k_order(r.triangulation, fo.base, k, in_phase(options.progress, Phase::Measuring))) throw std::logic_error("order k result is not k-OD");
   Solution s;
   s.objective = o;
   s.method = r.method;

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "hodt/domain.hpp"
+#include "hodt/exact_sum.hpp"
 #include "hodt/kernel.hpp"
 #include "hodt/objective_terms.hpp"
 #include "hodt/portable_math.hpp"
@@ -79,23 +80,10 @@ double edge_length(const double* a, const double* b) {
   return std::sqrt(dx * dx + dy * dy);              // sqrt is correctly rounded everywhere
 }
 
-double order_free_sum(std::vector<double> values, const Progress& progress) {
-  // Sorted in runs, then merged, with progress in between: the same order as one
-  // sort (so the same sum), in steps short enough to cancel between.
-  constexpr size_t kRun = 1 << 15;
-  const size_t n = values.size();
-  for (size_t b = 0; b < n; b += kRun) {
-    std::sort(values.begin() + b, values.begin() + std::min(n, b + kRun));
-    report(progress, b, n);
-  }
-  for (size_t width = kRun; width < n; width *= 2)
-    for (size_t b = 0; b + width < n; b += 2 * width) {
-      std::inplace_merge(values.begin() + b, values.begin() + b + width, values.begin() + std::min(n, b + 2 * width));
-      report(progress, b, n);
-    }
-  double s = 0;
-  for (double v : values) s += v;
-  return s;
+double order_free_sum(const std::vector<double>& values) {
+  ExactSum s;
+  for (double v : values) s.add(v);
+  return s.value();
 }
 
 namespace {

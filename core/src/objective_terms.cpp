@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "hodt/domain.hpp"
+#include "hodt/exact_sum.hpp"
 #include "hodt/mean_area.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/pair_measures.hpp"
@@ -178,6 +179,15 @@ const std::array<ObjectiveTerms, kNumObjectives>& plain_table() {
 const ObjectiveTerms& objective_terms_without_domain(Objective o) { return plain_table()[static_cast<size_t>(o)]; }
 }  // namespace
 
+const ObjectiveTerms& objective_terms_inside(Objective o) {
+  static const std::array<ObjectiveTerms, kNumObjectives> table = [] {
+    std::array<ObjectiveTerms, kNumObjectives> t = make_table();
+    for (ObjectiveTerms& d : t) d.all_inside = true, d.global_bound = nullptr;  // (a bound on a whole triangulation: not a piece's)
+    return t;
+  }();
+  return table[static_cast<size_t>(o)];
+}
+
 const ObjectiveTerms& objective_terms(Objective o, const Mesh& m) {
   static const std::array<ObjectiveTerms, kNumObjectives> domain_table = with_domain(make_table());
   return (has_domain(m) ? domain_table : plain_table())[static_cast<size_t>(o)];
@@ -214,7 +224,7 @@ double vertex_term_in_domain(const ObjectiveTerms& d, const Mesh& m, const Star&
 }  // namespace
 
 double vertex_term(const ObjectiveTerms& d, const Mesh& m, const Star& s, double cut) {
-  if (d.domain != has_domain(m)) throw std::logic_error("objective terms read with the wrong domain");
+  if (d.domain != has_domain(m) && !d.all_inside) throw std::logic_error("objective terms read with the wrong domain");
   if (d.domain) return vertex_term_in_domain(d, m, s, cut);
   if (d.site != TermSite::VertexPair) return d.vertex(m, s);
   return largest_pair(d, m, s.triangles, s.num_triangles, cut);
@@ -238,9 +248,9 @@ double triangle_term(const ObjectiveTerms& d, const Mesh& m, const Tri& t) {
 
 double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
   const ObjectiveTerms& d = objective_terms(o, m);
-  // Sums are added in sorted order, so that equal triangulations listed
-  // differently have bit-identical totals.
-  std::vector<double> terms;
+  // Sums are exact until one rounding (exact_sum.hpp), so that equal
+  // triangulations listed differently have bit-identical totals.
+  ExactSum sum;
   double max = 0;
   WorkCounter work;
   // A term's cost in elementary steps: a vertex's grows with its degree (cubic
@@ -249,7 +259,7 @@ double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
     if (work.tick(units)) report(progress, done, total);
   };
   auto add = [&](double t) {
-    if (d.combine == TermCombine::Sum) terms.push_back(t);
+    if (d.combine == TermCombine::Sum) sum.add(t);
     else max = std::max(max, t);
   };
   // Within a domain each triangle is decided inside once; a term whose triangles
@@ -294,7 +304,7 @@ double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
       if (!d.domain || inside[t]) add(triangle_term(plain, m, base_triangle(m, t)));
     }
   }
-  return d.combine == TermCombine::Sum ? order_free_sum(std::move(terms), progress) : max;
+  return d.combine == TermCombine::Sum ? sum.value() : max;
 }
 
 }  // namespace hodt

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <map>
 #include <optional>
 
@@ -50,9 +51,10 @@ std::string_view unquote(std::string_view f) {
 // The fields of a line: split at each delimiter (',' or ';', blanks around a field
 // trimmed, a field in double quotes read to its closing quote, delimiters inside
 // included, as spreadsheets quote "1,5" under ','; trailing empty fields dropped as
-// a spreadsheet's trailing delimiter) or, for ' ', at runs of spaces and tabs.
-std::vector<std::string_view> split_fields(std::string_view line, char delimiter) {
-  std::vector<std::string_view> out;
+// a spreadsheet's trailing delimiter) or, for ' ', at runs of spaces and tabs;
+// into `out`, reused from line to line so that a line costs no allocation.
+void split_fields(std::string_view line, char delimiter, std::vector<std::string_view>& out) {
+  out.clear();
   if (delimiter == ' ') {
     for (size_t i = 0; i < line.size();) {
       while (i < line.size() && blank(line[i])) ++i;
@@ -61,7 +63,7 @@ std::vector<std::string_view> split_fields(std::string_view line, char delimiter
       if (j > i) out.push_back(unquote(line.substr(i, j - i)));
       i = j;
     }
-    return out;
+    return;
   }
   for (size_t i = 0;;) {
     size_t from = i;
@@ -73,20 +75,35 @@ std::vector<std::string_view> split_fields(std::string_view line, char delimiter
     i = j + 1;
   }
   while (!out.empty() && out.back().empty()) out.pop_back();
+}
+std::vector<std::string_view> split_fields(std::string_view line, char delimiter) {
+  std::vector<std::string_view> out;
+  split_fields(line, delimiter, out);
   return out;
 }
 
 // Lines end with LF (Unix), CR LF (Windows) or a lone CR (classic Mac, some exports).
 template <class F>
 void for_each_line(std::string_view text, F f) {
+  // Without a CR anywhere every line ends at the next LF, which memchr finds
+  // fastest; otherwise each character is tested for both.
+  if (text.empty()) return f(1, text);
+  const bool cr = std::memchr(text.data(), '\r', text.size()) != nullptr;
+  const char* const begin = text.data();
+  const char* const end = begin + text.size();
   int line = 0;
-  size_t i = 0;
-  while (i <= text.size()) {
-    size_t j = text.find_first_of("\r\n", i);
-    if (j == std::string_view::npos) j = text.size();
-    f(++line, text.substr(i, j - i));
-    if (j == text.size()) break;
-    i = j + (text[j] == '\r' && j + 1 < text.size() && text[j + 1] == '\n' ? 2 : 1);
+  for (const char* i = begin;;) {
+    const char* j;
+    if (!cr) {
+      j = static_cast<const char*>(std::memchr(i, '\n', static_cast<size_t>(end - i)));
+      if (!j) j = end;
+    } else {
+      j = i;
+      while (j != end && *j != '\n' && *j != '\r') ++j;
+    }
+    f(++line, std::string_view(i, static_cast<size_t>(j - i)));
+    if (j == end) break;
+    i = j + (*j == '\r' && j + 1 != end && j[1] == '\n' ? 2 : 1);
   }
 }
 
@@ -186,6 +203,7 @@ ParsedPoints read_text(std::string_view text, const Reader& r) {
   TextLayout layout;
   bool first = true;
   size_t want = 3;
+  std::vector<std::string_view> fields;
   for_each_line(text, [&](int line, std::string_view s) {
     if (blank_or_comment(s)) return;
     if (first) {
@@ -206,7 +224,7 @@ ParsedPoints read_text(std::string_view text, const Reader& r) {
         return;
       }
     }
-    const auto fields = split_fields(s, layout.delimiter);
+    split_fields(s, layout.delimiter, fields);
     if (fields.size() < want) {
       std::string what = want == 3 ? "expected 3 numbers x y z"
                                    : "expected " + std::to_string(want) + " fields, up to the columns named x, y and z";
@@ -341,10 +359,11 @@ ParsedPoints read_ascii_grid(std::string_view text, const Reader& r) {
   bool has_nodata = false;
   long row = 0;
   int last_line = 0;
+  std::vector<std::string_view> fields;
   for_each_line(text, [&](int line, std::string_view s) {
     if (blank_or_comment(s)) return;
     last_line = line;
-    const auto fields = split_fields(s, ' ');
+    split_fields(s, ' ', fields);
     double v;
     if (row == 0 && out.lines.empty() && !parse_double(fields[0], v)) {
       if (fields.size() != 2) r.fail(line, "expected 'key value' in the grid header, got " + shorten(s));

@@ -42,12 +42,12 @@ struct Fans {
 };
 
 // States with the same neighbours at a vertex (or the same neighbour classes)
-// share a class: what vertex terms see; for vertex-pair terms, the same triangles.
+// share a class: what vertex terms see; for vertex-pair terms, and at a vertex
+// that reads the domain's terms (TermsAtVertex), the same triangles.
 // items: a view's (only their vertices are read from it); null: every vertex
 // (a region, or its first view, which speaks for everything no other view does).
-Fans fans_of(const Mesh& dt, const ObjectiveTerms& d, const std::vector<std::vector<Tri>>& states,
+Fans fans_of(const Mesh& dt, const TermsAtVertex& at, const std::vector<std::vector<Tri>>& states,
              const std::vector<Tri>* items, const std::function<void()>& tick) {
-  const bool by_neighbors = !reads_star_triangles(d);
   Fans f;
   if (items) {  // (a view of one vertex of a long region: not its hundreds of others)
     for (const Tri& item : *items)
@@ -66,6 +66,8 @@ Fans fans_of(const Mesh& dt, const ObjectiveTerms& d, const std::vector<std::vec
   WordsMemo ids;
   std::vector<std::vector<Tri>> around(nv);
   std::vector<uint32_t> key, nb;
+  std::vector<const ObjectiveTerms*> terms(nv);
+  for (size_t i = 0; i < nv; ++i) terms[i] = &at.at(f.vertices[i]);
   for (size_t s = 0; s < states.size(); ++s) {
     tick();
     for (auto& a : around) a.clear();
@@ -76,10 +78,13 @@ Fans fans_of(const Mesh& dt, const ObjectiveTerms& d, const std::vector<std::vec
       }
     for (size_t i = 0; i < nv; ++i) {
       key.assign(1, static_cast<uint32_t>(i));
-      if (by_neighbors) {  // the neighbours (or their classes)
+      const ObjectiveTerms& d = *terms[i];
+      if (at.by_classes(f.vertices[i])) {  // their classes (TermsAtVertex::classes)
         star_neighbors(f.vertices[i], around[i], nb);
-        if (d.neighbor_class) key.push_back(neighbor_classes(d, dt, f.vertices[i], nb));
-        else if (d.term_of_degree) key.push_back(static_cast<uint32_t>(nb.size()));  // (the region's fixed ones are the same in every state)
+        key.push_back(at.classes(f.vertices[i], nb, around[i]));
+      } else if (!reads_star_triangles(d)) {  // the neighbours (or their count)
+        star_neighbors(f.vertices[i], around[i], nb);
+        if (d.term_of_degree) key.push_back(static_cast<uint32_t>(nb.size()));  // (the region's fixed ones are the same in every state)
         else key.insert(key.end(), nb.begin(), nb.end());
       } else {
         for (const Tri& t : around[i]) key.insert(key.end(), t.begin(), t.end());
@@ -140,6 +145,7 @@ struct Builder {
   const Mesh& dt;
   const Regions& R;
   const ObjectiveTerms& d;
+  const Objective o;
   RegionModel& M;
   StateGraph& g;
   const Progress& progress;
@@ -272,13 +278,16 @@ struct Builder {
   void vertex_terms(double max_factor, VertexTermMemo* memo) {
     std::vector<Fans> fans(src.size());
     std::vector<uint8_t> have(src.size(), 0);
-    // (Only terms over neighbour sets drop neighbours: a filter for them alone.)
+    // The terms each vertex reads (within a domain: those without one where
+    // nothing can be outside). (Only terms over neighbour sets drop neighbours:
+    // a filter for them alone, read at the vertices that read them.)
+    const TermsAtVertex at(dt, R, o);
     const std::optional<NeighborFilter> filter =
-        d.drop_neighbors ? std::optional<NeighborFilter>(std::in_place, dt, R, d) : std::nullopt;
+        at.inside().drop_neighbors ? std::optional<NeighborFilter>(std::in_place, dt, R, at.inside()) : std::nullopt;
     auto fans_at = [&](uint32_t i) -> const Fans& {
       if (!have[i]) {
         const std::vector<Tri>* items = i == first_src[src[i].region] ? nullptr : src[i].items;
-        fans[i] = fans_of(dt, d, states(i), items, [&] { tick(i, src.size()); }), have[i] = 1;
+        fans[i] = fans_of(dt, at, states(i), items, [&] { tick(i, src.size()); }), have[i] = 1;
       }
       return fans[i];
     };
@@ -310,8 +319,9 @@ struct Builder {
           choice_regions.push_back(r), local.push_back(lv);
         }
       }
+      const ObjectiveTerms& dv = at.at(v);
       for (size_t j = 0; j < choice_regions.size(); ++j) {
-        if (filter && choice_regions.size() > 1) merge_classes(*filter, fans[choice_regions[j]], local[j]);
+        if (filter && dv.drop_neighbors && choice_regions.size() > 1) merge_classes(*filter, fans[choice_regions[j]], local[j]);
         size *= static_cast<double>(fans[choice_regions[j]].fan[local[j]].size());
       }
       auto term = [&](const std::vector<uint32_t>& cls) {
@@ -321,7 +331,7 @@ struct Builder {
           tris.insert(tris.end(), fan.begin(), fan.end());
         }
         star_neighbors(v, tris, nb);
-        auto eval = [&] { return vertex_term(d, dt, Star(v, nb, tris)); };
+        auto eval = [&] { return vertex_term(dv, dt, Star(v, nb, tris)); };
         return memo ? (*memo)(v, nb, eval) : eval();
       };
       if (choice_regions.empty()) {
@@ -371,7 +381,7 @@ RegionModel region_model(const Mesh& dt, const Regions& R, Objective o, const Re
   g.combine = d.combine;
   g.sense = info(o).sense;
   g.term_max = d.term_max;
-  Builder b{dt, R, d, M, g, progress, {}, {}, {}};
+  Builder b{dt, R, d, o, M, g, progress, {}, {}, {}};
   M.variable_of_region.assign(R.regions.size(), -1);
   for (uint32_t r = 0; r < R.regions.size(); ++r) {
     const Region& region = R.regions[r];
@@ -405,7 +415,7 @@ RegionModel update_region_model(RegionModel M, const Mesh& dt, const Regions& R,
     return whole();
   const ObjectiveTerms& d = objective_terms(o, dt);
   StateGraph& g = M.graph;
-  Builder b{dt, R, d, M, g, progress, {}, {}, {}};
+  Builder b{dt, R, d, o, M, g, progress, {}, {}, {}};
   std::vector<uint8_t> var_changed(g.domain.size(), 0);
   auto reset = [&](int32_t x, size_t n, bool partial) {
     g.domain[x] = static_cast<uint32_t>(n);

@@ -4,6 +4,7 @@
 #include <map>
 #include <unordered_map>
 
+#include "hodt/domain.hpp"
 #include "hodt/fill_enumerator.hpp"
 
 namespace hodt {
@@ -14,15 +15,39 @@ constexpr uint32_t kVertexEntry = UINT32_MAX, kEdgeEntry = UINT32_MAX - 1;
 constexpr uint32_t kMaxCanonicalClasses = 4;  // (a table of 2^4 x 2^4 masks)
 }  // namespace
 
+TermsAtVertex::TermsAtVertex(const Mesh& dt, const Regions& R, Objective o)
+    : dt_(dt), domain_(objective_terms(o, dt)), inside_(domain_.domain ? objective_terms_inside(o) : domain_),
+      near_(R.near_outside) {}
+
+uint32_t TermsAtVertex::classes(uint32_t v, const std::vector<uint32_t>& nb, const std::vector<Tri>& triangles) const {
+  uint32_t mask = neighbor_classes(inside_, dt_, v, nb);
+  if (&at(v) != &inside_)
+    for (const Tri& t : triangles)
+      if (!triangle_inside(dt_, t)) return mask | outside_class();
+  return mask;
+}
+
+uint32_t RegionTerms::triangle_classes(uint32_t v, const Tri& t) const {
+  const ObjectiveTerms& plain = at_.inside();
+  uint32_t mask = 0;
+  for (uint32_t w : t)
+    if (w != v) mask |= 1u << plain.neighbor_class(dt_, v, w);
+  if (&at_.at(v) != &plain && !triangle_inside(dt_, t)) mask |= at_.outside_class();
+  return mask;
+}
+
 uint32_t RegionTerms::canonical_classes(uint32_t v, uint32_t mask) const {
   if (canonical_.empty()) return mask;
   if (interior_only(d_.site) && on_hull_[v]) return fixed_classes_[v];  // (no term at all)
-  const uint32_t masks = 1u << d_.classes;
-  return canonical_[fixed_classes_[v] * masks + mask];
+  return canonical_[fixed_classes_[v] * at_.masks() + mask];
 }
 
+// (The summaries below are of the terms without a domain: only the vertices
+// that read those (TermsAtVertex) use them.)
 RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o, const Candidates* candidates)
-    : dt_(dt), R_(R), cand_(candidates), d_(objective_terms(o, dt)), sense_(info(o).sense), filter_(dt, R, d_) {
+    : dt_(dt), R_(R), cand_(candidates), at_(dt, R, o), d_(at_.domain()), sense_(info(o).sense),
+      filter_(dt, R, at_.inside()) {
+  const ObjectiveTerms& plain = at_.inside();
   const uint32_t n = dt.num_vertices();
   std::vector<uint32_t> count(n, 0), seen(n, UINT32_MAX);
   for (uint32_t r = 0; r < R.regions.size(); ++r) {
@@ -39,15 +64,20 @@ RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o, const Ca
   if (reads_edges())
     for (uint32_t e = 0; e < dt.halfedges.size(); ++e)
       if (dt.halfedges[e] < 0 || R.fixed[e]) boundary_.emplace(edge_key(dt.origin(e), dt.target(e)), e);
-  if (reads_classes() && d_.classes <= kMaxCanonicalClasses) {
-    const uint32_t masks = 1u << d_.classes;
+  if (plain.neighbor_class && at_.masks() <= 1u << kMaxCanonicalClasses) {
+    const uint32_t masks = at_.masks();
     fixed_classes_.resize(n);
     for (uint32_t v = 0; v < n; ++v)
-      fixed_classes_[v] = static_cast<uint8_t>(neighbor_classes(d_, dt, v, filter_.fixed(v)));
+      fixed_classes_[v] = static_cast<uint8_t>(neighbor_classes(plain, dt, v, filter_.fixed(v)));
+    // (Within a domain: and the class outside, at the corners of a fixed
+    // triangle outside, which is in every triangulation.)
+    for (uint32_t t = 0; t < dt.num_triangles() && d_.domain; ++t)
+      if (R.regions[R.region_of_triangle[t]].delaunay_triangles.size() == 1 && !triangle_inside(dt, base_triangle(dt, t)))
+        for (uint32_t e = 3 * t; e < 3 * t + 3; ++e) fixed_classes_[dt.triangles[e]] |= static_cast<uint8_t>(at_.outside_class());
     // Masks a and b (both holding f) are alike when every m gives term(a | m) == term(b | m).
     auto alike = [&](uint32_t a, uint32_t b) {
       for (uint32_t m = 0; m < masks; ++m)
-        if (d_.term_of_classes(a | m) != d_.term_of_classes(b | m)) return false;
+        if (at_.term_of_classes(a | m) != at_.term_of_classes(b | m)) return false;
       return true;
     };
     canonical_.resize(masks * masks);
@@ -62,7 +92,7 @@ RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o, const Ca
     floor_ = fixed_edges_least(fixed_terms_max());
     if (d_.global_bound) floor_ = std::max(floor_, d_.global_bound(dt));
   }
-  if (reads_degree() && floor_ > 0) {
+  if (plain.term_of_degree && floor_ > 0) {
     useful_degree_.assign(n, 0);
     for (const auto& [a, b] : R.useful) ++useful_degree_[a], ++useful_degree_[b];
   }
@@ -81,8 +111,10 @@ RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o, const Ca
 }
 
 bool RegionTerms::harmless(uint32_t v, const Tri& t) const {
-  if (candidate_fan_.empty()) return false;
+  if (d_.site != TermSite::VertexPair) return false;
   const Tri c = canonical_triangle(t);
+  if (d_.domain && !triangle_inside(dt_, c)) return true;  // (in no pair the domain measures)
+  if (candidate_fan_.empty()) return false;
   const std::array<uint32_t, 4> key{v, c[0], c[1], c[2]};
   bool found = false;
   const std::span<const uint32_t> known = harmless_.find(key, found);
@@ -175,13 +207,13 @@ uint32_t RegionTerms::apex_kind(uint32_t a, uint32_t b, uint32_t w) const {
 void RegionTerms::extend_fan(uint32_t v, const Tri& t, uint32_t fresh, std::vector<uint32_t>& fan) const {
   const int i = t[0] == v ? 0 : t[1] == v ? 1 : 2;
   const uint32_t others[2] = {t[(i + 1) % 3], t[(i + 2) % 3]};
-  if (reads_classes() || reads_degree()) {  // one word
+  if (reads_classes(v) || reads_degree(v)) {  // one word
     if (fan.empty()) fan.push_back(0);
-    if (reads_classes())
-      for (uint32_t w : others) fan[0] = canonical_classes(v, fan[0] | 1u << neighbor_class(v, w));
+    if (reads_classes(v))
+      fan[0] = canonical_classes(v, fan[0] | triangle_classes(v, t));
     else if (degree_matters(v))
       fan[0] += fresh;
-  } else if (reads_fans()) {  // triangles, three words each, sorted
+  } else if (reads_fans(v)) {  // triangles, three words each, sorted
     const Tri c = canonical_triangle(t);
     if (harmless(v, c)) return;
     size_t j = 0;
@@ -197,9 +229,9 @@ void RegionTerms::extend_fan(uint32_t v, const Tri& t, uint32_t fresh, std::vect
 }
 
 double RegionTerms::fan_done(uint32_t r, uint32_t v, const std::vector<uint32_t>& fan, SignatureEntry& entry) const {
-  if (reads_classes() || reads_degree()) return vertex_done(r, v, fan[0], entry);
+  if (reads_classes(v) || reads_degree(v)) return vertex_done(r, v, fan[0], entry);
   fan_.clear();
-  if (!reads_fans()) return vertex_done(r, v, fan, fan_, entry);
+  if (!reads_fans(v)) return vertex_done(r, v, fan, fan_, entry);
   for (size_t j = 0; j < fan.size(); j += 3) fan_.push_back({fan[j], fan[j + 1], fan[j + 2]});
   star_neighbors(v, fan_, fan_nb_);
   return vertex_done(r, v, fan_nb_, fan_, entry);
@@ -209,15 +241,17 @@ double RegionTerms::vertex_done(uint32_t r, uint32_t v, const std::vector<uint32
                                 SignatureEntry& entry) const {
   entry.clear();
   if (!reads_vertices()) return 0;
-  if (reads_classes()) return vertex_done(r, v, neighbor_classes(d_, dt_, v, nb), entry);
-  if (reads_degree()) {
+  const ObjectiveTerms& d = at_.at(v);
+  const bool fans = reads_fans(v);
+  if (reads_classes(v)) return vertex_done(r, v, at_.classes(v, nb, fan), entry);
+  if (reads_degree(v)) {
     const auto& f = filter_.fixed(v);
     const auto fixed = std::count_if(nb.begin(), nb.end(), [&](uint32_t w) { return std::binary_search(f.begin(), f.end(), w); });
     return vertex_done(r, v, degree_matters(v) ? static_cast<uint32_t>(nb.size() - static_cast<size_t>(fixed)) : 0, entry);
   }
   if (shared_[v]) {  // the regions beside see the triangles (vertex pairs) or the neighbours
-    entry.push_back({kVertexEntry, v, reads_fans() ? 0u : 1u});
-    if (reads_fans()) {  // canonical triangles, sorted
+    entry.push_back({kVertexEntry, v, fans ? 0u : 1u});
+    if (fans) {  // canonical triangles, sorted
       for (const Tri& t : fan)
         if (!harmless(v, t)) entry.push_back(canonical_triangle(t));
       std::sort(entry.begin() + 1, entry.end());
@@ -231,21 +265,22 @@ double RegionTerms::vertex_done(uint32_t r, uint32_t v, const std::vector<uint32
   if (interior_only(d_.site) && on_hull_[v]) return 0;
   // Its other triangles are fixed: the Delaunay ones outside this region.
   star_.clear();
-  if (reads_fans()) star_ = fan;
+  if (fans) star_ = fan;
   add_outside(r, v, star_);
   star_neighbors(v, star_, nb_);
-  if (!reads_fans()) {  // add the region's neighbours (reduced: and the fixed ones, which they may leave out)
+  if (!fans) {  // add the region's neighbours (reduced: and the fixed ones, which they may leave out)
     nb_.insert(nb_.end(), nb.begin(), nb.end());
     if (filter_.active()) nb_.insert(nb_.end(), filter_.fixed(v).begin(), filter_.fixed(v).end());
     std::sort(nb_.begin(), nb_.end());
     nb_.erase(std::unique(nb_.begin(), nb_.end()), nb_.end());
   }
-  return clip(vertex_term(d_, dt_, Star(v, nb_, star_)));
+  return clip(vertex_term(d, dt_, Star(v, nb_, star_)));
 }
 
 double RegionTerms::vertex_done(uint32_t r, uint32_t v, uint32_t summary, SignatureEntry& entry) const {
   entry.clear();
-  if (reads_classes()) summary = canonical_classes(v, summary);
+  const ObjectiveTerms& plain = at_.inside();  // (summaries: only where nothing can be outside)
+  if (reads_classes(v)) summary = canonical_classes(v, summary);
   if (shared_[v]) {  // the regions beside see the summary
     entry = {{kVertexEntry, v, 2}, {summary, 0, 0}};
     return 0;
@@ -254,12 +289,12 @@ double RegionTerms::vertex_done(uint32_t r, uint32_t v, uint32_t summary, Signat
   star_.clear();
   add_outside(r, v, star_);
   star_neighbors(v, star_, nb_);
-  if (reads_classes()) return clip(d_.term_of_classes(summary | neighbor_classes(d_, dt_, v, nb_)));
+  if (reads_classes(v)) return clip(at_.term_of_classes(summary | at_.classes(v, nb_, star_)));
   // The fixed neighbours and those of the triangles outside, then the region's new ones.
   nb_.insert(nb_.end(), filter_.fixed(v).begin(), filter_.fixed(v).end());
   std::sort(nb_.begin(), nb_.end());
   nb_.erase(std::unique(nb_.begin(), nb_.end()), nb_.end());
-  return clip(d_.term_of_degree(static_cast<uint32_t>(nb_.size()) + summary));
+  return clip(plain.term_of_degree(static_cast<uint32_t>(nb_.size()) + summary));
 }
 
 void RegionTerms::add_outside(uint32_t r, uint32_t v, std::vector<Tri>& star) const {

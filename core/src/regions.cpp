@@ -6,6 +6,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/fill_dp.hpp"
 #include "hodt/fill_enumerator.hpp"
@@ -143,6 +144,7 @@ Regions k_order_skeleton(const Mesh& dt, uint32_t k, const std::vector<std::pair
       out.fixed[static_cast<uint32_t>(dt.halfedges[h])] = 0;
     }
   }
+  out.near_outside = vertices_near_outside(dt, out.useful);
   cut_into_regions(dt, out);
   return out;
 }

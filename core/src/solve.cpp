@@ -82,26 +82,35 @@ Solution solve_factor_graph(const FirstOrder& fo, Objective objective, const Sol
     prefer_delaunay(m.model, s.choice, limits.progress);
   }
   s.optimal = true;
-  s.value = evaluate(objective, triangulate(fo, s.choice), limits.progress);
+  s.value = evaluate(objective, triangulate(fo, s.choice), in_phase(limits.progress, Phase::Measuring));
   return s;
 }
 
+// options with progress in phase (progress.hpp).
+SolveOptions in_phase(SolveOptions options, Phase phase) {
+  options.progress = in_phase(options.progress, phase);
+  return options;
+}
+
 Solution dispatch(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
-  if (options.method == Method::BruteForce) return brute_force(fo, objective, options.progress);
+  // (Brute force: one count over every triangulation, so the phase knows its size.)
+  if (options.method == Method::BruteForce)
+    return brute_force(fo, objective, in_phase(options.progress, Phase::SolvingExactly, 1));
+  const SolveOptions exactly = in_phase(options, Phase::SolvingExactly);
   // Polynomial objectives are always solved exactly (approx would only be worse).
   if (has_polynomial_exact(objective))
-    return solve_polynomial(fo, objective, ExactOptions{options.trace, dp_limits(options), options.explanation});
+    return solve_polynomial(fo, objective, ExactOptions{options.trace, dp_limits(exactly), options.explanation});
   switch (options.method) {
     case Method::Exact:
-      return solve_factor_graph(fo, objective, options);
+      return solve_factor_graph(fo, objective, exactly);
     case Method::Approx:
-      return approximate(fo, objective, options);
+      return approximate(fo, objective, in_phase(options, Phase::Approximating));
     case Method::Auto: {
       std::optional<ReducedModel> refused;
       try {  // exact when every component's decomposition fits the memory cap
-        return solve_factor_graph(fo, objective, options, &refused);
+        return solve_factor_graph(fo, objective, exactly, &refused);
       } catch (const LimitError& e) {
-        Solution s = approximate(fo, objective, options, refused ? &*refused : nullptr);
+        Solution s = approximate(fo, objective, in_phase(options, Phase::Approximating), refused ? &*refused : nullptr);
         s.details = std::string("exact refused (") + e.what() + "); " + s.details;
         return s;
       }
@@ -155,7 +164,7 @@ Solution solve_in_domain(const FirstOrder& fo, Objective objective, const SolveO
 Solution solve(const FirstOrder& fo, Objective objective, const SolveOptions& options) {
   check_options(options);
   SolveOptions run = options;
-  run.progress = paced(options.progress, options.progress_interval_ms);
+  run.progress = as_phased(options.progress, options.progress_interval_ms);
   if (run.order > 1) return k_order_solution(fo, objective, run.order, run);
   const bool domain = run.method != Method::BruteForce && domain_reachable(fo);
   if (domain && (!fo.is_delaunay || !has_exact_in_domain(run.method))) return solve_in_domain(fo, objective, run);
@@ -173,7 +182,7 @@ Solution solve(const FirstOrder& fo, Objective objective, const SolveOptions& op
     s = dispatch(fo, objective, run);
   }
   if (!s.critical && is_pair_objective(objective))
-    s.critical = critical_pair(objective, triangulate(fo, s.choice), run.progress);
+    s.critical = critical_pair(objective, triangulate(fo, s.choice), in_phase(run.progress, Phase::Measuring));
   s.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return s;
 }

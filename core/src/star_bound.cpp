@@ -8,7 +8,6 @@
 #include <stdexcept>
 
 #include "hodt/diamond_ends.hpp"
-#include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/fan_terms.hpp"
 #include "hodt/fan_trees.hpp"
@@ -34,7 +33,9 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   // constant): nonnegative reals, each rounded down in fixed point.
   const bool integral = d.term_max < 1e6 && d.term_max == std::floor(d.term_max);
   const bool lengths = d.site == TermSite::Edge && !d.edge_reads_apexes && sign < 0;
-  if (d.combine != TermCombine::Sum || has_domain(dt) || !std::isfinite(incumbent) ||
+  // (Within a domain a fan's terms are the domain's, fan_terms; lengths are not
+  // read there: a hull edge counts only beside a triangle inside.)
+  if (d.combine != TermCombine::Sum || !std::isfinite(incumbent) ||
       !(integral ? at_vertices || d.site == TermSite::InteriorEdge : lengths))
     return std::nullopt;
   const uint32_t n = dt.num_vertices();
@@ -353,7 +354,9 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
 
 std::optional<double> star_floor(const Mesh& dt, Objective o, const Candidates& cand, const StarBoundLimits& limits) {
   const ObjectiveTerms& d = objective_terms(o, dt);
-  if (d.combine != TermCombine::Max || info(o).sense != Sense::Min || has_domain(dt)) return std::nullopt;
+  // (Within a domain too: a fan decides which of its triangles are inside, and
+  // the terms below read them.)
+  if (d.combine != TermCombine::Max || info(o).sense != Sense::Min) return std::nullopt;
   const uint32_t n = dt.num_vertices();
   double floor = 0;
   std::vector<uint32_t> ring, nb;

@@ -6,12 +6,15 @@
 #include <sstream>
 #include <string>
 
+#include "generators.hpp"
 #include "hodt/cli.hpp"
 #include "hodt/cli_help.hpp"
 #include "hodt/file_errors.hpp"
+#include "hodt/terrain.hpp"
 #include "hodt/tin_output.hpp"
 
 using namespace hodt;
+using hodt::test::uniform_points;
 
 namespace {
 
@@ -156,14 +159,53 @@ TEST_CASE("progress: steps with --progress; nothing on a terminal for a short ru
   std::vector<std::string> forced = args;
   forced.push_back("--progress");
   run_cli(forced, fake.host());
-  CHECK(fake.progress == "hodt: reading p.txt\nhodt: triangulating 6 points\nhodt: solving max-convex-edges\n");
+  // (A run this short shows no phase of the solve's own as a plain line: they come
+  // at least 0.2 s apart.)
+  CHECK(fake.progress == "hodt: reading p.txt\nhodt: triangulating 6 points\nhodt: solving (max-convex-edges)\n");
   fake.progress.clear();
   fake.terminal = true;
   run_cli(args, fake.host());
   CHECK(fake.progress.empty());  // under a second
   run_cli(forced, fake.host());
+  // (On a terminal each new phase is drawn at once.)
   CHECK(fake.progress ==
-        "\r\x1b[Khodt: reading p.txt\r\x1b[Khodt: triangulating 6 points\r\x1b[Khodt: solving max-convex-edges\r\x1b[K");
+        "\r\x1b[Khodt: reading p.txt\r\x1b[Khodt: triangulating 6 points\r\x1b[Khodt: solving (max-convex-edges)"
+        "\r\x1b[Khodt: solving exactly (max-convex-edges)\r\x1b[Khodt: measuring (max-convex-edges)\r\x1b[K");
+}
+
+TEST_CASE("progress: a real solve's phases by name, each one's percentage never going back") {
+  // Brute force over 2^16 triangulations: long enough for a few redraws
+  // on a terminal (every 0.1 s), a phase that knows its size (so percentages).
+  const std::vector<double> p = uniform_points(36, 4);
+  std::ostringstream text;
+  text.precision(17);
+  for (size_t i = 0; i < p.size(); i += 3) text << p[i] << " " << p[i + 1] << " " << p[i + 2] << "\n";
+  FakeHost fake;
+  fake.files["u.txt"] = text.str();
+  REQUIRE(Terrain::from_points(p).structure().num_quads() == 16);
+  fake.terminal = true;
+  const CliResult r =
+      run_cli({"solve", "u.txt", "--objective", "min-mixed-vertices", "--method", "brute-force", "--progress"}, fake.host());
+  REQUIRE(r.exit_code == 0);
+  std::vector<std::string> lines;  // the lines drawn in place, each after "\r\x1b[K"
+  for (size_t at = 0; (at = fake.progress.find("\r\x1b[K", at)) != std::string::npos;) {
+    at += 4;
+    lines.push_back(fake.progress.substr(at, fake.progress.find('\r', at) - at));
+  }
+  CAPTURE(fake.progress);
+  const std::string solving = "hodt: solving exactly (min-mixed-vertices): ";
+  int last = -1, shown = 0;
+  for (const std::string& line : lines) {
+    if (line.rfind(solving, 0) != 0) continue;
+    const int percent = std::stoi(line.substr(solving.size()));
+    CHECK(percent >= last);
+    CHECK(percent <= 100);
+    last = percent, ++shown;
+  }
+  CHECK(shown >= 2);
+  CHECK(lines.front() == "hodt: reading u.txt");
+  CHECK(lines.at(2) == "hodt: solving (min-mixed-vertices)");
+  CHECK(lines.back().empty());  // cleared at the end
 }
 
 TEST_CASE("--version and --help") {

@@ -4,20 +4,27 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
 
 #include "generators.hpp"
+#include "k_order_reference.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/domain.hpp"
+#include "hodt/fan_windows.hpp"
 #include "hodt/higher_order.hpp"
 #include "hodt/k_order.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/pair_measures.hpp"
+#include "hodt/objective_terms.hpp"
 #include "hodt/predicates.hpp"
 #include "hodt/points.hpp"
+#include "hodt/region_engine.hpp"
+#include "hodt/regions.hpp"
 #include "hodt/solve.hpp"
+#include "hodt/star_bound.hpp"
 #include "hodt/terrain.hpp"
 
 using namespace hodt;
@@ -316,4 +323,177 @@ TEST_CASE("domain: one that leaves almost every triangle outside says so, with t
   CHECK(w->find("leaves 1 of") != std::string::npos);  // (the three added points' triangle)
   fo.base.coords.set_max_edge(1.5);
   CHECK(!empty_domain_warning(fo.base));
+}
+
+TEST_CASE("domain: rasters with holes at orders 2 and 3: every objective equals brute force") {
+  // The order-k engine within a domain: the vertices away from the holes read
+  // the terms without a domain and their summaries, those beside them the
+  // domain's (classes with one more, a triangle outside), all against every
+  // k-OD triangulation measured as the domain says.
+  uint64_t tried = 0, changed = 0;
+  for (uint32_t k : {2u, 3u}) {
+    for (uint64_t seed = 1; seed <= (k == 2 ? 20u : 5u); ++seed) {
+      const FirstOrder fo = raster_with_holes(seed * 3 + k);
+      ++tried;
+      for (const auto& oi : objectives()) {
+        CAPTURE(k);
+        CAPTURE(seed);
+        CAPTURE(oi.id);
+        const KOrderResult want = k_order_brute_force(fo, oi.objective, k, 20'000'000);
+        for (Method method : {Method::Exact, Method::Auto}) {
+          SolveOptions run;
+          run.method = method;
+          run.order = k;
+          const Solution got = solve(fo, oi.objective, run);
+          CHECK(got.optimal);
+          CHECK(got.value == want.value);
+          REQUIRE(got.mesh);
+          CHECK(got.value == evaluate(oi.objective, *got.mesh));
+          CHECK(is_k_order(*got.mesh, fo.base, k));
+        }
+        FirstOrder plain = fo;
+        plain.base.coords.set_max_edge(INFINITY);
+        changed += want.value != k_order_brute_force(plain, oi.objective, k, 20'000'000).value;
+      }
+    }
+  }
+  CHECK(tried == 25);
+  CHECK(changed > 50);  // (the domain changed many optima)
+}
+
+TEST_CASE("domain: the vertices marked near outside are the corners of every k-OD triangle outside, and few") {
+  uint64_t outside = 0, marked = 0, vertices = 0;
+  for (uint64_t seed = 1; seed <= 60; ++seed) {
+    const FirstOrder fo = seed % 2 ? raster_with_holes(seed) : with_domain(seed, 0.1 + 0.1 * static_cast<double>(seed % 3));
+    for (uint32_t k : {1u, 2u, 3u}) {
+      const std::vector<uint8_t> near = vertices_near_outside(fo.base, useful_edges(fo.base, k));
+      marked += static_cast<uint64_t>(std::count(near.begin(), near.end(), 1)), vertices += near.size();
+      int seen = 0;
+      enumerate_k_order(fo.base, k, 100'000, [&](const std::vector<Tri>& tris) {
+        if (++seen > 40) return;
+        for (const Tri& t : tris)
+          if (!triangle_inside(fo.base, t)) {
+            ++outside;
+            CAPTURE(seed);
+            CAPTURE(k);
+            CHECK((near[t[0]] && near[t[1]] && near[t[2]]));
+          }
+      });
+    }
+    FirstOrder all_in = fo;
+    all_in.base.coords.set_max_edge(1e9);  // (a domain, every triangle inside)
+    const std::vector<uint8_t> none = vertices_near_outside(all_in.base, useful_edges(all_in.base, 3));
+    CHECK(std::count(none.begin(), none.end(), 1) == 0);
+  }
+  CHECK(outside > 1000);
+  CHECK(marked < vertices);
+}
+
+namespace {
+
+// A w x h grid of unit cells with smooth heights (cocircular: the symbolic
+// perturbation decides), NODATA in the given cells' points, max_edge 3 cells
+// (a raster's default): bridges over the holes are outside.
+FirstOrder grid_with_holes(int w, int h, uint64_t seed, const std::vector<std::array<int, 4>>& holes) {
+  std::vector<double> p;
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      const bool hole = std::any_of(holes.begin(), holes.end(), [&](const std::array<int, 4>& b) {
+        return i >= b[0] && i < b[0] + b[2] && j >= b[1] && j < b[1] + b[3];
+      });
+      if (!hole) p.insert(p.end(), {double(i), double(j), dem_height(i / 9.0, j / 9.0, seed)});
+    }
+  FirstOrder fo = first_order(delaunay(validate_points(p).xyz));
+  fo.base.coords.set_max_edge(3);
+  return fo;
+}
+
+size_t regions_with_a_choice(const Regions& R) {
+  return static_cast<size_t>(std::count_if(R.regions.begin(), R.regions.end(), [](const Region& g) { return g.states.size() > 1; }));
+}
+
+}  // namespace
+
+TEST_CASE("domain: at order k the vertices away from the holes keep the fast paths, with the same optima") {
+  // Each objective's engine on a grid with holes, as it runs (only the vertices
+  // near a triangle that may be outside read the domain's terms), against the
+  // same engine with every vertex reading them (Regions::near_outside all
+  // set): equal optima, and about as few regions with a choice as without a
+  // domain, where reading every vertex's triangles lists hundreds.
+  const FirstOrder fo = grid_with_holes(18, 16, 3, {{4, 4, 3, 2}, {11, 9, 2, 4}, {0, 13, 2, 3}});
+  const Mesh& dt = fo.base;
+  FirstOrder plain = fo;
+  plain.base.coords.set_max_edge(INFINITY);
+  for (uint32_t k : {2u, 3u}) {
+    const KOrderStructure structure(dt, k, {});
+    const Regions skeleton = k_order_skeleton(dt, k, structure.useful, {});
+    CHECK(std::count(skeleton.near_outside.begin(), skeleton.near_outside.end(), 1) * 4 < static_cast<long>(dt.num_vertices()));
+    Regions everywhere = skeleton;
+    everywhere.near_outside.assign(dt.num_vertices(), 1);
+    const KOrderStructure plain_structure(plain.base, k, {});
+    for (const auto& oi : objectives()) {
+      CAPTURE(k);
+      CAPTURE(oi.id);
+      const RegionEngine fast(dt, oi.objective, structure, skeleton, RegionLimits{}, {});
+      const RegionEngine slow(dt, oi.objective, structure, everywhere, RegionLimits{}, {});
+      const RegionEngine none(plain.base, oi.objective, plain_structure, k, RegionLimits{}, {});
+      CHECK(regions_with_a_choice(fast.R) <= regions_with_a_choice(slow.R));
+      const bool by_neighbours = objective_terms_inside(oi.objective).neighbor_class || objective_terms_inside(oi.objective).drop_neighbors;
+      if (by_neighbours) CHECK(regions_with_a_choice(fast.R) <= regions_with_a_choice(none.R) + regions_with_a_choice(none.R) / 2 + 10);
+      if (objective_terms_inside(oi.objective).drop_neighbors) CHECK(regions_with_a_choice(fast.R) < regions_with_a_choice(slow.R));
+      std::string refused_fast, refused_slow;
+      const auto a = fast.exact({}, refused_fast), b = slow.exact({}, refused_slow);
+      if (!a || !b) continue;
+      CHECK(evaluate(oi.objective, fast.R.triangulation(dt, *a)) == evaluate(oi.objective, slow.R.triangulation(dt, *b)));
+    }
+  }
+  // And through solve: the minima, which read classes, listed as without a domain.
+  SolveOptions two;
+  two.order = 2;
+  const Solution in = solve(fo, Objective::MinLocalMinima, two), out = solve(plain, Objective::MinLocalMinima, two);
+  CHECK(in.optimal);
+  CAPTURE(in.details);
+  CAPTURE(out.details);
+  CHECK(in.details.substr(0, in.details.find(" regions")) == out.details.substr(0, out.details.find(" regions")));
+}
+
+TEST_CASE("domain: the vertices' fans read the domain's terms: one fan window over everything, the stars' bound and floor, against brute force (k = 1 to 3)") {
+  // A fan decides which of its triangles are inside: one window over every
+  // vertex finds the optimum, and the stars never bound past it.
+  int whole = 0, bounds = 0, floors = 0, tight = 0;
+  for (uint32_t k : {1u, 2u, 3u})
+    for (uint64_t seed = 1; seed <= 16; ++seed) {
+      const FirstOrder fo = seed % 2 ? raster_with_holes(seed * 7 + k) : with_domain(seed * 7 + k, 0.1 + 0.1 * static_cast<double>(seed % 4));
+      const Mesh& dt = fo.base;
+      const KOrderStructure structure(dt, k, {});
+      for (const auto& oi : objectives()) {
+        CAPTURE(k);
+        CAPTURE(seed);
+        CAPTURE(oi.id);
+        const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
+        const double delaunay_value = evaluate(oi.objective, dt);
+        WindowLimits all;
+        all.per_window = 1u << 30, all.max_steps = 100'000'000;
+        if (oi.objective != Objective::MinTotalEdgeLength && objective_terms(oi.objective, dt).combine == TermCombine::Sum) {
+          const auto best = improve_by_windows(dt, oi.objective, structure.candidates, dt, all);
+          const double got = best ? evaluate(oi.objective, mesh_of(dt.coords, *best)) : delaunay_value;
+          if (best) CHECK(is_k_order(mesh_of(dt.coords, *best), dt, k));
+          CHECK(got == want);
+          ++whole;
+        }
+        if (const auto b = star_bound(dt, oi.objective, structure.candidates, delaunay_value, {})) {
+          CHECK((oi.sense == Sense::Max ? b->bound >= want : b->bound <= want));
+          ++bounds, tight += b->bound == want;
+        }
+        if (const auto f = star_floor(dt, oi.objective, structure.candidates, {})) {
+          CHECK(*f <= want);
+          ++floors;
+        }
+      }
+    }
+  MESSAGE(whole << " whole windows, " << bounds << " star bounds (" << tight << " tight), " << floors << " star floors");
+  CHECK(whole == 3 * 16 * 5);  // (the counts: convex and mixed vertices, minima, extrema, convex edges)
+  CHECK(bounds == whole);
+  CHECK(tight > bounds / 2);
+  CHECK(floors == 3 * 16 * 7);  // (every min-max objective)
 }

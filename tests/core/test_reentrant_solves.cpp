@@ -69,12 +69,12 @@ TEST_CASE("terrains made, measured, solved and freed inside a solve's progress c
     const Terrain outer = Terrain::from_points(points(400, 7));
     int calls = 0;
     SolveOptions options;
-    options.progress = paced([&](double, double) {
+    options.progress = phased([&](const ProgressPoint&) {
       if (++calls > 5) return true;
       for (const auto& b : objectives()) {
         const auto inner = std::make_unique<Terrain>(Terrain::from_points(points(300, 11 + calls)));
         SolveOptions o;
-        o.progress = paced([](double, double) { return true; });
+        o.progress = phased([](const ProgressPoint&) { return true; });
         inner->delaunay_value(b.objective, o.progress);
         solve(inner->structure(), b.objective, o);
       }

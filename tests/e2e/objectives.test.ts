@@ -102,6 +102,10 @@ describe('objectives', () => {
     expect((await hooks(page)).solving).toBe(true);
     expect(await page.locator('#progress').isVisible()).toBe(true);
     expect(await page.locator('.elapsed').textContent()).toMatch(/^[1-9]\.\d s$/);
+    // Brute force knows its size: the phase by name, a share, a time left once it has one.
+    await page.waitForFunction(() => document.querySelector('#phase')?.textContent?.startsWith('solving exactly'));
+    expect(await page.locator('#progress').getAttribute('data-determinate')).toBe('');
+    expect(Number(await page.locator('#progress').getAttribute('aria-valuenow'))).toBeGreaterThanOrEqual(0);
     // The page answers while the worker computes: switch views and back.
     await page.click('.segmented button[data-view="plan"]');
     expect(await page.locator('.stage').getAttribute('data-view')).toBe('plan');

@@ -199,13 +199,14 @@ describe('times, --quiet, --progress', () => {
 
   it('--progress names each step on stderr, the same from both CLIs; --quiet excludes it', () => {
     const args = ['solve', fixture('uniform-50.csv'), '--objective', 'max-convex-edges', '--output', at('p.json'), '--progress'];
-    const steps = (err: string) => err.split('\n').filter((l) => l !== '' && !/%/.test(l));
+    // (The front end's steps: the solve's own phases come as they take time.)
+    const steps = (err: string) => err.split('\n').filter((l) => l !== '' && !/^hodt: [a-z ]+ \(max-convex-edges\)./.test(l));
     const w = hodtCli(args);
     expect(w.code).toBe(0);
     expect(steps(w.err)).toEqual([
       `hodt: reading ${fixture('uniform-50.csv')}`,
       'hodt: triangulating 50 points',
-      'hodt: solving max-convex-edges',
+      'hodt: solving (max-convex-edges)',
       `hodt: writing ${at('p.json')}`,
     ]);
     expect(steps(native(args).err)).toEqual(steps(w.err));
@@ -225,6 +226,34 @@ describe('times, --quiet, --progress', () => {
     expect(shown.length).toBeGreaterThanOrEqual(4);
     for (const t of shown.slice(0, -1)) expect(t).toMatch(/^\r\x1b\[Khodt: /);
     expect(shown.at(-1)).toBe('\r\x1b[K');
+  });
+
+  it('--progress on a real solve: the phases by name, each percentage never going back, an estimate once it means something', () => {
+    // 39 points, 16 flippable quads: brute force over 65,536 triangulations, a
+    // phase that knows its size, redrawn every 0.1 s on a terminal.
+    const points = at('brute-39.csv');
+    writeFileSync(points, readFileSync(fixture('uniform-50.csv'), 'utf8').split('\n').slice(0, 40).join('\n'));
+    const shown: string[] = [];
+    const io = { progress: (t: string) => shown.push(t), stderrIsTerminal: true };
+    const args = ['solve', points, '--objective', 'min-mixed-vertices', '--method', 'brute-force', '--progress'];
+    expect(hodt.runCli(args, (path) => readFileSync(path), io).exitCode).toBe(0);
+    const lines = shown.map((t) => t.replace(/^\r\x1b\[K/, '')).filter((l) => l !== '');
+    expect(lines.slice(0, 3)).toEqual([`hodt: reading ${points}`, 'hodt: triangulating 39 points', 'hodt: solving (min-mixed-vertices)']);
+    const named = /^hodt: (finding the regions|solving exactly|approximating|searching|proving a bound|measuring|solving) \(min-mixed-vertices\)(: (\d+)%(, about \d+ (s|min) left)?|: \d+ s so far)?$/;
+    const percents = new Map<string, number>();
+    let sized = 0;
+    for (const line of lines.slice(3)) {
+      const m = named.exec(line);
+      expect(m, line).not.toBeNull();
+      if (m![3] === undefined) continue;
+      const percent = Number(m![3]);
+      expect(percent).toBeGreaterThanOrEqual(percents.get(m![1]!) ?? 0);
+      expect(percent).toBeLessThanOrEqual(100);
+      percents.set(m![1]!, percent);
+      ++sized;
+    }
+    expect(sized).toBeGreaterThanOrEqual(2);
+    expect(percents.has('solving exactly')).toBe(true);
   });
 });
 

@@ -117,7 +117,7 @@ describe('the raster default in the CLIs', () => {
   it('prints the loaders\' and the core\'s notes once the input is read, before the solve', () => {
     const r = npm(['solve', inlet('tif'), '--objective', 'min-local-minima', '--progress']);
     expect(r.status).toBe(0);
-    const solving = r.stderr.indexOf('hodt: solving');
+    const solving = r.stderr.indexOf('hodt: solving (min-local-minima)');
     expect(solving).toBeGreaterThan(0);
     expect(r.stderr.indexOf('are outside the domain')).toBeGreaterThan(r.stderr.indexOf('hodt: triangulating'));
     expect(r.stderr.indexOf('are outside the domain')).toBeLessThan(solving);

@@ -89,6 +89,29 @@ describe('progress', () => {
       expect(total).toBeGreaterThan(0);
     }
   });
+  it('names each phase, whose fraction (done / total) never goes back, the same words as the CLI', () => {
+    const phases = ['finding the regions', 'solving exactly', 'approximating', 'searching', 'proving a bound', 'measuring', 'solving'];
+    for (const options of [{ method: 'exact' as const }, { method: 'approx' as const }, { order: 3 }]) {
+      const last = new Map<string, number>();
+      terrain.solve('min-mixed-vertices', {
+        ...options,
+        progress: (done, total, info) => {
+          expect(phases).toContain(info.phase);
+          expect(total).toBe(1);
+          expect(info.fraction).toBe(done / total);
+          expect(done).toBeGreaterThanOrEqual(last.get(info.phase) ?? 0);
+          expect(done).toBeLessThanOrEqual(1);
+          expect(typeof info.sized).toBe('boolean');
+          if (info.secondsLeft !== null) expect(info.sized).toBe(true);
+          last.set(info.phase, done);
+        },
+      });
+      expect(last.size, JSON.stringify(options)).toBeGreaterThan(0);
+      expect(last.has('solving'), JSON.stringify(options)).toBe(false); // every step of the engine named
+      if (options.order === 3) expect(last.has('finding the regions')).toBe(true);
+      if (options.method === 'approx') expect(last.has('approximating')).toBe(true);
+    }
+  });
   it('returning false cancels with CancelledError (name AbortError)', () => {
     let error: unknown;
     try {

@@ -32,7 +32,7 @@ export * from './terrain.js';
 export type * from './explain.js';
 export type { LoadOptions } from './load.js';
 export type { Accessor, GeoJsonPoints, Point3, PointInput } from './points.js';
-export type { ProgressCallback, SolveOptions } from './solve.js';
+export type { ProgressCallback, ProgressInfo, ProgressPhase, SolveOptions } from './solve.js';
 export { solveInWorker, type WorkerSolveOptions } from './solveInWorker.js';
 export type { AccessorOptions, PointOptions, TerrainOptions } from './terrainOptions.js';
 

@@ -3,12 +3,36 @@ import type { Method, ObjectiveId } from './objectives.js';
 import { checkOptionNames } from './options.js';
 import type { RawExplanation, RawSolved, RawTerrain } from './wasm/hodt.mjs';
 
+/** What a solve is doing, by name. 'solving' is work no step of the engine named. */
+export type ProgressPhase =
+  | 'finding the regions'
+  | 'solving exactly'
+  | 'approximating'
+  | 'searching'
+  | 'proving a bound'
+  | 'measuring'
+  | 'solving';
+
+/** The phase a progress call is about. */
+export interface ProgressInfo {
+  phase: ProgressPhase;
+  /** How far the phase is, 0 to 1 (= done / total); it never goes back within a phase. */
+  fraction: number;
+  /** The phase knows its size: `fraction` is the share of its work done. Otherwise it
+   * only shows that work goes on. */
+  sized: boolean;
+  /** Estimated seconds the phase still needs: a sized phase after 2 s and 5% of its
+   * work; else null. */
+  secondsLeft: number | null;
+}
+
 /**
- * Called now and then during long runs with the work `done` out of `total` in the
- * current phase (phases restart the count: it is not monotone over a whole run).
- * Return false to cancel the run (it then throws CancelledError).
+ * Called now and then during long runs: at the start of each phase and then at
+ * most every few milliseconds, with how far the phase is (`done` out of `total`,
+ * never going back within a phase) and `info`, the phase by name. Return false to
+ * cancel the run (it then throws CancelledError).
  */
-export type ProgressCallback = (done: number, total: number) => boolean | void;
+export type ProgressCallback = (done: number, total: number, info: ProgressInfo) => boolean | void;
 
 export interface SolveOptions {
   /** 'auto' (default): exact when the instance fits the memory cap, else the
@@ -83,7 +107,7 @@ export function explainRaw(raw: RawTerrain, objective: ObjectiveId, options: Sol
   return runChecked(objective, options, (o, tick) => raw.explain(objective, o.method, o.epsilon, o.order, tick));
 }
 
-type Tick = ((done: number, total: number) => boolean) | undefined;
+type Tick = ((done: number, total: number, info: ProgressInfo) => boolean) | undefined;
 
 function runChecked<T>(objective: ObjectiveId, options: SolveOptions, call: (o: ReturnType<typeof checkedOptions>, tick: Tick) => T): T {
   const checked = checkedOptions(objective, options);
@@ -94,11 +118,11 @@ function runChecked<T>(objective: ObjectiveId, options: SolveOptions, call: (o: 
   let thrown: { error: unknown } | null = null;
   const tick =
     progress || signal
-      ? (done: number, total: number): boolean => {
+      ? (done: number, total: number, info: ProgressInfo): boolean => {
           if (signal?.aborted) return false;
           if (!progress) return true;
           try {
-            return progress(done, total) !== false;
+            return progress(done, total, info) !== false;
           } catch (error) {
             thrown = { error };
             return false;

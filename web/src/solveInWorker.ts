@@ -117,7 +117,7 @@ export function solveInWorker(
       else if (reply.kind === 'failed') finish(() => reject(new (ERRORS[reply.name] ?? HodtError)(reply.message)));
       else if (!settled && progress) {
         try {
-          if (progress(reply.done, reply.total) === false) finish(() => reject(new CancelledError('cancelled')));
+          if (progress(reply.done, reply.total, reply.info) === false) finish(() => reject(new CancelledError('cancelled')));
         } catch (error) {
           finish(() => reject(error));
         }

@@ -3,6 +3,7 @@
 // The same file runs as a browser module Worker and as a Node worker_threads
 // Worker; cancelling terminates it, so it never needs to stop on its own.
 import { loadHodt } from './index.js';
+import type { ProgressInfo } from './solve.js';
 import type { WorkerReply, WorkerRequest } from './workerProtocol.js';
 
 interface Port {
@@ -44,7 +45,7 @@ void connect().then((port) =>
         try {
           solution = terrain.solve(objective, {
             ...solve,
-            ...(progress ? { progress: (done: number, total: number) => port.post({ kind: 'progress', done, total }) } : {}),
+            ...(progress ? { progress: (done: number, total: number, info: ProgressInfo) => port.post({ kind: 'progress', done, total, info }) } : {}),
           });
         } finally {
           terrain.dispose();

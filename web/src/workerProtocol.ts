@@ -1,7 +1,7 @@
 // Messages between solveInWorker and its worker (solveWorker.ts): plain data that
 // structured cloning copies the same way to a browser Worker and a Node one.
 import type { ObjectiveId } from './objectives.js';
-import type { SolveOptions } from './solve.js';
+import type { ProgressInfo, SolveOptions } from './solve.js';
 import type { Solution } from './terrain.js';
 
 export interface WorkerRequest {
@@ -17,6 +17,6 @@ export interface WorkerRequest {
 }
 
 export type WorkerReply =
-  | { kind: 'progress'; done: number; total: number }
+  | { kind: 'progress'; done: number; total: number; info: ProgressInfo }
   | { kind: 'solved'; solution: Solution }
   | { kind: 'failed'; name: string; message: string };

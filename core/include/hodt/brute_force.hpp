@@ -14,7 +14,7 @@ constexpr uint32_t kBruteForceMaxQuads = 24;
 // Optimum over all 2^m choices (Gray code order: one flip per step). Among optimal
 // choices it returns one with the fewest flips, the first in Gray code order.
 // Throws LimitError if m > kBruteForceMaxQuads.
-// progress (if given) is called for every triangulation (pace it: paced());
+// progress (if given) is called for every triangulation (pace it: phased(), progress.hpp);
 // returning false cancels.
 Solution brute_force(const FirstOrder& fo, Objective objective, const Progress& progress = {});
 

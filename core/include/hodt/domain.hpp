@@ -32,6 +32,14 @@ std::vector<uint8_t> inside_triangles(const Mesh& m);
 // quad has both triangles inside whatever it chooses. (All 0 without a domain.)
 std::vector<uint8_t> quads_touching_outside(const FirstOrder& fo);
 
+// At order k: per vertex of the Delaunay triangulation, 1 if it is a corner of a
+// triangle over `useful` edges (and Delaunay edges) with an edge longer than
+// max_edge. Every edge of a k-OD triangulation is useful, so each k-OD
+// triangle at a vertex marked 0 is inside: its star is inside in every k-OD
+// triangulation, and its term is the one without a domain. (All 0 without a
+// domain.)
+std::vector<uint8_t> vertices_near_outside(const Mesh& delaunay, const std::vector<std::pair<uint32_t, uint32_t>>& useful);
+
 // A warning when the domain leaves almost nothing to measure: at most 1% of the
 // Delaunay triangulation's triangles inside (none at all included). It names
 // how many are inside and the points' typical spacing, the median Delaunay edge

@@ -91,6 +91,10 @@ struct ObjectiveTerms {
   // triangles, so vertex terms need their star's triangles, edge terms their
   // apexes, and the summaries above (classes, degree, dropped neighbours) are off.
   bool domain = false;
+  // The terms without a domain, read within one for pieces every triangle of
+  // which is inside in every triangulation read (objective_terms_inside): they
+  // measure there what the domain measures.
+  bool all_inside = false;
 };
 
 // The classes of v's neighbours in nb, as a bit mask (neighbor_class set).
@@ -98,6 +102,12 @@ uint32_t neighbor_classes(const ObjectiveTerms& d, const Mesh& points, uint32_t 
 
 // The description for triangulations of m's points (with or without its domain).
 const ObjectiveTerms& objective_terms(Objective o, const Mesh& m);
+
+// The terms without a domain (with every summary above), for m's points within a
+// domain where a term's triangles are all inside whatever the triangulation:
+// a vertex whose k-OD triangles are all inside (vertices_near_outside,
+// domain.hpp) has the same term either way.
+const ObjectiveTerms& objective_terms_inside(Objective o);
 
 // The site a term is attached to: a vertex-pair term is a vertex's max over the
 // pairs of its star, an edge-pair term an interior edge's pair.

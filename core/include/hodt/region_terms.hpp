@@ -23,6 +23,43 @@
 
 namespace hodt {
 
+// The terms the region engine reads at each vertex. Within a domain, a vertex
+// none of whose k-OD triangles can be outside (Regions::near_outside) has its
+// whole star inside in every k-OD triangulation, so its term is the one without
+// a domain: it reads those terms, and with them the summaries that see only its
+// neighbours (their classes, their count, the neighbours that can change the
+// term). Only the vertices beside a triangle that may be outside read the
+// domain's terms, over their triangles; but interior-vertex terms over
+// neighbour classes read classes there too, with one more: a triangle outside,
+// which leaves the vertex uncounted whatever its neighbours. (Without a domain:
+// the same terms everywhere.)
+class TermsAtVertex {
+ public:
+  TermsAtVertex(const Mesh& delaunay, const Regions& regions, Objective o);  // (regions must outlive this)
+  const ObjectiveTerms& at(uint32_t v) const {
+    return !domain_.domain || (!near_.empty() && !near_[v]) ? inside_ : domain_;
+  }
+  const ObjectiveTerms& domain() const { return domain_; }  // (the domain's: every vertex may read them)
+  const ObjectiveTerms& inside() const { return inside_; }  // (what at() gives where nothing can be outside)
+  // Is v's fan read as a mask of classes (ObjectiveTerms::neighbor_class)?
+  bool by_classes(uint32_t v) const {
+    return inside_.neighbor_class && (&at(v) == &inside_ || inside_.site == TermSite::InteriorVertex);
+  }
+  // The mask of a fan at v: its neighbours' classes, and the class outside_class()
+  // when one of its triangles is outside.
+  uint32_t classes(uint32_t v, const std::vector<uint32_t>& nb, const std::vector<Tri>& triangles) const;
+  uint32_t outside_class() const { return 1u << inside_.classes; }
+  uint32_t masks() const { return outside_class() << (domain_.domain ? 1 : 0); }  // (masks are below this)
+  // The term of a whole star's mask (0 with a triangle outside).
+  double term_of_classes(uint32_t mask) const { return mask & outside_class() ? 0 : inside_.term_of_classes(mask); }
+
+ private:
+  const Mesh& dt_;
+  const ObjectiveTerms& domain_;
+  const ObjectiveTerms& inside_;
+  const std::vector<uint8_t>& near_;
+};
+
 // A signature is a sorted list of entries, each a header (what it is about)
 // followed by what the neighbours see.
 using SignatureEntry = std::vector<Tri>;
@@ -43,24 +80,28 @@ class RegionTerms {
   double add(double value, double term) const { return combine(d_.combine, value, term); }
   // Which pieces of a triangulation the terms read.
   bool reads_vertices() const { return vertex_site(d_.site); }
-  bool reads_fans() const { return reads_star_triangles(d_); }  // else neighbours suffice
+  // At vertex v (TermsAtVertex): its fan's triangles, else its neighbours suffice.
+  bool reads_fans(uint32_t v) const { return reads_star_triangles(at_.at(v)); }
   bool reads_edges() const { return edge_site(d_.site); }
   bool reads_apexes() const { return reads_edges() && d_.edge_reads_apexes; }
   bool reads_triangles() const { return d_.site == TermSite::Triangle; }
-  // Vertex terms that read only the classes of the neighbours: a fan is its mask.
-  bool reads_classes() const { return d_.neighbor_class != nullptr; }
-  uint32_t neighbor_class(uint32_t v, uint32_t w) const { return d_.neighbor_class(dt_, v, w); }
+  // Vertex terms at v that read only the classes of the neighbours: a fan is its mask.
+  bool reads_classes(uint32_t v) const { return at_.by_classes(v); }
+  // The classes triangle t adds to v's fan (TermsAtVertex::classes).
+  uint32_t triangle_classes(uint32_t v, const Tri& t) const;
   // The smallest class mask that no neighbours can tell from `mask` at v: with
   // the classes of v's fixed neighbours (present in every triangulation), masks
   // that give the same term whatever classes join them are one state. (A vertex
   // that already has a lower neighbour over a fixed edge is no minimum, whatever
   // a region does: its fans are all alike.)
   uint32_t canonical_classes(uint32_t v, uint32_t mask) const;
-  // Vertex terms that read only the degree: a fan is its number of neighbours
-  // over edges that are not fixed.
-  bool reads_degree() const { return d_.term_of_degree != nullptr; }
+  // Vertex terms at v that read only the degree: a fan is its number of
+  // neighbours over edges that are not fixed.
+  bool reads_degree(uint32_t v) const { return at_.at(v).term_of_degree != nullptr; }
   // ... and whether v's term can exceed the floor at all (else its count is not kept).
-  bool degree_matters(uint32_t v) const { return useful_degree_.empty() || d_.term_of_degree(useful_degree_[v]) > floor_; }
+  bool degree_matters(uint32_t v) const {
+    return useful_degree_.empty() || at_.inside().term_of_degree(useful_degree_[v]) > floor_;
+  }
 
   // A vertex's fan as a growing fill keeps it (fill_dp.hpp), in words: its
   // neighbours' class mask, its count of new neighbours, the neighbours or the
@@ -72,12 +113,12 @@ class RegionTerms {
   double fan_done(uint32_t r, uint32_t v, const std::vector<uint32_t>& fan, SignatureEntry& entry) const;
 
   // Vertex v's fan in region r is complete: nb its neighbours there (sorted),
-  // fan its triangles there (read only when reads_fans()). Returns its term (0 if
+  // fan its triangles there (read only when reads_fans(v)). Returns its term (0 if
   // none), or sets `entry` (else left empty) when other regions see the fan.
   double vertex_done(uint32_t r, uint32_t v, const std::vector<uint32_t>& nb, const std::vector<Tri>& fan,
                      SignatureEntry& entry) const;
   // The same for a fan summarised by one number: the classes of its neighbours
-  // (reads_classes()) or how many of them are not fixed (reads_degree()).
+  // (reads_classes(v)) or how many of them are not fixed (reads_degree(v)).
   double vertex_done(uint32_t r, uint32_t v, uint32_t summary, SignatureEntry& entry) const;
   // Is u -> v a boundary edge of region r (r on its left)? (Edge terms only.)
   bool on_boundary(uint32_t r, uint32_t u, uint32_t v) const;
@@ -128,7 +169,8 @@ class RegionTerms {
   const Candidates* cand_;
   double floor_ = 0;
   mutable std::unordered_map<uint64_t, std::vector<std::pair<uint32_t, uint32_t>>> kinds_;  // edge -> (apex, kind)
-  const ObjectiveTerms& d_;
+  const TermsAtVertex at_;
+  const ObjectiveTerms& d_;  // (the domain's, or the plain ones without a domain)
   Sense sense_;
   std::vector<uint8_t> shared_;  // per vertex: in two regions that may have a choice
   std::vector<uint8_t> on_hull_;

@@ -34,6 +34,10 @@ struct Region {
 struct Regions {
   uint32_t order = 1;
   std::vector<std::pair<uint32_t, uint32_t>> useful;  // useful k-OD edges (u < v)
+  // Within a domain, per vertex: 1 if a k-OD triangle at it may be outside
+  // (vertices_near_outside, domain.hpp); the terms at the others are the ones
+  // without a domain (region_terms.hpp). Empty: every vertex may be.
+  std::vector<uint8_t> near_outside;
   std::vector<uint8_t> fixed;                 // per Delaunay halfedge: in every k-OD triangulation
   std::vector<uint32_t> region_of_triangle;   // per Delaunay triangle
   std::vector<Region> regions;

@@ -17,9 +17,12 @@ struct SolveOptions {
   double epsilon = 0.25;  // approximation schemes: value within (1 - epsilon) of optimal
   bool trace = false;     // record the bottleneck search (min-max pair objectives)
   uint32_t max_width = 20;  // exact engine: widest tree decomposition allowed (memory cap)
-  Progress progress;      // long runs: called with (done, total); false cancels
-  // progress is called at least at every phase and at most every this often
-  // (paced(); 0: at every progress point of the solvers, for tests).
+  // Long runs: phased(callback) to receive each phase by name, its fraction and
+  // the time left (progress.hpp); a plain (done, total) function receives each
+  // phase's fraction as (fraction, 1). false cancels.
+  Progress progress;
+  // A plain progress is called at every new phase and at most every this often
+  // (0: at every progress point of the solvers, for tests); phased() has its own.
   double progress_interval_ms = kProgressIntervalMs;
   // explain(): where the solvers that run record what they built (not owned).
   Explanation* explanation = nullptr;

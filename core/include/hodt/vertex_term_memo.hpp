@@ -8,8 +8,8 @@
 // Over the convex hull the star of v in a triangulation is the fan over its
 // neighbours in angular order (the triangles around v tile a neighbourhood of
 // it, or at a hull vertex the wedge inside the hull), so the neighbours decide
-// the term. Not so within a domain, where holes open gaps in a star: a solve
-// there has no memo.
+// the term. Within a domain too: the triangulations still cover the hull, so
+// the neighbours decide the star's triangles, and with them which are inside.
 #pragma once
 #include <cstddef>
 #include <cstdint>

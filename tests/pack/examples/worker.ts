@@ -9,7 +9,7 @@ export interface SolveRequest {
   objective: ObjectiveId;
 }
 export type SolveReply =
-  | { kind: 'progress'; done: number; total: number }
+  | { kind: 'progress'; done: number; total: number; phase: string }
   | { kind: 'solved'; triangles: Uint32Array; value: number; delaunayValue: number; optimal: boolean }
   | { kind: 'failed'; name: string; message: string };
 
@@ -22,7 +22,7 @@ self.onmessage = async ({ data }: MessageEvent<SolveRequest>) => {
     const terrain = hodt.terrain(data.points);
     try {
       const best = terrain.solve(data.objective, {
-        progress: (done, total) => reply({ kind: 'progress', done, total }),
+        progress: (done, total, { phase }) => reply({ kind: 'progress', done, total, phase }),
       });
       const { triangles, value, delaunayValue, optimal } = best;
       reply({ kind: 'solved', triangles, value, delaunayValue, optimal }, [triangles.buffer]);

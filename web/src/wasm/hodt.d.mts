@@ -2,6 +2,7 @@
 // the public API is in ../index.ts.
 import type { BakerExplanation, ExactExplanation, RegionExplanation, SearchExplanation } from '../explain.js';
 import type { SolvedBy } from '../objectives.js';
+import type { ProgressInfo } from '../solve.js';
 import type { ThresholdStep } from '../terrain.js';
 export interface RawChoiceResult {
   triangles: Uint32Array;
@@ -69,14 +70,14 @@ export interface RawTerrain {
     epsilon: number,
     trace: boolean,
     order: number,
-    progress: ((done: number, total: number) => boolean | void) | undefined,
+    progress: ((done: number, total: number, info: ProgressInfo) => boolean | void) | undefined,
   ): RawSolved;
   explain(
     objective: string,
     method: string,
     epsilon: number,
     order: number,
-    progress: ((done: number, total: number) => boolean | void) | undefined,
+    progress: ((done: number, total: number, info: ProgressInfo) => boolean | void) | undefined,
   ): RawExplanation;
   enumerateAll(): Float64Array;
   statsJson(order: number): string;

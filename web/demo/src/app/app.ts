@@ -1,4 +1,4 @@
-import { InputError, type Hodt, type ObjectiveInfo, type ParsedPoints, type Solution } from 'hodt';
+import { InputError, type Hodt, type ObjectiveInfo, type ParsedPoints, type ProgressInfo, type Solution } from 'hodt';
 import { Vector2 } from 'three';
 import { download } from '../io/download.ts';
 import { meshFile } from '../io/meshExport.ts';
@@ -200,7 +200,7 @@ export function startApp(hodt: Hodt): void {
     result.running(objective, () => solver.cancel());
     hooks();
     const fallback = keepDisplay ? 0 : window.setTimeout(() => token === solveToken && !preview && showChoice(null), reframePending ? 0 : SOLUTION_GRACE_MS);
-    const progress = (done: number, total: number) => token === solveToken && result.progress(done, total);
+    const progress = (info: ProgressInfo) => token === solveToken && result.progress(info);
     // At order k the explanation brings the regions, counted as the Teach view counts them.
     void solver.solve({ points, ...settings, explain: settings.order > 1 }, progress).then((outcome) => {
       if (token !== solveToken) return; // superseded by a newer edit

@@ -1,4 +1,4 @@
-import type { Explanation, Method, ObjectiveId, Solution } from 'hodt';
+import type { Explanation, Method, ObjectiveId, ProgressInfo, Solution } from 'hodt';
 
 /** Messages between the page and the solver worker (solver/worker.ts). */
 export interface SolveRequest {
@@ -20,7 +20,8 @@ export interface SolveRequest {
 }
 
 export type WorkerReply =
-  /** Work done out of total in the current phase (phases restart the count). */
-  | { type: 'progress'; id: number; done: number; total: number }
+  /** How far the solve is: the library's progress (its phase, a fraction that never
+   * goes back within it, and the time left where the phase knows its size). */
+  | { type: 'progress'; id: number; info: ProgressInfo }
   | { type: 'solved'; id: number; solution: Solution; explanation?: Explanation }
   | { type: 'failed'; id: number; name: string; message: string };

@@ -1,4 +1,4 @@
-import type { Explanation, Method, ObjectiveId, Solution } from 'hodt';
+import type { Explanation, Method, ObjectiveId, ProgressInfo, Solution } from 'hodt';
 import type { SolveRequest, WorkerReply } from './protocol.ts';
 
 export type SolveOutcome =
@@ -23,7 +23,7 @@ export interface SolveJob {
  * runs terminates the worker (the only way to stop wasm mid-run) and starts a
  * fresh one; the superseded run resolves as cancelled. */
 export interface SolverClient {
-  solve(job: SolveJob, onProgress?: (done: number, total: number) => void): Promise<SolveOutcome>;
+  solve(job: SolveJob, onProgress?: (info: ProgressInfo) => void): Promise<SolveOutcome>;
   cancel(): void;
   readonly busy: boolean;
 }
@@ -31,7 +31,7 @@ export interface SolverClient {
 export function createSolverClient(): SolverClient {
   let worker = spawn();
   let nextId = 1;
-  let pending: { id: number; resolve: (o: SolveOutcome) => void; onProgress?: (done: number, total: number) => void } | null = null;
+  let pending: { id: number; resolve: (o: SolveOutcome) => void; onProgress?: (info: ProgressInfo) => void } | null = null;
 
   function spawn(): Worker {
     const w = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name: 'hodt-solver' });
@@ -39,7 +39,7 @@ export function createSolverClient(): SolverClient {
       const r = event.data;
       if (!pending || pending.id !== r.id) return;
       if (r.type === 'progress') {
-        pending.onProgress?.(r.done, r.total);
+        pending.onProgress?.(r.info);
         return;
       }
       const { resolve } = pending;

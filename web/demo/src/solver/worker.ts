@@ -2,7 +2,7 @@
 // The solver worker: builds the terrain from the points with the public API and
 // solves one objective, so that long runs never freeze the page. Cancelling a run
 // terminates this worker (the page starts a new one).
-import { loadHodt } from 'hodt';
+import { loadHodt, type ProgressInfo } from 'hodt';
 import type { SolveRequest, WorkerReply } from './protocol.ts';
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
@@ -14,11 +14,13 @@ scope.onmessage = async (event: MessageEvent<SolveRequest>) => {
   try {
     const terrain = (await hodt).terrain(points, { maxEdge });
     let last = 0;
-    const progress = (done: number, total: number) => {
+    let phase = '';
+    const progress = (_done: number, _total: number, info: ProgressInfo) => {
       const now = performance.now();
-      if (now - last < 100) return; // a few updates a second are plenty
+      if (now - last < 100 && info.phase === phase) return; // a few updates a second are plenty, and each new phase
       last = now;
-      reply({ type: 'progress', id, done, total });
+      phase = info.phase;
+      reply({ type: 'progress', id, info });
     };
     try {
       // Order k >= 2 chooses its method itself: the library refuses one.

@@ -1,4 +1,4 @@
-import type { ObjectiveInfo, RegionExplanation, Solution } from 'hodt';
+import type { ObjectiveInfo, ProgressInfo, RegionExplanation, Solution } from 'hodt';
 import { countRegions, describeRegions, detailsWithoutRegionSummary } from '../app/regionCount.ts';
 import { byId, h } from './dom.ts';
 import { formatValue, OBJECTIVE_HELP } from './objectiveHelp.ts';
@@ -8,8 +8,8 @@ import { formatValue, OBJECTIVE_HELP } from './objectiveHelp.ts';
  * and flips; or why it failed. */
 export interface ResultCard {
   running(objective: ObjectiveInfo, onCancel: () => void): void;
-  /** Work done out of total in the solver's current phase. */
-  progress(done: number, total: number): void;
+  /** The solver's phase, and how far it is when the phase knows its size. */
+  progress(info: ProgressInfo): void;
   /** regions: the library's regions of the order (order k >= 2). */
   solved(objective: ObjectiveInfo, s: Solution, numQuads: number, regions?: RegionExplanation | null): void;
   failed(objective: ObjectiveInfo, message: string, order?: number): void;
@@ -34,16 +34,26 @@ export function createResultCard(): ResultCard {
       root.dataset.state = 'running';
       root.replaceChildren(
         h('div', { class: 'progress', id: 'progress', role: 'progressbar', 'aria-label': 'Solving' }, h('i')),
-        h('p', { class: 'line' }, `Solving ${OBJECTIVE_HELP[o.id].name.toLowerCase()}… `, elapsed, ' ', cancel),
+        h('p', { class: 'line' }, `Solving ${OBJECTIVE_HELP[o.id].name.toLowerCase()}… `, h('span', { class: 'phase', id: 'phase' }), elapsed, ' ', cancel),
       );
       timer = window.setInterval(() => {
         elapsed.textContent = `${((performance.now() - started) / 1000).toFixed(1)} s`;
       }, 100);
     },
-    progress(done, total) {
+    progress(info) {
       const bar = root.querySelector<HTMLElement>('#progress');
-      if (!bar || total <= 0) return;
-      const fraction = Math.min(1, Math.max(0, done / total));
+      const phase = root.querySelector<HTMLElement>('#phase');
+      if (!bar || !phase) return;
+      const left = info.secondsLeft === null ? '' : `, about ${Math.ceil(info.secondsLeft)} s left`;
+      phase.textContent = `${info.phase}${left} · `;
+      // A phase that does not know its size shows that work goes on, not a share.
+      if (!info.sized) {
+        delete bar.dataset.determinate;
+        bar.removeAttribute('aria-valuenow');
+        bar.querySelector('i')!.style.width = '';
+        return;
+      }
+      const fraction = Math.min(1, Math.max(0, info.fraction));
       bar.dataset.determinate = '';
       bar.setAttribute('aria-valuenow', String(Math.round(fraction * 100)));
       bar.querySelector('i')!.style.width = `${(fraction * 100).toFixed(1)}%`;
