@@ -4,10 +4,9 @@
 // and formulas the layout cannot take are refused with a message. Screenshots of
 // the view at 1440x900 and 1280x720 go to test-results/ (and docs/screenshots/
 // with HODT_SCREENSHOTS=1).
-import { copyFileSync, mkdirSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, test } from 'vitest';
-import { buildGadget, openPage, resultsDir, root, screenshot, setUpDemo } from './harness.ts';
+import { buildGadget, keepScreenshots, openPage, screenshot, setUpDemo } from './harness.ts';
 import { parseCnf } from '../../web/demo/src/teach/formula.ts';
 
 const env = setUpDemo();
@@ -47,10 +46,7 @@ describe('mixed vertices gadget (Section 3.1)', () => {
       }
       await page.waitForTimeout(250);
       await screenshot(page, shot);
-      if (process.env.HODT_SCREENSHOTS) {
-        mkdirSync(`${root}docs/screenshots`, { recursive: true });
-        copyFileSync(`${resultsDir}/${shot}`, `${root}docs/screenshots/${shot}`);
-      }
+      keepScreenshots(shot);
       expect(errors).toEqual([]);
       await context.close();
     });

@@ -2,10 +2,10 @@
 // vertices), built from a small formula, solved exactly by the library and checked.
 import { VertexClass, type Solution, type Terrain } from 'hodt';
 import { h } from '../ui/dom.ts';
-import { CATEGORICAL, createFittedCanvas, tint, type FittedCanvas } from './canvas.ts';
+import { CATEGORICAL, createFittedCanvas, drawQuad, tint, type FittedCanvas } from './canvas.ts';
 import { legend, paperLink, type TeachContext, type TeachView } from './common.ts';
 import { FormulaError, parseCnf, satisfyingAssignment, type Cnf } from './formula.ts';
-import { createGadgetPane, fillClauseTable, formulaLine, gadgetRunner, showUnbuilt, solverLine, valuesText } from './gadgetPane.ts';
+import { createGadgetPane, fillClauseTable, formulaLine, gadgetRunner, gadgetTab, showUnbuilt, solverLine, valuesText } from './gadgetPane.ts';
 import { buildMixedGadget, MixedLayoutError, sectorCorners, type MixedGadget } from './mixedGadget.ts';
 import { certifyMixed, mapFanSectors, readMixedAssignment, type FanSectors, type MixedCertificate } from './mixedCheck.ts';
 
@@ -167,31 +167,9 @@ export function createMixedView(ctx: TeachContext): TeachView {
     g.fans.forEach((fan, i) => {
       const colour = CATEGORICAL[fan.variable % CATEGORICAL.length]!;
       fan.inner.forEach((_, k) => {
-        const [a, bo, co, d] = sectorCorners(fan, k);
-        c.beginPath();
-        c.moveTo(X(a), Y(a));
-        c.lineTo(X(bo), Y(bo));
-        c.lineTo(X(co), Y(co));
-        c.lineTo(X(d), Y(d));
-        c.closePath();
-        c.fillStyle = tint(colour, 0.3);
-        c.fill();
-        c.strokeStyle = '#777';
-        c.lineWidth = 1;
-        c.stroke();
         const q = b.map.quad[i]![k]!;
         const ccw = (choice ? choice[q] === 0 : true) === (b.map.delaunayCcw[i]![k] === 1);
-        c.beginPath();
-        if (ccw) {
-          c.moveTo(X(a), Y(a));
-          c.lineTo(X(co), Y(co));
-        } else {
-          c.moveTo(X(bo), Y(bo));
-          c.lineTo(X(d), Y(d));
-        }
-        c.strokeStyle = '#111';
-        c.lineWidth = Math.max(1.5, fc.scale * 0.035);
-        c.stroke();
+        drawQuad(c, X, Y, sectorCorners(fan, k), { fill: tint(colour, 0.3), outline: '#777', diagonalAC: ccw, width: Math.max(1.5, fc.scale * 0.035) });
       });
     });
     const r = Math.max(2.2, Math.min(5, fc.scale * 0.07));
@@ -219,18 +197,12 @@ export function createMixedView(ctx: TeachContext): TeachView {
     }
   }
 
-  return {
+  return gadgetTab({
     id: 'mixed',
     label: 'Mixed vertices',
     root,
-    activate() {
-      if (!runner.built && !runner.error) runner.run();
-      canvas.redraw();
-    },
-    deactivate() {},
-    changed() {
-      // The gadget does not depend on the page's terrain.
-    },
+    runner,
+    canvas,
     hooks() {
       const b = runner.built;
       const j = b ? judge(b) : null;
@@ -250,5 +222,5 @@ export function createMixedView(ctx: TeachContext): TeachView {
         holds: j?.holds ?? null,
       };
     },
-  };
+  });
 }
