@@ -4,10 +4,9 @@
 // formula the layout cannot take is refused with a message. Screenshots of the
 // view at 1280x720 and 1440x900 go to test-results/ (and docs/screenshots/ with
 // HODT_SCREENSHOTS=1).
-import { copyFileSync, mkdirSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, test } from 'vitest';
-import { buildGadget, openPage, resultsDir, root, screenshot, setUpDemo } from './harness.ts';
+import { buildGadget, keepScreenshots, openPage, screenshot, setUpDemo } from './harness.ts';
 
 const env = setUpDemo();
 
@@ -44,10 +43,7 @@ describe('max degree gadget (Section 3.2)', () => {
       expect(await page.locator('#degree-satisfiable').textContent()).toBe(satisfiable ? 'satisfiable' : 'unsatisfiable');
       await page.waitForTimeout(250);
       await screenshot(page, shot);
-      if (process.env.HODT_SCREENSHOTS) {
-        mkdirSync(`${root}docs/screenshots`, { recursive: true });
-        copyFileSync(`${resultsDir}/${shot}`, `${root}docs/screenshots/${shot}`);
-      }
+      keepScreenshots(shot);
       expect(errors).toEqual([]);
       await context.close();
     });

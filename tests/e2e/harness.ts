@@ -1,7 +1,7 @@
 /// <reference path="../../web/demo/src/globals.d.ts" />
 // Shared set-up of the browser tests: the demo served by Vite's dev server, and
 // Debian's Chromium driven by playwright-core (never a downloaded browser).
-import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
+import { copyFileSync, existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import type { AddressInfo } from 'node:net';
 import { fileURLToPath } from 'node:url';
 import type { Browser, BrowserContext, Page } from 'playwright-core';
@@ -97,6 +97,13 @@ export async function screenshot(page: Page, name: string): Promise<Buffer> {
   const shot = await page.screenshot();
   writeFileSync(`${resultsDir}/${name}`, shot);
   return shot;
+}
+
+/** With HODT_SCREENSHOTS=1: screenshots taken by screenshot() become the docs' ones. */
+export function keepScreenshots(...names: string[]): void {
+  if (!process.env.HODT_SCREENSHOTS) return;
+  mkdirSync(`${root}docs/screenshots`, { recursive: true });
+  for (const name of names) copyFileSync(`${resultsDir}/${name}`, `${root}docs/screenshots/${name}`);
 }
 
 /** Client coordinates of a spot in the plan view at least `clear` pixels from

@@ -1,9 +1,8 @@
 // The page loads without console errors and draws both views; screenshots of the
 // main states go to test-results/ (and the two best to docs/screenshots/ with
 // HODT_SCREENSHOTS=1).
-import { copyFileSync, mkdirSync } from 'node:fs';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
-import { openPage, resultsDir, root, screenshot, settled, startDemo, type Demo } from './harness.ts';
+import { keepScreenshots, openPage, screenshot, settled, startDemo, type Demo } from './harness.ts';
 import { decodePng, type Image } from './png.ts';
 
 let demo: Demo;
@@ -66,10 +65,7 @@ describe('the demo page', () => {
     const boxPlan = (await page.locator('#view-plan').boundingBox())!;
     expect(await page.locator('#view-3d').isVisible()).toBe(false);
     expect(colourfulFraction(plan, boxPlan)).toBeGreaterThan(0.08);
-    if (process.env.HODT_SCREENSHOTS) {
-      mkdirSync(`${root}docs/screenshots`, { recursive: true });
-      for (const f of ['demo-3d.png', 'demo-plan.png']) copyFileSync(`${resultsDir}/${f}`, `${root}docs/screenshots/${f}`);
-    }
+    keepScreenshots('demo-3d.png', 'demo-plan.png');
     expect(errors).toEqual([]);
     await context.close();
   });

@@ -2,12 +2,11 @@
 // end on fixed instances and checked against the library run in Node on the very
 // points the page shows. Screenshots of each view go to test-results/ (and to
 // docs/screenshots/ with HODT_SCREENSHOTS=1).
-import { copyFileSync, mkdirSync } from 'node:fs';
 import { loadHodt, type Hodt, type ObjectiveId } from 'hodt';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { decodeState } from '../../web/demo/src/share/urlState.ts';
-import { hooks, openPage, resultsDir, root, screenshot, settled, startDemo, type Demo } from './harness.ts';
+import { hooks, keepScreenshots, openPage, screenshot, settled, startDemo, type Demo } from './harness.ts';
 
 let demo: Demo;
 let hodt: Hodt;
@@ -36,11 +35,7 @@ async function openTeach(page: Page, tab: string): Promise<void> {
   await page.waitForFunction((t) => window.__hodtTeach?.visible && window.__hodtTeach.tab === t, tab);
 }
 
-function keep(name: string): void {
-  if (!process.env.HODT_SCREENSHOTS) return;
-  mkdirSync(`${root}docs/screenshots`, { recursive: true });
-  copyFileSync(`${resultsDir}/${name}`, `${root}docs/screenshots/${name}`);
-}
+const keep = (name: string) => keepScreenshots(name);
 
 describe('order control', () => {
   test('order 2 changes the value to the library’s, goes into the link, and draws the useful edges', async () => {

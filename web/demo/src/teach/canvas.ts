@@ -119,7 +119,35 @@ export function trianglePath(c: FittedCanvas, points: Float64Array, triangles: A
   return path;
 }
 
-/** A categorical palette for components, variables and layers. */
+/** A gadget's quad (a, b, c, d counterclockwise, canvas coordinates through x
+ * and y): filled and outlined, with its chosen diagonal (ac or bd) drawn bold. */
+export function drawQuad(
+  c: CanvasRenderingContext2D,
+  x: (i: number) => number,
+  y: (i: number) => number,
+  [a, b, cc, d]: readonly [number, number, number, number],
+  style: { fill: string; outline: string; diagonalAC: boolean; width: number },
+): void {
+  c.beginPath();
+  c.moveTo(x(a), y(a));
+  c.lineTo(x(b), y(b));
+  c.lineTo(x(cc), y(cc));
+  c.lineTo(x(d), y(d));
+  c.closePath();
+  c.fillStyle = style.fill;
+  c.fill();
+  c.strokeStyle = style.outline;
+  c.lineWidth = 1;
+  c.stroke();
+  const [from, to] = style.diagonalAC ? [a, cc] : [b, d];
+  c.beginPath();
+  c.moveTo(x(from), y(from));
+  c.lineTo(x(to), y(to));
+  c.strokeStyle = '#111';
+  c.lineWidth = style.width;
+  c.stroke();
+}
+
 /** A #rrggbb colour with an alpha. */
 export function tint(hex: string, alpha: number): string {
   const v = parseInt(hex.slice(1), 16);

@@ -1,8 +1,9 @@
-// The layout the Section 3.1 and 3.2 gadgets share: a formula of one- and
-// two-literal clauses read as chains of variables, each two-literal clause a joint
-// between two neighbours of a chain. A formula whose clause graph is not a set of
-// paths (a variable in three clauses, a cycle, a three-literal clause) is refused
-// with the reason, since both gadgets lay their chains out along one line.
+// The layout of the Section 3.2 gadget: a formula of one- and two-literal clauses
+// read as chains of variables, each two-literal clause a joint between two
+// neighbours of a chain. A formula whose clause graph is not a set of paths (a
+// variable in three clauses, a cycle, a three-literal clause) is refused with the
+// reason, since the gadget lays its chains out along one line. (The Section 3.1
+// gadget places its fans on a hexagonal grid instead: mixedGadget.ts.)
 import type { Cnf, Literal } from './formula.ts';
 
 export class ChainLayoutError extends Error {

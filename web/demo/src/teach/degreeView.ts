@@ -2,9 +2,9 @@
 // degree), built from a small formula, solved exactly by the library and checked.
 import type { Solution, Terrain } from 'hodt';
 import { h } from '../ui/dom.ts';
-import { CATEGORICAL, createFittedCanvas, tint, type FittedCanvas } from './canvas.ts';
+import { CATEGORICAL, createFittedCanvas, drawQuad, tint, type FittedCanvas } from './canvas.ts';
 import { legend, paperLink, type TeachContext, type TeachView } from './common.ts';
-import { createGadgetPane, fillClauseTable, formulaLine, gadgetRunner, showUnbuilt, solverLine, valuesText } from './gadgetPane.ts';
+import { createGadgetPane, fillClauseTable, formulaLine, gadgetRunner, gadgetTab, showUnbuilt, solverLine, valuesText } from './gadgetPane.ts';
 import { FormulaError, parseCnf, satisfyingAssignment, type Cnf } from './formula.ts';
 import { buildDegreeGadget, DegreeLayoutError, type DegreeGadget } from './degreeGadget.ts';
 import { certifyDegree, mapDegreeCells, readDegreeAssignment, type DegreeCells, type DegreeCertificate } from './degreeCheck.ts';
@@ -141,32 +141,15 @@ export function createDegreeView(ctx: TeachContext): TeachView {
     const choice = b.solution?.choice ?? null;
     const degrees = b.terrain.measures(choice ?? undefined).degree;
     g.cells.forEach((cell, i) => {
-      const [sw, se, ne, nw] = cell.corners;
-      c.beginPath();
-      c.moveTo(X(sw), Y(sw));
-      c.lineTo(X(se), Y(se));
-      c.lineTo(X(ne), Y(ne));
-      c.lineTo(X(nw), Y(nw));
-      c.closePath();
       const v = cell.wire >= 0 ? g.wires[cell.wire]!.variable : -1;
-      c.fillStyle = v >= 0 ? tint(CATEGORICAL[v % CATEGORICAL.length]!, 0.35) : 'rgba(120, 120, 120, 0.25)';
-      c.fill();
-      c.strokeStyle = '#555';
-      c.lineWidth = 1;
-      c.stroke();
       const q = b.map.quad[i]!;
-      const rises = (choice ? choice[q] === 0 : true) === (b.map.delaunayRises[i] === 1);
-      c.beginPath();
-      if (rises) {
-        c.moveTo(X(sw), Y(sw));
-        c.lineTo(X(ne), Y(ne));
-      } else {
-        c.moveTo(X(nw), Y(nw));
-        c.lineTo(X(se), Y(se));
-      }
-      c.strokeStyle = '#111';
-      c.lineWidth = Math.max(1.5, fc.scale * 0.04);
-      c.stroke();
+      const rises = (choice ? choice[q] === 0 : true) === (b.map.delaunayRises[i] === 1); // sw-ne
+      drawQuad(c, X, Y, cell.corners, {
+        fill: v >= 0 ? tint(CATEGORICAL[v % CATEGORICAL.length]!, 0.35) : 'rgba(120, 120, 120, 0.25)',
+        outline: '#555',
+        diagonalAC: rises,
+        width: Math.max(1.5, fc.scale * 0.04),
+      });
     });
     const r = Math.max(2, Math.min(5, fc.scale * 0.07));
     for (let i = 0; i < p.length / 3; i++) {
@@ -193,18 +176,12 @@ export function createDegreeView(ctx: TeachContext): TeachView {
     }
   }
 
-  return {
+  return gadgetTab({
     id: 'degree',
     label: 'Max degree',
     root,
-    activate() {
-      if (!runner.built && !runner.error) runner.run();
-      canvas.redraw();
-    },
-    deactivate() {},
-    changed() {
-      // The gadget does not depend on the page's terrain.
-    },
+    runner,
+    canvas,
     hooks() {
       const b = runner.built;
       const j = b ? judge(b) : null;
@@ -223,7 +200,7 @@ export function createDegreeView(ctx: TeachContext): TeachView {
         holds: j?.holds ?? null,
       };
     },
-  };
+  });
 }
 
 const MAX_VARIABLES = 6;

@@ -6,7 +6,8 @@
 import type { Solution, Terrain } from 'hodt';
 import { h } from '../ui/dom.ts';
 import type { SolveJob } from '../solver/solverClient.ts';
-import { button, createPane, type TeachContext } from './common.ts';
+import type { FittedCanvas } from './canvas.ts';
+import { button, createPane, type TeachContext, type TeachView } from './common.ts';
 import { literalTrue, type Cnf, type Literal } from './formula.ts';
 import { clauseText } from './chainLayout.ts';
 
@@ -158,3 +159,23 @@ export function fillClauseTable(
 
 /** "Values read from the fans: x = F, y = T" and what follows it. */
 export const valuesText = (f: Cnf, where: string, a: readonly boolean[]) => `Values read from the ${where}: ${f.names.map((name, v) => `${name} = ${a[v] ? 'T' : 'F'}`).join(', ')}`;
+
+/** A gadget's tab: built on first show, independent of the page's terrain. */
+export function gadgetTab<B extends BuiltGadget>(
+  o: { id: string; label: string; root: HTMLElement; runner: GadgetRunner<B>; canvas: FittedCanvas; hooks: () => Record<string, unknown> },
+): TeachView {
+  return {
+    id: o.id,
+    label: o.label,
+    root: o.root,
+    activate() {
+      if (!o.runner.built && !o.runner.error) o.runner.run();
+      o.canvas.redraw();
+    },
+    deactivate() {},
+    changed() {
+      // The gadget does not depend on the page's terrain.
+    },
+    hooks: o.hooks,
+  };
+}

@@ -32,7 +32,7 @@ export function mapFanSectors(g: MixedGadget, quads: Uint32Array): FanSectors {
     quad.push(qs);
     delaunayCcw.push(ccw);
   }
-  return { quad, delaunayCcw, otherQuads: quads.length / 4 - g.fans.length * 8 };
+  return { quad, delaunayCcw, otherQuads: quads.length / 4 - g.fans.reduce((s, fan) => s + fan.inner.length, 0) };
 }
 
 /** The triangulation of an assignment: every sector of a fan counterclockwise

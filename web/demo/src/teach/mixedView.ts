@@ -2,15 +2,14 @@
 // vertices), built from a small formula, solved exactly by the library and checked.
 import { VertexClass, type Solution, type Terrain } from 'hodt';
 import { h } from '../ui/dom.ts';
-import { CATEGORICAL, createFittedCanvas, tint, type FittedCanvas } from './canvas.ts';
+import { CATEGORICAL, createFittedCanvas, drawQuad, tint, type FittedCanvas } from './canvas.ts';
 import { legend, paperLink, type TeachContext, type TeachView } from './common.ts';
 import { FormulaError, parseCnf, satisfyingAssignment, type Cnf } from './formula.ts';
-import { ChainLayoutError } from './chainLayout.ts';
-import { createGadgetPane, fillClauseTable, formulaLine, gadgetRunner, showUnbuilt, solverLine, valuesText } from './gadgetPane.ts';
-import { buildMixedGadget, sectorCorners, type MixedGadget } from './mixedGadget.ts';
+import { createGadgetPane, fillClauseTable, formulaLine, gadgetRunner, gadgetTab, showUnbuilt, solverLine, valuesText } from './gadgetPane.ts';
+import { buildMixedGadget, MixedLayoutError, sectorCorners, type MixedGadget } from './mixedGadget.ts';
 import { certifyMixed, mapFanSectors, readMixedAssignment, type FanSectors, type MixedCertificate } from './mixedCheck.ts';
 
-export const DEFAULT_MIXED_FORMULA = 'x | y, !y | z, !x';
+export const DEFAULT_MIXED_FORMULA = 'x | y | z, !x | y, !y | w, !z';
 const MAX_VARIABLES = 6;
 
 interface Built {
@@ -36,8 +35,8 @@ export function createMixedView(ctx: TeachContext): TeachView {
     buildTitle: 'Build the gadget for this formula and solve it exactly (fewest mixed vertices)',
     run: () => runner.run(),
     lead: [
-      'Each variable is a fan: a ring of 8 flippable quads. An inner point is mixed exactly when both quads beside it use the diagonal that reaches it, so the fan is free of mixed points only when every quad turns the same way, clockwise or counterclockwise: the variable’s two values. ',
-      'Two fans share a clause vertex, mixed exactly when the diagonals of both false literals reach it; a one-literal clause is a point mixed when its false diagonal does. The fans’ two centre points are always mixed, so the fewest mixed vertices is that floor exactly when the formula is satisfiable. See ',
+      'Each variable is a fan: a ring of 6 flippable quads on a hexagonal grid. An inner point is mixed exactly when both quads beside it use the diagonal that reaches it, so a fan free of mixed points turns all one way, clockwise or counterclockwise: the variable’s two values. ',
+      'A clause is a corner where its variables’ fans meet, mixed exactly when the diagonals of all its false literals reach it. The centre points are always mixed, so the fewest mixed vertices is that floor exactly when the formula is satisfiable. See ',
       paperLink('3.1'),
       '.',
     ],
@@ -47,10 +46,10 @@ export function createMixedView(ctx: TeachContext): TeachView {
     'p',
     { class: 'teach-note' },
     h('b', {}, 'What this page does not show. '),
-    'The fans sit in a row and share a point with the next one only, so it lays out chains: clauses of one or two literals, every variable in at most two clauses, no cycle (two clauses on the same two variables only when one negates both literals of the other; a one-literal clause needs a free point of its fan whose neighbours no clause pair uses). The paper also splits chains (three fans on one) and has clause vertices of three literals; without them these formulas are ones 2-SAT solves, so this page shows how the gadgets work, not why the problem is hard. The coordinates and heights are this page’s own: every instance is checked above, not assumed.',
+    'Each variable is one fan, so the formula must fit on the grid: the fans of every clause must meet at a corner of their own (a search places them, or the page says why it cannot), two three-literal clauses cannot share all three variables, and a one-literal clause needs a corner no other fan touches. Around a corner the fans’ counterclockwise diagonals are 120 degrees apart, so a three-literal clause needs its false literals’ fans to turn the same way and a two-literal one opposite ways: a formula whose clauses ask a fan for both is refused (the paper’s inverter gadgets and fan chains, which split a variable over many fans, are not built). The coordinates and heights are this page’s own: every instance is checked above, not assumed.',
   );
   side.append(
-    h('label', { for: 'mixed-formula', class: 'teach-label' }, `Formula (clauses of one or two literals, up to ${MAX_VARIABLES} variables)`),
+    h('label', { for: 'mixed-formula', class: 'teach-label' }, `Formula (clauses of one to three literals, up to ${MAX_VARIABLES} variables)`),
     input,
     h('div', { class: 'buttons' }, build),
     verdict,
@@ -69,9 +68,9 @@ export function createMixedView(ctx: TeachContext): TeachView {
 
   const runner = gadgetRunner<Built>(ctx, {
     text: () => input.value,
-    refusals: [FormulaError, ChainLayoutError],
+    refusals: [FormulaError, MixedLayoutError],
     make(text) {
-      const formula = parseCnf(text, 1, 2, 'x | y, !x');
+      const formula = parseCnf(text, 1, 3, 'x | y | z, !x');
       if (formula.names.length > MAX_VARIABLES) throw new FormulaError(`${formula.names.length} variables: this gadget takes at most ${MAX_VARIABLES}`);
       const gadget = buildMixedGadget(formula);
       const terrain = ctx.hodt.terrain(gadget.points);
@@ -122,7 +121,7 @@ export function createMixedView(ctx: TeachContext): TeachView {
     const g = b.gadget;
     summary.replaceChildren(
       ...formulaLine('mixed', f, b.satisfying !== null),
-      `The gadget: ${(g.points.length / 3).toLocaleString('en')} points, ${b.terrain.numQuads} flippable quads (${g.fans.length * 8} in fans, the others between fans), floor ${g.floor}. `,
+      `The gadget: ${(g.points.length / 3).toLocaleString('en')} points, ${b.terrain.numQuads} flippable quads (${g.fans.length * 6} in fans, the others in the filling), floor ${g.floor}. `,
       solverLine(b, (v) => `${v} mixed vertices at fewest`),
     );
     const read = b.solution ? readMixedAssignment(g, b.map, b.solution.choice) : null;
@@ -168,31 +167,9 @@ export function createMixedView(ctx: TeachContext): TeachView {
     g.fans.forEach((fan, i) => {
       const colour = CATEGORICAL[fan.variable % CATEGORICAL.length]!;
       fan.inner.forEach((_, k) => {
-        const [a, bo, co, d] = sectorCorners(fan, k);
-        c.beginPath();
-        c.moveTo(X(a), Y(a));
-        c.lineTo(X(bo), Y(bo));
-        c.lineTo(X(co), Y(co));
-        c.lineTo(X(d), Y(d));
-        c.closePath();
-        c.fillStyle = tint(colour, 0.3);
-        c.fill();
-        c.strokeStyle = '#777';
-        c.lineWidth = 1;
-        c.stroke();
         const q = b.map.quad[i]![k]!;
         const ccw = (choice ? choice[q] === 0 : true) === (b.map.delaunayCcw[i]![k] === 1);
-        c.beginPath();
-        if (ccw) {
-          c.moveTo(X(a), Y(a));
-          c.lineTo(X(co), Y(co));
-        } else {
-          c.moveTo(X(bo), Y(bo));
-          c.lineTo(X(d), Y(d));
-        }
-        c.strokeStyle = '#111';
-        c.lineWidth = Math.max(1.5, fc.scale * 0.035);
-        c.stroke();
+        drawQuad(c, X, Y, sectorCorners(fan, k), { fill: tint(colour, 0.3), outline: '#777', diagonalAC: ccw, width: Math.max(1.5, fc.scale * 0.035) });
       });
     });
     const r = Math.max(2.2, Math.min(5, fc.scale * 0.07));
@@ -207,14 +184,12 @@ export function createMixedView(ctx: TeachContext): TeachView {
     c.font = `600 ${Math.max(10, Math.min(13, fc.scale * 0.22))}px system-ui, sans-serif`;
     c.textAlign = 'center';
     c.textBaseline = 'middle';
-    // Clause labels beside their vertex: below a joint, outside a fan's top or bottom.
+    // Clause labels just below their vertex.
     const labelled = new Map<number, string[]>();
     for (const cv of g.clauses) labelled.set(cv.point, [...(labelled.get(cv.point) ?? []), `C${cv.clause + 1}`]);
     for (const [i, names] of labelled) {
-      const y = p[3 * i + 1]!;
-      const offset = g.roles[i] === 'clause' ? -0.45 : Math.sign(y) * 0.45;
       c.fillStyle = classes[i] === VertexClass.Mixed ? MIXED : '#17804a';
-      c.fillText(names.join(', '), X(i), fc.sy(y + offset));
+      c.fillText(names.join(', '), X(i), fc.sy(p[3 * i + 1]! - 0.45));
     }
     for (const fan of g.fans) {
       c.fillStyle = CATEGORICAL[fan.variable % CATEGORICAL.length]!;
@@ -222,18 +197,12 @@ export function createMixedView(ctx: TeachContext): TeachView {
     }
   }
 
-  return {
+  return gadgetTab({
     id: 'mixed',
     label: 'Mixed vertices',
     root,
-    activate() {
-      if (!runner.built && !runner.error) runner.run();
-      canvas.redraw();
-    },
-    deactivate() {},
-    changed() {
-      // The gadget does not depend on the page's terrain.
-    },
+    runner,
+    canvas,
     hooks() {
       const b = runner.built;
       const j = b ? judge(b) : null;
@@ -253,5 +222,5 @@ export function createMixedView(ctx: TeachContext): TeachView {
         holds: j?.holds ?? null,
       };
     },
-  };
+  });
 }
