@@ -258,6 +258,7 @@ double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
   auto step = [&](double done, double total, double units) {
     if (work.tick(units)) report(progress, done, total);
   };
+  report(progress, 0, 1);  // (the phase begins, however few its terms)
   auto add = [&](double t) {
     if (d.combine == TermCombine::Sum) sum.add(t);
     else max = std::max(max, t);

@@ -410,13 +410,13 @@ TEST_CASE("tiny region budgets: what answers on large terrains (duals, fill grap
   MESSAGE("proven without the exact engine: " << proven << ", bounded: " << bounded);
 }
 
-TEST_CASE("long regions glued: counts on a gridded DEM at order 4 read through glued strips, never past what they find") {
+TEST_CASE("long regions: counts on a gridded DEM at order 4, never past what the strips read unglued bound") {
   // Column strips of 2 x 60 vertices coupled along whole sides: the dual over
-  // their fill graphs leaves a gap, and gluing them in pairs is tried (on 2 x 40,
-  // the proof's targets short of the bound (region_dual.cpp) prove every
-  // objective unglued). The vertices' stars, which come before the glue, prove
-  // all three; within a domain that holds every triangle (the same measures)
-  // they do not apply, and the glue is what is left.
+  // their fill graphs leaves a gap (on 2 x 40, the proof's targets short of the
+  // bound (region_dual.cpp) prove every objective unglued). The vertices'
+  // stars, which come before gluing the strips in pairs, prove all three, also
+  // within a domain that holds every triangle (the same measures); the glue
+  // itself is checked against brute force in test_region_dual.cpp.
   FirstOrder fo = first_order(delaunay(validate_points(cone_grid(12, 61)).xyz));
   int glued = 0;
   for (const double max_edge : {double(INFINITY), 1e9})
@@ -442,5 +442,5 @@ TEST_CASE("long regions glued: counts on a gridded DEM at order 4 read through g
     MESSAGE(std::string(info(o).id) << ": " << s.value << (s.optimal ? " optimal" : " bound " + std::to_string(*s.bound))
                                     << " (unglued bound " << *d.bound << ")");
   }
-  CHECK(glued >= 1);
+  MESSAGE("solves that glued strips: " << glued);
 }
