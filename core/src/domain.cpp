@@ -53,11 +53,12 @@ std::vector<uint8_t> vertices_near_outside(const Mesh& dt, const std::vector<std
     a.erase(std::unique(a.begin(), a.end()), a.end());
   }
   // A triangle uvw with a long edge uv: u, v and every common neighbour w.
+  std::vector<uint32_t> common;
   for (uint32_t u = 0; u < adj.size(); ++u)
     for (uint32_t v : adj[u]) {
       if (v < u || edge_inside(dt, u, v)) continue;
       near[u] = near[v] = 1;
-      std::vector<uint32_t> common;
+      common.clear();
       std::set_intersection(adj[u].begin(), adj[u].end(), adj[v].begin(), adj[v].end(), std::back_inserter(common));
       for (uint32_t w : common) near[w] = 1;
     }

@@ -5,6 +5,7 @@
 
 #include "hodt/bottleneck.hpp"
 #include "hodt/domain.hpp"
+#include "hodt/exact_sum.hpp"
 #include "hodt/format.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/pair_measures.hpp"
@@ -293,8 +294,8 @@ FactorGraph factor_model(const FirstOrder& fo, Objective o, const DpLimits& limi
         domain_length_terms(fo, constants, g);
         break;
       }
-      // Fixed edges as one constant, each quad its diagonal's length.
-      std::vector<double> fixed;
+      // Fixed edges as one constant (summed as evaluate sums), each quad its diagonal's length.
+      ExactSum fixed;
       const std::vector<uint8_t> diagonal = fo.diagonal_mask();
       for (uint32_t q = 0; q < fo.num_quads(); ++q) {
         const Quad& k = fo.quads[q];
@@ -302,8 +303,8 @@ FactorGraph factor_model(const FirstOrder& fo, Objective o, const DpLimits& limi
       }
       for (uint32_t e = 0; e < m.halfedges.size(); ++e)
         if (!diagonal[e] && m.halfedges[e] < static_cast<int32_t>(e))
-          fixed.push_back(edge_length(m.point(m.origin(e)), m.point(m.target(e))));
-      g.constant = order_free_sum(fixed);
+          fixed.add(edge_length(m.point(m.origin(e)), m.point(m.target(e))));
+      g.constant = fixed.value();
       break;
     }
     case Objective::MinmaxTriangleArea: {

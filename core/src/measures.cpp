@@ -5,7 +5,6 @@
 #include <cstring>
 
 #include "hodt/domain.hpp"
-#include "hodt/exact_sum.hpp"
 #include "hodt/kernel.hpp"
 #include "hodt/objective_terms.hpp"
 #include "hodt/portable_math.hpp"
@@ -78,12 +77,6 @@ double normal_angle(const double* const t1[3], const double* const t2[3]) {
 double edge_length(const double* a, const double* b) {
   const double dx = b[0] - a[0], dy = b[1] - a[1];  // symmetric: (-d)^2 = d^2 exactly
   return std::sqrt(dx * dx + dy * dy);              // sqrt is correctly rounded everywhere
-}
-
-double order_free_sum(const std::vector<double>& values) {
-  ExactSum s;
-  for (double v : values) s.add(v);
-  return s.value();
 }
 
 namespace {

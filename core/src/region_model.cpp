@@ -46,7 +46,7 @@ struct Fans {
 // that reads the domain's terms (TermsAtVertex), the same triangles.
 // items: a view's (only their vertices are read from it); null: every vertex
 // (a region, or its first view, which speaks for everything no other view does).
-Fans fans_of(const Mesh& dt, const TermsAtVertex& at, const std::vector<std::vector<Tri>>& states,
+Fans fans_of(const TermsAtVertex& at, const std::vector<std::vector<Tri>>& states,
              const std::vector<Tri>* items, const std::function<void()>& tick) {
   Fans f;
   if (items) {  // (a view of one vertex of a long region: not its hundreds of others)
@@ -287,7 +287,7 @@ struct Builder {
     auto fans_at = [&](uint32_t i) -> const Fans& {
       if (!have[i]) {
         const std::vector<Tri>* items = i == first_src[src[i].region] ? nullptr : src[i].items;
-        fans[i] = fans_of(dt, at, states(i), items, [&] { tick(i, src.size()); }), have[i] = 1;
+        fans[i] = fans_of(at, states(i), items, [&] { tick(i, src.size()); }), have[i] = 1;
       }
       return fans[i];
     };

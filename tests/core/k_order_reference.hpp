@@ -1,14 +1,19 @@
 // The reference at order k: brute force, every k-OD triangulation of the
 // instance enumerated; and the small instances the order-k tests run over.
 #pragma once
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
+#include <optional>
+#include <vector>
 
 #include "generators.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/first_order.hpp"
 #include "hodt/k_order.hpp"
+#include "hodt/measures.hpp"
+#include "hodt/objectives.hpp"
 #include "hodt/points.hpp"
 #include "hodt/region_engine.hpp"
 #include "hodt/solve_options.hpp"
@@ -19,6 +24,25 @@ inline KOrderResult k_order_brute_force(const FirstOrder& fo, Objective o, uint3
   SolveOptions bf;
   bf.method = Method::BruteForce;
   return solve_k_order(fo, o, k, bf, max_nodes);
+}
+
+// The optimum of every objective over every k-OD triangulation of dt's points,
+// each triangulation listed once and measured as dt's coordinates say (their
+// domain too); nullopt when listing them takes more than max_nodes search nodes.
+inline std::optional<std::array<double, kNumObjectives>> k_order_optima(const Mesh& dt, uint32_t k, uint64_t max_nodes) {
+  std::array<double, kNumObjectives> best{};
+  bool have = false;
+  const bool complete = enumerate_k_order(dt, k, max_nodes, [&](const std::vector<Tri>& tris) {
+    const Mesh m = mesh_of(dt.coords, tris);
+    for (const auto& oi : objectives()) {
+      double& b = best[static_cast<size_t>(oi.objective)];
+      const double v = evaluate(oi.objective, m);
+      if (!have || better(oi.sense, v, b)) b = v;
+    }
+    have = true;
+  }, {});
+  if (!complete || !have) return std::nullopt;
+  return best;
 }
 
 // f(k, seed, fo, structure) for each order k and seed 1..seeds: the mixed

@@ -80,9 +80,6 @@ double enclosing_circle_uncached(const double* a, const double* b, const double*
 double circumradius(const double* a, const double* b, const double* c);
 // Plane length of a segment.
 double edge_length(const double* a, const double* b);
-// The correctly rounded sum (exact_sum.hpp): it does not depend on the order of
-// the terms, so equal triangulations listed differently have bit-identical totals.
-double order_free_sum(const std::vector<double>& values);
 
 // Neighbours of every vertex, counterclockwise, in compressed rows.
 struct Stars {

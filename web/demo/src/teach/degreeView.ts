@@ -1,30 +1,37 @@
 // Teaching view: the NP-hardness construction of Section 3.2 (lowest maximum
 // degree), built from a small formula, solved exactly by the library and checked.
-import type { Solution, Terrain } from 'hodt';
 import { h } from '../ui/dom.ts';
 import { CATEGORICAL, createFittedCanvas, drawQuad, tint, type FittedCanvas } from './canvas.ts';
 import { legend, paperLink, type TeachContext, type TeachView } from './common.ts';
-import { createGadgetPane, fillClauseTable, formulaLine, gadgetRunner, gadgetTab, showUnbuilt, solverLine, valuesText } from './gadgetPane.ts';
-import { FormulaError, parseCnf, satisfyingAssignment, type Cnf } from './formula.ts';
+import {
+  checkSpan,
+  createGadgetPane,
+  fillClauseTable,
+  formulaLine,
+  gadgetHooks,
+  gadgetRunner,
+  gadgetTab,
+  judgeReduction,
+  parseGadgetFormula,
+  showUnbuilt,
+  solverLine,
+  valuesText,
+  type BuiltFormulaGadget,
+  type Verdict,
+} from './gadgetPane.ts';
+import { FormulaError, satisfyingAssignment } from './formula.ts';
 import { buildDegreeGadget, DegreeLayoutError, type DegreeGadget } from './degreeGadget.ts';
 import { certifyDegree, mapDegreeCells, readDegreeAssignment, type DegreeCells, type DegreeCertificate } from './degreeCheck.ts';
 
 export const DEFAULT_DEGREE_FORMULA = 'x | y, !y | z, !x';
 
-interface Built {
-  formula: Cnf;
-  gadget: DegreeGadget;
-  terrain: Terrain;
-  map: DegreeCells;
-  satisfying: boolean[] | null;
-  certificate: DegreeCertificate;
-  solution: Solution | null;
-  failure: string | null;
-}
+const MAX_VARIABLES = 6;
+
+type Built = BuiltFormulaGadget<DegreeGadget, DegreeCells, DegreeCertificate>;
 
 
 export function createDegreeView(ctx: TeachContext): TeachView {
-  const { root, side, main, caption, input, build, summary, verdict } = createGadgetPane({ id: 'degree', title: 'Why the lowest maximum degree is NP-hard', formula: DEFAULT_DEGREE_FORMULA, rows: 2, ariaLabel: 'Formula for the maximum degree gadget', buildTitle: 'Build the gadget for this formula and solve it exactly (lowest maximum degree)', run: () => runner.run(), lead: [
+  const { root, side, main, caption, input, summary, verdict } = createGadgetPane({ id: 'degree', title: 'Why the lowest maximum degree is NP-hard', label: `Formula (clauses of one or two literals, up to ${MAX_VARIABLES} variables)`, formula: DEFAULT_DEGREE_FORMULA, rows: 2, ariaLabel: 'Formula for the maximum degree gadget', buildTitle: 'Build the gadget for this formula and solve it exactly (lowest maximum degree)', run: () => runner.run(), lead: [
     'Each cell below is a flippable quad, so it adds one to the degree of two opposite corners. A point on a side two cells share has d − 1 fixed neighbours: only one of the two diagonals that could reach it fits under d, so all cells of a row use the same diagonal, rising or falling: a variable. ',
     'Where two rows meet, the corner that both false literals’ diagonals would reach is a clause vertex: the two cannot both be there. A one-literal clause is a corner with d fixed neighbours. So the maximum degree can be at most d only if the formula is satisfiable. See ',
     paperLink('3.2'),
@@ -40,9 +47,6 @@ export function createDegreeView(ctx: TeachContext): TeachView {
     'The degrees are measured with a longest edge of 1.35 (a triangle with a longer edge is not measured): it leaves out the long triangles that fill the convex hull around the rows, which the paper triangulates with Ruppert’s algorithm instead. Every instance is checked above, not assumed.',
   );
   side.append(
-    h('label', { for: 'degree-formula', class: 'teach-label' }, 'Formula (clauses of one or two literals, up to 6 variables)'),
-    input,
-    h('div', { class: 'buttons' }, build),
     verdict,
     summary,
     clauses,
@@ -60,8 +64,7 @@ export function createDegreeView(ctx: TeachContext): TeachView {
     text: () => input.value,
     refusals: [FormulaError, DegreeLayoutError],
     make(text) {
-      const formula = parseCnf(text, 1, 2, 'x | y, !x');
-      if (formula.names.length > MAX_VARIABLES) throw new FormulaError(`${formula.names.length} variables: this gadget takes at most ${MAX_VARIABLES}`);
+      const formula = parseGadgetFormula(text, 2, 'x | y, !x', MAX_VARIABLES);
       const gadget = buildDegreeGadget(formula);
       const terrain = ctx.hodt.terrain(gadget.points, { maxEdge: gadget.maxEdge });
       const map = mapDegreeCells(gadget, terrain.quads);
@@ -74,24 +77,19 @@ export function createDegreeView(ctx: TeachContext): TeachView {
   });
 
   /** Does the reduction hold on this instance, and if not, where does it fail? */
-  function judge(b: Built): { holds: boolean | null; text: string } {
+  function judge(b: Built): Verdict {
     const d = b.gadget.bound;
-    const s = b.solution;
-    if (!s) return { holds: null, text: '' };
-    if (!s.optimal) return { holds: false, text: `The solver’s ${s.value} is not proven optimal, so this instance is not verified.` };
     const sat = b.satisfying !== null;
     const wrong = b.certificate.wrong.length;
-    const per = wrong === 0 ? `each of the ${b.certificate.values.length} assignments’ triangulations has maximum degree at most ${d} exactly when the assignment satisfies the formula, and ` : `${wrong} assignment(s) break “maximum degree at most ${d} exactly when satisfied”, and `;
-    if ((s.value <= d) === sat && wrong === 0) {
-      return {
-        holds: true,
-        text: `Check: ${per}the proven optimum is ${s.value} ${sat ? `≤ d = ${d}, and the formula is satisfiable` : `> d = ${d}, and the formula is unsatisfiable`}: on this instance the reduction holds.`,
-      };
-    }
-    return {
-      holds: false,
-      text: `Check failed: ${per}the proven optimum is ${s.value} while the formula is ${sat ? 'satisfiable' : 'unsatisfiable'}: on this instance the reduction does not hold.`,
-    };
+    return judgeReduction(b.solution, (s) => ({
+      per:
+        wrong === 0
+          ? `each of the ${b.certificate.values.length} assignments’ triangulations has maximum degree at most ${d} exactly when the assignment satisfies the formula, and `
+          : `${wrong} assignment(s) break “maximum degree at most ${d} exactly when satisfied”, and `,
+      holds: (s.value <= d) === sat && wrong === 0,
+      found: sat ? `≤ d = ${d}, and the formula is satisfiable` : `> d = ${d}, and the formula is unsatisfiable`,
+      missed: ` while the formula is ${sat ? 'satisfiable' : 'unsatisfiable'}`,
+    }));
   }
 
   function render(): void {
@@ -99,9 +97,7 @@ export function createDegreeView(ctx: TeachContext): TeachView {
     caption.textContent = runner.built?.solution ? 'The exact optimum: each cell’s diagonal; points labelled with their degree where it matters' : 'The construction';
     const built = runner.built;
     if (!built) {
-      showUnbuilt(summary, runner.error);
-      verdict.replaceChildren();
-      clauses.replaceChildren();
+      showUnbuilt(summary, runner.error, verdict, clauses);
       return;
     }
     const b = built;
@@ -128,7 +124,7 @@ export function createDegreeView(ctx: TeachContext): TeachView {
     if (read) {
       verdict.append(`${valuesText(f, 'rows', read.assignment)}. `);
     }
-    verdict.append(h('span', { id: 'degree-check', 'data-ok': String(j.holds), class: j.holds ? 'good' : 'bad' }, j.text));
+    verdict.append(checkSpan('degree', j));
   }
 
   function draw(c: CanvasRenderingContext2D, fc: FittedCanvas): void {
@@ -182,25 +178,7 @@ export function createDegreeView(ctx: TeachContext): TeachView {
     root,
     runner,
     canvas,
-    hooks() {
-      const b = runner.built;
-      const j = b ? judge(b) : null;
-      return {
-        error: runner.error,
-        formula: input.value,
-        points: b ? Array.from(b.gadget.points) : [],
-        maxEdge: b?.gadget.maxEdge ?? null,
-        bound: b?.gadget.bound ?? null,
-        satisfiable: b ? b.satisfying !== null : null,
-        solved: b?.solution != null,
-        failure: b?.failure ?? null,
-        value: b?.solution?.value ?? null,
-        optimal: b?.solution?.optimal ?? null,
-        wrongAssignments: b ? b.certificate.wrong.length : null,
-        holds: j?.holds ?? null,
-      };
-    },
+    hooks: gadgetHooks(runner, input, judge, (b) => ({ maxEdge: b?.gadget.maxEdge ?? null, bound: b?.gadget.bound ?? null })),
   });
 }
 
-const MAX_VARIABLES = 6;

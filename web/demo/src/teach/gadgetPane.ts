@@ -8,7 +8,7 @@ import { h } from '../ui/dom.ts';
 import type { SolveJob } from '../solver/solverClient.ts';
 import type { FittedCanvas } from './canvas.ts';
 import { button, createPane, type TeachContext, type TeachView } from './common.ts';
-import { literalTrue, type Cnf, type Literal } from './formula.ts';
+import { FormulaError, literalTrue, parseCnf, type Cnf, type Literal } from './formula.ts';
 import { clauseText } from './chainLayout.ts';
 
 export interface GadgetPane {
@@ -18,23 +18,107 @@ export interface GadgetPane {
   caption: HTMLElement;
   input: HTMLTextAreaElement;
   build: HTMLButtonElement;
+  buttons: HTMLElement;
   summary: HTMLElement;
   verdict: HTMLElement;
 }
 
-export function createGadgetPane(o: { id: string; title: string; lead: (Node | string)[]; formula: string; rows: number; ariaLabel: string; buildTitle: string; run: () => void }): GadgetPane {
+/** The pane, its side opened by the formula's label, box and buttons (the view
+ * appends the rest: status, verdict, tables, legend). */
+export function createGadgetPane(o: {
+  id: string;
+  title: string;
+  lead: (Node | string)[];
+  label: string;
+  formula: string;
+  rows: number;
+  ariaLabel: string;
+  buildTitle: string;
+  run: () => void;
+}): GadgetPane {
   const { root, side, main, caption } = createPane(o.id, o.title, o.lead);
   const input = h('textarea', { id: `${o.id}-formula`, rows: o.rows, spellcheck: false, 'aria-label': o.ariaLabel });
   input.value = o.formula;
   const build = button(`${o.id}-build`, 'Build and solve', o.buildTitle, () => o.run(), false);
+  const buttons = h('div', { class: 'buttons' }, build);
   const summary = h('p', { class: 'teach-status', id: `${o.id}-summary`, 'aria-live': 'polite' });
   const verdict = h('p', { class: 'teach-verdict', id: `${o.id}-verdict` });
-  return { root, side, main, caption, input, build, summary, verdict };
+  side.append(h('label', { for: `${o.id}-formula`, class: 'teach-label' }, o.label), input, buttons);
+  return { root, side, main, caption, input, build, buttons, summary, verdict };
 }
 
-/** The status line when there is nothing built: the layout's message, or a prompt. */
-export function showUnbuilt(summary: HTMLElement, error: string | null): void {
+/** The status line when there is nothing built (the layout's message, or a
+ * prompt), and the built gadget's other panels emptied. */
+export function showUnbuilt(summary: HTMLElement, error: string | null, ...panels: HTMLElement[]): void {
   summary.replaceChildren(error ? h('span', { class: 'error' }, `Cannot build the gadget: ${error}.`) : 'Type a formula and press Build and solve.');
+  for (const panel of panels) panel.replaceChildren();
+}
+
+/** A formula for a gadget that takes clauses of 1 to maxLiterals literals over at
+ * most maxVariables variables. */
+export function parseGadgetFormula(text: string, maxLiterals: number, example: string, maxVariables: number): Cnf {
+  const formula = parseCnf(text, 1, maxLiterals, example);
+  if (formula.names.length > maxVariables) throw new FormulaError(`${formula.names.length} variables: this gadget takes at most ${maxVariables}`);
+  return formula;
+}
+
+/** Whether the reduction held on a built instance, in words. */
+export interface Verdict {
+  holds: boolean | null;
+  text: string;
+}
+
+/**
+ * The verdict on a solved instance: unverified unless the optimum is proven;
+ * else `explain` says what the assignments showed (`per`, ending in "and "),
+ * whether the optimum is what the proof predicts, and how it compares (`found`
+ * when it holds, `missed` when not).
+ */
+export function judgeReduction(s: Solution | null, explain: (s: Solution) => { per: string; holds: boolean; found: string; missed: string }): Verdict {
+  if (!s) return { holds: null, text: '' };
+  if (!s.optimal) return { holds: false, text: `The solver’s ${s.value} is not proven optimal, so this instance is not verified.` };
+  const e = explain(s);
+  return e.holds
+    ? { holds: true, text: `Check: ${e.per}the proven optimum is ${s.value} ${e.found}: on this instance the reduction holds.` }
+    : { holds: false, text: `Check failed: ${e.per}the proven optimum is ${s.value}${e.missed}: on this instance the reduction does not hold.` };
+}
+
+/** The verdict's check, marked for the tests (`#<id>-check`, data-ok). */
+export const checkSpan = (id: string, v: Verdict) => h('span', { id: `${id}-check`, 'data-ok': String(v.holds), class: v.holds ? 'good' : 'bad' }, v.text);
+
+/** What a 3.1 or 3.2 gadget's view built: its formula, the gadget (G), where its
+ * pieces are among the terrain's quads (M), and what every assignment scores (C). */
+export interface BuiltFormulaGadget<G extends { points: Float64Array } = { points: Float64Array }, M = unknown, C extends { wrong: readonly unknown[] } = { wrong: readonly unknown[] }> extends BuiltGadget {
+  formula: Cnf;
+  gadget: G;
+  map: M;
+  satisfying: boolean[] | null;
+  certificate: C;
+}
+
+/** The hooks (tests/e2e) every formula gadget shares, and its own (`extra`). */
+export function gadgetHooks<B extends BuiltFormulaGadget>(
+  runner: GadgetRunner<B>,
+  input: HTMLTextAreaElement,
+  judge: (b: B) => Verdict,
+  extra: (b: B | null) => Record<string, unknown>,
+): () => Record<string, unknown> {
+  return () => {
+    const b = runner.built;
+    return {
+      error: runner.error,
+      formula: input.value,
+      points: b ? Array.from(b.gadget.points) : [],
+      satisfiable: b ? b.satisfying !== null : null,
+      solved: b?.solution != null,
+      failure: b?.failure ?? null,
+      value: b?.solution?.value ?? null,
+      optimal: b?.solution?.optimal ?? null,
+      wrongAssignments: b ? b.certificate.wrong.length : null,
+      holds: b ? judge(b).holds : null,
+      ...extra(b),
+    };
+  };
 }
 
 /** What every built gadget carries: its terrain and the solver's outcome. */

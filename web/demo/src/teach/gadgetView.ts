@@ -27,7 +27,7 @@ interface Built {
 }
 
 export function createGadgetView(ctx: TeachContext): TeachView {
-  const { root, side, main, caption, input, build, summary, verdict } = createGadgetPane({ id: 'gadget', title: 'Why most convex edges is NP-hard', formula: DEFAULT_FORMULA, rows: 3, ariaLabel: 'MAX-2-SAT formula', buildTitle: 'Build the gadget for this formula and solve it', run: () => runner.run(), lead: [
+  const { root, side, main, caption, input, build, buttons, summary, verdict } = createGadgetPane({ id: 'gadget', title: 'Why most convex edges is NP-hard', label: 'Formula (clauses of two literals, up to 10 variables)', formula: DEFAULT_FORMULA, rows: 3, ariaLabel: 'MAX-2-SAT formula', buildTitle: 'Build the gadget for this formula and solve it', run: () => runner.run(), lead: [
     'A grid of unit quads with heights f(x, y) = xy − (x² + y²)/10 has one convex (red) and one reflex (blue) diagonal in every quad, and an edge between two quads is convex unless both use their convex diagonal. ',
     'So a large pool of quads scores best in one of two chessboard patterns: a variable. Each clause sends a tentacle from each of its two pools; they meet at one shared edge, which scores when either end quad is reflex, that is when either literal is true. ',
     'High points coat everything else. The best triangulation then satisfies as many clauses as possible: MAX-2-SAT. See ',
@@ -48,10 +48,8 @@ export function createGadgetView(ctx: TeachContext): TeachView {
     h('b', {}, 'Not a proof. '),
     'The paper proves the reduction for planar formulas with pools larger than their number of tentacles. Here pools are at most 8 quads high (so the exact solver can handle them), and the tentacles turn corners and skip columns in ways the paper only sketches, so this page does not claim the construction is exact in general: it checks every instance instead (the check above), by scoring the chessboard pattern of all 2ⁿ assignments.',
   );
+  buttons.append(open);
   side.append(
-    h('label', { for: 'gadget-formula', class: 'teach-label' }, 'Formula (clauses of two literals, up to 10 variables)'),
-    input,
-    h('div', { class: 'buttons' }, build, open),
     summary,
     verdict,
     vars,
@@ -129,10 +127,7 @@ export function createGadgetView(ctx: TeachContext): TeachView {
       ? 'Optimum: red convex, blue reflex diagonals · green clause edge convex · dashed: a skipped column'
       : 'The construction';
     if (!built) {
-      showUnbuilt(summary, runner.error);
-      vars.replaceChildren();
-      clauses.replaceChildren();
-      verdict.replaceChildren();
+      showUnbuilt(summary, runner.error, vars, clauses, verdict);
       return;
     }
     const b = built;

@@ -1,34 +1,41 @@
 // Teaching view: the NP-hardness construction of Section 3.1 (fewest mixed
 // vertices), built from a small formula, solved exactly by the library and checked.
-import { VertexClass, type Solution, type Terrain } from 'hodt';
+import { VertexClass } from 'hodt';
 import { h } from '../ui/dom.ts';
 import { CATEGORICAL, createFittedCanvas, drawQuad, tint, type FittedCanvas } from './canvas.ts';
 import { legend, paperLink, type TeachContext, type TeachView } from './common.ts';
-import { FormulaError, parseCnf, satisfyingAssignment, type Cnf } from './formula.ts';
-import { createGadgetPane, fillClauseTable, formulaLine, gadgetRunner, gadgetTab, showUnbuilt, solverLine, valuesText } from './gadgetPane.ts';
+import { FormulaError, satisfyingAssignment } from './formula.ts';
+import {
+  checkSpan,
+  createGadgetPane,
+  fillClauseTable,
+  formulaLine,
+  gadgetHooks,
+  gadgetRunner,
+  gadgetTab,
+  judgeReduction,
+  parseGadgetFormula,
+  showUnbuilt,
+  solverLine,
+  valuesText,
+  type BuiltFormulaGadget,
+  type Verdict,
+} from './gadgetPane.ts';
 import { buildMixedGadget, MixedLayoutError, sectorCorners, type MixedGadget } from './mixedGadget.ts';
 import { certifyMixed, mapFanSectors, readMixedAssignment, type FanSectors, type MixedCertificate } from './mixedCheck.ts';
 
 export const DEFAULT_MIXED_FORMULA = 'x | y | z, !x | y, !y | w, !z';
 const MAX_VARIABLES = 6;
 
-interface Built {
-  formula: Cnf;
-  gadget: MixedGadget;
-  terrain: Terrain;
-  map: FanSectors;
-  satisfying: boolean[] | null;
-  certificate: MixedCertificate;
-  solution: Solution | null;
-  failure: string | null;
-}
+type Built = BuiltFormulaGadget<MixedGadget, FanSectors, MixedCertificate>;
 
 const MIXED = '#d62728';
 
 export function createMixedView(ctx: TeachContext): TeachView {
-  const { root, side, main, caption, input, build, summary, verdict } = createGadgetPane({
+  const { root, side, main, caption, input, summary, verdict } = createGadgetPane({
     id: 'mixed',
     title: 'Why the fewest mixed vertices is NP-hard',
+    label: `Formula (clauses of one to three literals, up to ${MAX_VARIABLES} variables)`,
     formula: DEFAULT_MIXED_FORMULA,
     rows: 2,
     ariaLabel: 'Formula for the mixed vertices gadget',
@@ -49,9 +56,6 @@ export function createMixedView(ctx: TeachContext): TeachView {
     'Each variable is one fan, so the formula must fit on the grid: the fans of every clause must meet at a corner of their own (a search places them, or the page says why it cannot), two three-literal clauses cannot share all three variables, and a one-literal clause needs a corner no other fan touches. Around a corner the fans’ counterclockwise diagonals are 120 degrees apart, so a three-literal clause needs its false literals’ fans to turn the same way and a two-literal one opposite ways: a formula whose clauses ask a fan for both is refused (the paper’s inverter gadgets and fan chains, which split a variable over many fans, are not built). The coordinates and heights are this page’s own: every instance is checked above, not assumed.',
   );
   side.append(
-    h('label', { for: 'mixed-formula', class: 'teach-label' }, `Formula (clauses of one to three literals, up to ${MAX_VARIABLES} variables)`),
-    input,
-    h('div', { class: 'buttons' }, build),
     verdict,
     summary,
     clauses,
@@ -70,8 +74,7 @@ export function createMixedView(ctx: TeachContext): TeachView {
     text: () => input.value,
     refusals: [FormulaError, MixedLayoutError],
     make(text) {
-      const formula = parseCnf(text, 1, 3, 'x | y | z, !x');
-      if (formula.names.length > MAX_VARIABLES) throw new FormulaError(`${formula.names.length} variables: this gadget takes at most ${MAX_VARIABLES}`);
+      const formula = parseGadgetFormula(text, 3, 'x | y | z, !x', MAX_VARIABLES);
       const gadget = buildMixedGadget(formula);
       const terrain = ctx.hodt.terrain(gadget.points);
       const map = mapFanSectors(gadget, terrain.quads);
@@ -84,27 +87,19 @@ export function createMixedView(ctx: TeachContext): TeachView {
   });
 
   /** Does the reduction hold on this instance, and if not, where does it fail? */
-  function judge(b: Built): { holds: boolean | null; text: string } {
-    const s = b.solution;
-    if (!s) return { holds: null, text: '' };
+  function judge(b: Built): Verdict {
     const floor = b.gadget.floor;
-    if (!s.optimal) return { holds: false, text: `The solver’s ${s.value} is not proven optimal, so this instance is not verified.` };
     const sat = b.satisfying !== null;
     const wrong = b.certificate.wrong.length;
-    const per =
-      wrong === 0
-        ? `each of the ${b.certificate.values.length} assignments’ triangulations has ${floor} + (its false clauses) mixed vertices, and `
-        : `${wrong} assignment(s) do not have ${floor} + (their false clauses) mixed vertices, and `;
-    if ((s.value === floor) === sat && s.value >= floor && wrong === 0) {
-      return {
-        holds: true,
-        text: `Check: ${per}the proven optimum is ${s.value} ${sat ? `= ${floor}, the floor, and the formula is satisfiable` : `> ${floor}, the floor, and the formula is unsatisfiable`}: on this instance the reduction holds.`,
-      };
-    }
-    return {
-      holds: false,
-      text: `Check failed: ${per}the proven optimum is ${s.value} against a floor of ${floor} while the formula is ${sat ? 'satisfiable' : 'unsatisfiable'}: on this instance the reduction does not hold.`,
-    };
+    return judgeReduction(b.solution, (s) => ({
+      per:
+        wrong === 0
+          ? `each of the ${b.certificate.values.length} assignments’ triangulations has ${floor} + (its false clauses) mixed vertices, and `
+          : `${wrong} assignment(s) do not have ${floor} + (their false clauses) mixed vertices, and `,
+      holds: (s.value === floor) === sat && s.value >= floor && wrong === 0,
+      found: sat ? `= ${floor}, the floor, and the formula is satisfiable` : `> ${floor}, the floor, and the formula is unsatisfiable`,
+      missed: ` against a floor of ${floor} while the formula is ${sat ? 'satisfiable' : 'unsatisfiable'}`,
+    }));
   }
 
   function render(): void {
@@ -112,9 +107,7 @@ export function createMixedView(ctx: TeachContext): TeachView {
     const b = runner.built;
     caption.textContent = b?.solution ? 'The exact optimum: each quad’s diagonal; mixed vertices in red' : 'The construction';
     if (!b) {
-      showUnbuilt(summary, runner.error);
-      verdict.replaceChildren();
-      clauses.replaceChildren();
+      showUnbuilt(summary, runner.error, verdict, clauses);
       return;
     }
     const f = b.formula;
@@ -140,7 +133,7 @@ export function createMixedView(ctx: TeachContext): TeachView {
         impure.length ? ` (by most of their quads: the fan${impure.length === 1 ? '' : 's'} of ${impure.join(', ')} turn${impure.length === 1 ? 's' : ''} both ways, which costs a mixed vertex). ` : '. ',
       );
     }
-    verdict.append(h('span', { id: 'mixed-check', 'data-ok': String(j.holds), class: j.holds ? 'good' : 'bad' }, j.text));
+    verdict.append(checkSpan('mixed', j));
   }
 
   function draw(c: CanvasRenderingContext2D, fc: FittedCanvas): void {
@@ -203,24 +196,9 @@ export function createMixedView(ctx: TeachContext): TeachView {
     root,
     runner,
     canvas,
-    hooks() {
-      const b = runner.built;
-      const j = b ? judge(b) : null;
-      const read = b?.solution ? readMixedAssignment(b.gadget, b.map, b.solution.choice) : null;
-      return {
-        error: runner.error,
-        formula: input.value,
-        points: b ? Array.from(b.gadget.points) : [],
-        floor: b?.gadget.floor ?? null,
-        satisfiable: b ? b.satisfying !== null : null,
-        solved: b?.solution != null,
-        failure: b?.failure ?? null,
-        value: b?.solution?.value ?? null,
-        optimal: b?.solution?.optimal ?? null,
-        assignment: read?.assignment ?? null,
-        wrongAssignments: b ? b.certificate.wrong.length : null,
-        holds: j?.holds ?? null,
-      };
-    },
+    hooks: gadgetHooks(runner, input, judge, (b) => ({
+      floor: b?.gadget.floor ?? null,
+      assignment: b?.solution ? readMixedAssignment(b.gadget, b.map, b.solution.choice).assignment : null,
+    })),
   });
 }
