@@ -4,9 +4,9 @@
 #include <emscripten/heap.h>
 #include <emscripten/val.h>
 
-#include "hodt/domain.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/cli.hpp"
+#include "hodt/domain.hpp"
 #include "hodt/error.hpp"
 #include "hodt/explain.hpp"
 #include "hodt/higher_order.hpp"

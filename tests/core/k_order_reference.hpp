@@ -8,15 +8,15 @@
 #include <optional>
 #include <vector>
 
-#include "generators.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/first_order.hpp"
-#include "hodt/k_order.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/objectives.hpp"
 #include "hodt/points.hpp"
-#include "hodt/region_engine.hpp"
 #include "hodt/solve_options.hpp"
+#include "generators.hpp"
+#include "higher_order/k_order.hpp"
+#include "higher_order/regions/region_engine.hpp"
 
 namespace hodt::test {
 

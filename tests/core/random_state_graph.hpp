@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <random>
 
-#include "hodt/state_graph.hpp"
+#include "engines/state_graph.hpp"
 
 namespace hodt::test {
 

@@ -2,16 +2,16 @@
 // (brute force on small instances, the exact engine on jittered grids).
 #include <doctest/doctest.h>
 
-#include "generators.hpp"
-#include "hodt/approx.hpp"
-#include "hodt/baker.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/error.hpp"
-#include "hodt/factor_models.hpp"
 #include "hodt/points.hpp"
-#include "hodt/roof_dual.hpp"
 #include "hodt/solve.hpp"
+#include "approx/approx.hpp"
+#include "approx/baker.hpp"
+#include "engines/roof_dual.hpp"
+#include "generators.hpp"
+#include "objectives/factor_models.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -8,14 +8,14 @@
 #include <optional>
 #include <string>
 
-#include "generators.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/error.hpp"
-#include "hodt/factor_models.hpp"
-#include "hodt/min_max_degree.hpp"
 #include "hodt/points.hpp"
 #include "hodt/solve.hpp"
+#include "exact/min_max_degree.hpp"
+#include "generators.hpp"
+#include "objectives/factor_models.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -1,10 +1,10 @@
 #include <doctest/doctest.h>
 
-#include "generators.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/error.hpp"
 #include "hodt/points.hpp"
+#include "generators.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -6,12 +6,12 @@
 #include <sstream>
 #include <string>
 
-#include "generators.hpp"
 #include "hodt/cli.hpp"
-#include "hodt/cli_help.hpp"
-#include "hodt/file_errors.hpp"
 #include "hodt/terrain.hpp"
 #include "hodt/tin_output.hpp"
+#include "cli/cli_help.hpp"
+#include "generators.hpp"
+#include "io/file_errors.hpp"
 
 using namespace hodt;
 using hodt::test::uniform_points;

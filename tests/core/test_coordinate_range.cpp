@@ -7,7 +7,6 @@
 #include <cmath>
 #include <string>
 
-#include "exact_reference.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/error.hpp"
 #include "hodt/measures.hpp"
@@ -15,6 +14,7 @@
 #include "hodt/read_points.hpp"
 #include "hodt/solve.hpp"
 #include "hodt/terrain.hpp"
+#include "exact_reference.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -5,8 +5,8 @@
 #include <map>
 
 #include "hodt/cli.hpp"
-#include "hodt/crs.hpp"
 #include "hodt/tin_output.hpp"
+#include "terrain/crs.hpp"
 
 using namespace hodt;
 

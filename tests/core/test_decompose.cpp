@@ -5,11 +5,11 @@
 
 #include <algorithm>
 
-#include "generators.hpp"
 #include "hodt/delaunay.hpp"
-#include "hodt/factor_models.hpp"
-#include "hodt/roof_dual.hpp"
 #include "hodt/solve.hpp"
+#include "engines/roof_dual.hpp"
+#include "generators.hpp"
+#include "objectives/factor_models.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

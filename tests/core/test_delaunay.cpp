@@ -1,16 +1,16 @@
-// hodt's triangulator (core/src/delaunay.cpp) against CGAL's Delaunay_triangulation_2:
+// hodt's triangulator (core/src/mesh/delaunay.cpp) against CGAL's Delaunay_triangulation_2:
 // the same triangles on random, clustered and degenerate input (grids, cocircular
 // points, collinear runs on the hull, points on edges), in any input order.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 
-#include "cgal_delaunay.hpp"
-#include "generators.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/error.hpp"
 #include "hodt/points.hpp"
-#include "hodt/raster_delaunay.hpp"
+#include "cgal_delaunay.hpp"
+#include "generators.hpp"
+#include "mesh/raster_delaunay.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

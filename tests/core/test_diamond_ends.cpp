@@ -9,10 +9,10 @@
 #include <map>
 #include <set>
 
+#include "higher_order/bounds/diamond_ends.hpp"
+#include "higher_order/bounds/fan_trees.hpp"
+#include "higher_order/k_order.hpp"
 #include "k_order_reference.hpp"
-#include "hodt/diamond_ends.hpp"
-#include "hodt/fan_trees.hpp"
-#include "hodt/k_order.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

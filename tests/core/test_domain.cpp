@@ -8,24 +8,24 @@
 #include <cmath>
 #include <set>
 
-#include "generators.hpp"
-#include "k_order_reference.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/domain.hpp"
-#include "hodt/fan_windows.hpp"
 #include "hodt/higher_order.hpp"
-#include "hodt/k_order.hpp"
 #include "hodt/measures.hpp"
-#include "hodt/pair_measures.hpp"
-#include "hodt/objective_terms.hpp"
-#include "hodt/predicates.hpp"
 #include "hodt/points.hpp"
-#include "hodt/region_engine.hpp"
-#include "hodt/regions.hpp"
+#include "hodt/predicates.hpp"
 #include "hodt/solve.hpp"
-#include "hodt/star_bound.hpp"
 #include "hodt/terrain.hpp"
+#include "generators.hpp"
+#include "higher_order/bounds/star_bound.hpp"
+#include "higher_order/k_order.hpp"
+#include "higher_order/regions/region_engine.hpp"
+#include "higher_order/regions/regions.hpp"
+#include "higher_order/search/fan_windows.hpp"
+#include "k_order_reference.hpp"
+#include "objectives/objective_terms.hpp"
+#include "objectives/pair_measures.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -5,16 +5,16 @@
 
 #include <random>
 
-#include "generators.hpp"
-#include "k_order_reference.hpp"
 #include "hodt/delaunay.hpp"
-#include "hodt/dual_bound.hpp"
 #include "hodt/error.hpp"
 #include "hodt/higher_order.hpp"
-#include "hodt/k_order.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/points.hpp"
-#include "hodt/region_engine.hpp"
+#include "engines/dual_bound.hpp"
+#include "generators.hpp"
+#include "higher_order/k_order.hpp"
+#include "higher_order/regions/region_engine.hpp"
+#include "k_order_reference.hpp"
 #include "random_state_graph.hpp"
 
 using namespace hodt;

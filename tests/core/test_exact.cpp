@@ -3,15 +3,15 @@
 
 #include <cmath>
 
-#include "generators.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/delaunay.hpp"
-#include "hodt/exact.hpp"
-#include "hodt/extrema.hpp"
-#include "hodt/factor_models.hpp"
-#include "hodt/pair_measures.hpp"
 #include "hodt/points.hpp"
 #include "hodt/solve.hpp"
+#include "exact/exact.hpp"
+#include "exact/extrema.hpp"
+#include "generators.hpp"
+#include "objectives/factor_models.hpp"
+#include "objectives/pair_measures.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

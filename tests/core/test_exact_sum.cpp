@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include "hodt/exact_sum.hpp"
+#include "geometry/exact_sum.hpp"
 
 using namespace hodt;
 using Rational = boost::multiprecision::cpp_rational;

@@ -8,13 +8,13 @@
 #include <algorithm>
 #include <set>
 
-#include "generators.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/explain.hpp"
-#include "hodt/k_order.hpp"
-#include "hodt/pair_measures.hpp"
 #include "hodt/points.hpp"
+#include "generators.hpp"
+#include "higher_order/k_order.hpp"
+#include "objectives/pair_measures.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -6,15 +6,15 @@
 
 #include <cmath>
 
-#include "generators.hpp"
-#include "k_order_reference.hpp"
 #include "hodt/delaunay.hpp"
-#include "hodt/fan_windows.hpp"
 #include "hodt/higher_order.hpp"
-#include "hodt/k_order.hpp"
-#include "hodt/objective_terms.hpp"
 #include "hodt/points.hpp"
-#include "hodt/region_engine.hpp"
+#include "generators.hpp"
+#include "higher_order/k_order.hpp"
+#include "higher_order/regions/region_engine.hpp"
+#include "higher_order/search/fan_windows.hpp"
+#include "k_order_reference.hpp"
+#include "objectives/objective_terms.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -6,14 +6,14 @@
 #include <cmath>
 #include <map>
 
-#include "generators.hpp"
 #include "hodt/delaunay.hpp"
-#include "hodt/fill_dp.hpp"
-#include "hodt/fill_enumerator.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/points.hpp"
-#include "hodt/region_terms.hpp"
-#include "hodt/regions.hpp"
+#include "generators.hpp"
+#include "higher_order/fills/fill_dp.hpp"
+#include "higher_order/fills/fill_enumerator.hpp"
+#include "higher_order/regions/region_terms.hpp"
+#include "higher_order/regions/regions.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -4,12 +4,12 @@
 
 #include <set>
 
-#include "generators.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/first_order.hpp"
 #include "hodt/higher_order.hpp"
 #include "hodt/points.hpp"
 #include "hodt/predicates.hpp"
+#include "generators.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

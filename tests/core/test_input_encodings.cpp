@@ -6,10 +6,10 @@
 #include <cstring>
 #include <string>
 
-#include "generators.hpp"
 #include "hodt/error.hpp"
-#include "hodt/parse_number.hpp"
 #include "hodt/read_points.hpp"
+#include "generators.hpp"
+#include "io/parse_number.hpp"
 
 using namespace hodt;
 

@@ -6,14 +6,14 @@
 #include <map>
 #include <set>
 
-#include "generators.hpp"
-#include "hodt/circle_count.hpp"
 #include "hodt/delaunay.hpp"
-#include "hodt/flip_search.hpp"
 #include "hodt/higher_order.hpp"
-#include "hodt/k_order.hpp"
 #include "hodt/points.hpp"
 #include "hodt/predicates.hpp"
+#include "generators.hpp"
+#include "higher_order/k_order.hpp"
+#include "higher_order/search/flip_search.hpp"
+#include "mesh/circle_count.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -6,14 +6,14 @@
 #include <algorithm>
 #include <set>
 
-#include "generators.hpp"
-#include "hodt/baker.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/higher_order.hpp"
-#include "hodt/k_order.hpp"
-#include "hodt/k_order_baker.hpp"
 #include "hodt/points.hpp"
-#include "hodt/region_engine.hpp"
+#include "approx/baker.hpp"
+#include "generators.hpp"
+#include "higher_order/k_order.hpp"
+#include "higher_order/regions/region_engine.hpp"
+#include "higher_order/search/k_order_baker.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -119,8 +119,8 @@ TEST_CASE("objective table and ids") {
   CHECK_FALSE(parse_objective("max-fun"));
 }
 
-#include "hodt/portable_math.hpp"
 #include "generators.hpp"
+#include "geometry/portable_math.hpp"
 
 TEST_CASE("portable_atan and portable_angle agree with libm within 1 ulp") {
   hodt::test::Rng r(3);

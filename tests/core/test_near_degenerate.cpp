@@ -10,15 +10,15 @@
 #include <set>
 #include <string>
 
-#include "exact_reference.hpp"
-#include "generators.hpp"
 #include "hodt/cli.hpp"
 #include "hodt/error.hpp"
 #include "hodt/format.hpp"
-#include "hodt/k_order.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/solve.hpp"
 #include "hodt/terrain.hpp"
+#include "exact_reference.hpp"
+#include "generators.hpp"
+#include "higher_order/k_order.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

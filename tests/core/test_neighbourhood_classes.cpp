@@ -4,10 +4,10 @@
 // heights, flat ground, cocircular rasters at an offset, slivers).
 #include <doctest/doctest.h>
 
-#include "generators.hpp"
 #include "hodt/measures.hpp"
-#include "hodt/neighbourhood_classes.hpp"
 #include "hodt/terrain.hpp"
+#include "generators.hpp"
+#include "objectives/neighbourhood_classes.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

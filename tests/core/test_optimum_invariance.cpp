@@ -12,12 +12,12 @@
 #include <string>
 #include <utility>
 
-#include "generators.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/first_order.hpp"
 #include "hodt/objectives.hpp"
 #include "hodt/points.hpp"
 #include "hodt/solve.hpp"
+#include "generators.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -4,12 +4,12 @@
 // the pruned models, and every solve, are those of the accurate measures.
 #include <doctest/doctest.h>
 
-#include "generators.hpp"
-#include "hodt/bottleneck.hpp"
 #include "hodt/measures.hpp"
-#include "hodt/pair_measures.hpp"
 #include "hodt/skeleton.hpp"
 #include "hodt/terrain.hpp"
+#include "exact/bottleneck.hpp"
+#include "generators.hpp"
+#include "objectives/pair_measures.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -2,8 +2,8 @@
 // meets all constraints, and then its answer meets them.
 #include <doctest/doctest.h>
 
+#include "engines/parity_sat.hpp"
 #include "generators.hpp"
-#include "hodt/parity_sat.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "generators.hpp"
-#include "hodt/parse_number.hpp"
+#include "io/parse_number.hpp"
 
 using namespace hodt;
 

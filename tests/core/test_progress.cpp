@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "generators.hpp"
-#include "hodt/cli_progress.hpp"
 #include "hodt/progress.hpp"
 #include "hodt/solve.hpp"
 #include "hodt/terrain.hpp"
+#include "cli/cli_progress.hpp"
+#include "generators.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -7,11 +7,11 @@
 #include <memory>
 #include <vector>
 
-#include "generators.hpp"
 #include "hodt/objectives.hpp"
 #include "hodt/progress.hpp"
 #include "hodt/solve.hpp"
 #include "hodt/terrain.hpp"
+#include "generators.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -7,16 +7,16 @@
 
 #include <map>
 
-#include "generators.hpp"
-#include "k_order_reference.hpp"
 #include "hodt/delaunay.hpp"
-#include "hodt/fill_graph.hpp"
-#include "hodt/glue_regions.hpp"
 #include "hodt/higher_order.hpp"
-#include "hodt/k_order.hpp"
 #include "hodt/points.hpp"
-#include "hodt/region_dual.hpp"
-#include "hodt/region_engine.hpp"
+#include "generators.hpp"
+#include "higher_order/bounds/region_dual.hpp"
+#include "higher_order/fills/fill_graph.hpp"
+#include "higher_order/k_order.hpp"
+#include "higher_order/regions/glue_regions.hpp"
+#include "higher_order/regions/region_engine.hpp"
+#include "k_order_reference.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -4,19 +4,19 @@
 
 #include <cmath>
 
-#include "generators.hpp"
-#include "k_order_reference.hpp"
 #include "hodt/brute_force.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/higher_order.hpp"
-#include "hodt/k_order.hpp"
-#include "hodt/objective_terms.hpp"
 #include "hodt/points.hpp"
-#include "hodt/region_dual.hpp"
-#include "hodt/region_engine.hpp"
-#include "hodt/region_model.hpp"
-#include "hodt/regions.hpp"
 #include "hodt/solve.hpp"
+#include "generators.hpp"
+#include "higher_order/bounds/region_dual.hpp"
+#include "higher_order/k_order.hpp"
+#include "higher_order/regions/region_engine.hpp"
+#include "higher_order/regions/region_model.hpp"
+#include "higher_order/regions/regions.hpp"
+#include "k_order_reference.hpp"
+#include "objectives/objective_terms.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

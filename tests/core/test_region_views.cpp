@@ -7,17 +7,17 @@
 #include <cmath>
 #include <map>
 
-#include "generators.hpp"
-#include "k_order_reference.hpp"
 #include "hodt/delaunay.hpp"
-#include "hodt/k_order.hpp"
-#include "hodt/points.hpp"
-#include "hodt/region_model.hpp"
-#include "hodt/region_views.hpp"
-#include "hodt/view_bound.hpp"
 #include "hodt/higher_order.hpp"
 #include "hodt/mesh.hpp"
-#include "hodt/regions.hpp"
+#include "hodt/points.hpp"
+#include "generators.hpp"
+#include "higher_order/bounds/region_views.hpp"
+#include "higher_order/bounds/view_bound.hpp"
+#include "higher_order/k_order.hpp"
+#include "higher_order/regions/region_model.hpp"
+#include "higher_order/regions/regions.hpp"
+#include "k_order_reference.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -6,13 +6,13 @@
 #include <limits>
 #include <string>
 
-#include "generators.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/error.hpp"
-#include "hodt/k_order.hpp"
 #include "hodt/points.hpp"
 #include "hodt/solve.hpp"
 #include "hodt/solve_options.hpp"
+#include "generators.hpp"
+#include "higher_order/k_order.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -6,16 +6,16 @@
 #include <fstream>
 #include <string>
 
-#include "generators.hpp"
-#include "k_order_reference.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/higher_order.hpp"
-#include "hodt/k_order.hpp"
 #include "hodt/points.hpp"
-#include "hodt/region_engine.hpp"
-#include "hodt/objective_terms.hpp"
-#include "hodt/star_bound.hpp"
-#include "hodt/star_decode.hpp"
+#include "generators.hpp"
+#include "higher_order/bounds/star_bound.hpp"
+#include "higher_order/bounds/star_decode.hpp"
+#include "higher_order/k_order.hpp"
+#include "higher_order/regions/region_engine.hpp"
+#include "k_order_reference.hpp"
+#include "objectives/objective_terms.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -7,8 +7,8 @@
 #include <algorithm>
 
 #include "generators.hpp"
-#include "hodt/objective_terms.hpp"
-#include "hodt/star_cone.hpp"
+#include "objectives/objective_terms.hpp"
+#include "objectives/star_cone.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

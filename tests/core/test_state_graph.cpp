@@ -7,7 +7,7 @@
 #include <functional>
 #include <random>
 
-#include "hodt/state_graph.hpp"
+#include "engines/state_graph.hpp"
 #include "random_state_graph.hpp"
 
 using namespace hodt;

@@ -5,13 +5,13 @@
 #include <cmath>
 #include <set>
 
-#include "generators.hpp"
 #include "hodt/delaunay.hpp"
 #include "hodt/error.hpp"
 #include "hodt/first_order.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/points.hpp"
 #include "hodt/predicates.hpp"
+#include "generators.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

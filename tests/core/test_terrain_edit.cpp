@@ -7,11 +7,11 @@
 #include <array>
 #include <set>
 
-#include "generators.hpp"
-#include "input_triangles.hpp"
 #include "hodt/error.hpp"
 #include "hodt/solve.hpp"
 #include "hodt/terrain.hpp"
+#include "generators.hpp"
+#include "input_triangles.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

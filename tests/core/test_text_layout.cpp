@@ -7,8 +7,8 @@
 #include <string>
 
 #include "hodt/error.hpp"
-#include "hodt/quote_input.hpp"
 #include "hodt/read_points.hpp"
+#include "io/quote_input.hpp"
 
 using namespace hodt;
 

@@ -5,12 +5,12 @@
 
 #include <map>
 
-#include "generators.hpp"
-#include "k_order_reference.hpp"
 #include "hodt/higher_order.hpp"
-#include "hodt/region_model.hpp"
-#include "hodt/regions.hpp"
-#include "hodt/vertex_term_memo.hpp"
+#include "generators.hpp"
+#include "higher_order/regions/region_model.hpp"
+#include "higher_order/regions/regions.hpp"
+#include "higher_order/regions/vertex_term_memo.hpp"
+#include "k_order_reference.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

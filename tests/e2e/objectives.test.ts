@@ -17,7 +17,7 @@ afterAll(async () => {
   await demo?.close();
 });
 
-/** `hodt solve FILE --objective ID --method exact`: the CLI (core/src/cli.cpp) run
+/** `hodt solve FILE --objective ID --method exact`: the CLI (core/src/cli/cli.cpp) run
  * in-process exactly as the npm bin runs it, reading the file from disk (not
  * dist/cli.js itself, which a concurrent build may be rewriting). */
 function cli(file: string, objective: string) {

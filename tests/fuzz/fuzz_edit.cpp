@@ -3,9 +3,9 @@
 // points (same triangles), and a refused edit changes nothing.
 #include <cstdio>
 
-#include "fuzz_input.hpp"
 #include "hodt/error.hpp"
 #include "hodt/terrain.hpp"
+#include "fuzz_input.hpp"
 #include "input_triangles.hpp"
 
 using namespace hodt;

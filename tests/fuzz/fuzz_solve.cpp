@@ -8,13 +8,13 @@
 #include <cmath>
 #include <cstdio>
 
-#include "fuzz_input.hpp"
 #include "hodt/error.hpp"
 #include "hodt/higher_order.hpp"
-#include "hodt/k_order.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/solve.hpp"
 #include "hodt/terrain.hpp"
+#include "fuzz_input.hpp"
+#include "higher_order/k_order.hpp"
 
 using namespace hodt;
 

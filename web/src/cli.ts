@@ -1,5 +1,5 @@
 #!/usr/bin/env node
-// `hodt` on the command line: the core's CLI (core/src/cli.cpp) run in wasm, with
+// `hodt` on the command line: the core's CLI (core/src/cli/cli.cpp) run in wasm, with
 // Node's file system to read FILE or standard input (GeoTIFF and LAS/LAZ through
 // hodt/loaders) and to write --output files (the mesh formats with hodt/export's
 // writers), and stderr for progress. `hodt demo` serves the teaching demo.

@@ -4,7 +4,7 @@
 #include <functional>
 #include <vector>
 
-#include "hodt/factor_graph.hpp"
+#include "hodt/progress.hpp"
 #include "hodt/solution.hpp"
 
 namespace hodt {

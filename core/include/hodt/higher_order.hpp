@@ -16,8 +16,8 @@
 #include <utility>
 #include <vector>
 
-#include "hodt/factor_graph.hpp"
 #include "hodt/mesh.hpp"
+#include "hodt/progress.hpp"
 
 namespace hodt {
 

@@ -3,12 +3,20 @@
 #include <optional>
 #include <string>
 
-#include "hodt/bottleneck.hpp"
 #include "hodt/first_order.hpp"
 #include "hodt/objectives.hpp"
 #include "hodt/skeleton.hpp"
 
 namespace hodt {
+
+// Each threshold the bottleneck search tested, in the order tested (for the CLI's --trace and the demo).
+struct ThresholdStep {
+  double threshold;
+  bool satisfiable;
+  uint32_t clauses;     // 2-SAT clauses built (forced choices count one each)
+  uint32_t forced;      // quads whose choice the eliminations fixed
+  bool immediate_no;    // a fixed pair or a quad with both diagonals over the threshold
+};
 
 // The two triangles that attain a min-max value.
 struct CriticalPair {

@@ -2,7 +2,7 @@
 #pragma once
 #include <string>
 
-#include "hodt/factor_graph.hpp"
+#include "hodt/progress.hpp"
 #include "hodt/solution.hpp"
 
 namespace hodt {

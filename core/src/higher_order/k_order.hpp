@@ -1,0 +1,61 @@
+// Optimising over k-th order Delaunay triangulations (k >= 1; paper Section 4.3).
+//
+// The fixed edges cut the hull into regions (regions.hpp); each region's k-OD
+// triangulations are enumerated, and the objective's terms become a state graph
+// over the regions (region_model.hpp):
+//  - exact: the state graph's DP over a tree decomposition (every region
+//    enumerated, every table within the memory cap): `optimal` is then proven;
+//  - otherwise: coordinate descent over the regions' states from the first order
+//    optimum, with the bound of a relaxation (each factor at its best), so the
+//    gap is known; `optimal` when the bound meets the value.
+//  - brute force: every k-OD triangulation of the whole instance (small inputs):
+//    the reference the engine is tested against.
+// Every returned triangulation is verified k-OD.
+#pragma once
+#include <functional>
+
+#include "hodt/first_order.hpp"
+#include "hodt/objectives.hpp"
+#include "hodt/skeleton.hpp"
+#include "hodt/solution.hpp"
+#include "hodt/solve.hpp"
+#include "higher_order/regions/regions.hpp"
+
+namespace hodt {
+
+struct KOrderResult {
+  Mesh triangulation;
+  double value = 0;
+  double delaunay_value = 0;
+  bool optimal = false;
+  std::optional<double> bound;
+  uint64_t enumerated = 0;  // triangulations enumerated (brute force)
+  std::string method;       // "brute-force", "exact" or "heuristic"
+  std::string details;      // what ran, in a few words
+};
+
+// Brute force at order k enumerates the whole instance: at most this many points.
+constexpr uint32_t kKOrderBruteForceMaxPoints = 30;
+
+// Calls visit for every k-OD triangulation of the points of `delaunay` (as a list
+// of triangles); returns false if it stopped because `max_nodes` was reached.
+// progress (if given) is called every few thousand nodes; returning false cancels.
+bool enumerate_k_order(const Mesh& delaunay, uint32_t k, uint64_t max_nodes,
+                       const std::function<void(const std::vector<Tri>&)>& visit, const Progress& progress = {});
+
+// max_nodes: the enumeration budget of one region (brute force: of the instance).
+KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options,
+                           uint64_t max_nodes = 300'000);
+// The same with every budget of the regions' listing given (brute force:
+// max_nodes_per_region for the instance). Tests shrink them so that small
+// instances take the paths of large terrains, where regions stay incomplete.
+KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options,
+                           const RegionLimits& budgets);
+
+// The same as a Solution (for the CLI and the bindings).
+Solution k_order_solution(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options);
+
+// A mesh (canonical order) from a list of counterclockwise triangles.
+Mesh mesh_of(const Coords& coords, const std::vector<Tri>& triangles);
+
+}  // namespace hodt
