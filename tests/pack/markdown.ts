@@ -33,3 +33,22 @@ export function headingAnchors(markdown: string): Set<string> {
   }
   return anchors;
 }
+
+const MONTH = '(?:Jan(?:uary)?|Feb(?:ruary)?|Mar(?:ch)?|Apr(?:il)?|May|June?|July?|Aug(?:ust)?|Sep(?:t(?:ember)?)?|Oct(?:ober)?|Nov(?:ember)?|Dec(?:ember)?)';
+// 2026-11-23, 2026/11/23; November 23, Nov. 23rd; 23 November; November 2026.
+const DATE = new RegExp(
+  [
+    String.raw`\b\d{4}[-/](?:0[1-9]|1[0-2])[-/](?:0[1-9]|[12]\d|3[01])\b`,
+    String.raw`\b${MONTH}\.?\s+\d{1,2}(?:st|nd|rd|th)?\b`,
+    String.raw`\b\d{1,2}(?:st|nd|rd|th)?\s+${MONTH}\b`,
+    String.raw`\b${MONTH}\.?\s+\d{4}\b`,
+  ].join('|'),
+  'g',
+);
+
+/** The dates written in a text (ISO or with a month's name), each with its line
+ * number: reference docs describe the code as it is, and the dated record is the
+ * changelog's. */
+export function datesIn(text: string): { line: number; date: string }[] {
+  return text.split('\n').flatMap((l, i) => [...l.matchAll(DATE)].map((m) => ({ line: i + 1, date: m[0] })));
+}
