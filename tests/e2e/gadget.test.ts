@@ -6,8 +6,8 @@
 import { loadHodt, type Hodt } from 'hodt';
 import { beforeAll, describe, expect, test } from 'vitest';
 import { countSatisfied, FormulaError, maxSatisfiable, parseFormula } from '../../web/demo/src/teach/formula.ts';
-import { buildGadget } from '../../web/demo/src/teach/gadget.ts';
-import { certify, mapCells, readBack } from '../../web/demo/src/teach/gadgetCheck.ts';
+import { buildGadget } from '../../web/demo/src/teach/gadget/build.ts';
+import { certify, mapCells, readBack } from '../../web/demo/src/teach/gadget/check.ts';
 
 let hodt: Hodt;
 beforeAll(async () => {

@@ -1,4 +1,4 @@
-// The Section 3.2 gadget of the teaching demo (web/demo/src/teach/degreeGadget.ts):
+// The Section 3.2 gadget of the teaching demo (web/demo/src/teach/degree/build.ts):
 // on every formula of up to three variables and three clauses that the builder
 // lays out, the library's exact optimum of minmax-degree is at most the bound d
 // exactly when the formula is satisfiable, and every assignment's triangulation
@@ -7,8 +7,8 @@ import { loadHodt, type Hodt } from 'hodt';
 import { beforeAll, describe, expect, test } from 'vitest';
 import { smallFormulas } from './smallFormulas.ts';
 import { FormulaError, parseCnf, satisfyingAssignment } from '../../web/demo/src/teach/formula.ts';
-import { buildDegreeGadget, DegreeLayoutError } from '../../web/demo/src/teach/degreeGadget.ts';
-import { certifyDegree, mapDegreeCells, readDegreeAssignment, satisfies } from '../../web/demo/src/teach/degreeCheck.ts';
+import { buildDegreeGadget, DegreeLayoutError } from '../../web/demo/src/teach/degree/build.ts';
+import { certifyDegree, mapDegreeCells, readDegreeAssignment, satisfies } from '../../web/demo/src/teach/degree/check.ts';
 
 let hodt: Hodt;
 beforeAll(async () => {

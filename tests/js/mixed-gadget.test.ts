@@ -1,4 +1,4 @@
-// The Section 3.1 gadget of the teaching demo (web/demo/src/teach/mixedGadget.ts):
+// The Section 3.1 gadget of the teaching demo (web/demo/src/teach/mixed/build.ts):
 // on every formula of up to three variables and three clauses of one to three
 // literals that the builder lays out, and on a fixed random sample over four to
 // six variables, the library's exact optimum of min-mixed-vertices equals the
@@ -10,8 +10,8 @@ import { loadHodt, type Hodt } from 'hodt';
 import { beforeAll, describe, expect, test } from 'vitest';
 import { randomFormulas, smallFormulas } from './smallFormulas.ts';
 import { parseCnf, satisfyingAssignment } from '../../web/demo/src/teach/formula.ts';
-import { buildMixedGadget, MixedLayoutError } from '../../web/demo/src/teach/mixedGadget.ts';
-import { certifyMixed, mapFanSectors, readMixedAssignment, unsatisfiedClauses } from '../../web/demo/src/teach/mixedCheck.ts';
+import { buildMixedGadget, MixedLayoutError } from '../../web/demo/src/teach/mixed/build.ts';
+import { certifyMixed, mapFanSectors, readMixedAssignment, unsatisfiedClauses } from '../../web/demo/src/teach/mixed/check.ts';
 
 let hodt: Hodt;
 beforeAll(async () => {

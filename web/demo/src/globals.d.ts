@@ -44,7 +44,7 @@ export interface HodtTestHooks {
 export interface HodtTeachHooks {
   readonly visible: boolean;
   readonly tab: string;
-  /** Plain data of one view: 'sat', 'baker', 'gadget' or 'brute'. */
+  /** Plain data of one view, by its id (teach/views.ts). */
   view(id: string): Record<string, unknown> | null;
 }
 

@@ -1,46 +1,35 @@
-/** Undo and redo over immutable snapshots (here: point arrays). */
+/** Undo and redo over immutable snapshots (here: point arrays), as a value: every
+ * step returns a new history, so the page's store can hold it. */
 export interface History<T> {
-  /** Records the state reached by an edit; clears the redo stack. */
-  push(state: T, label: string): void;
-  /** The state before the last edit, or null. */
-  undo(): T | null;
-  redo(): T | null;
-  /** Forgets everything and starts from state. */
-  reset(state: T): void;
-  readonly undoLabel: string | null;
-  readonly redoLabel: string | null;
+  /** Every state up to the current one (the last entry), with the edit that reached it. */
+  readonly past: readonly { state: T; label: string }[];
+  /** States undone, the next redo last. */
+  readonly future: readonly { state: T; label: string }[];
 }
 
-export function createHistory<T>(initial: T, limit = 200): History<T> {
-  // past holds every state up to the current one (the last entry).
-  let past: { state: T; label: string }[] = [{ state: initial, label: '' }];
-  let future: { state: T; label: string }[] = [];
-  return {
-    push(state, label) {
-      past.push({ state, label });
-      if (past.length > limit + 1) past = past.slice(past.length - limit - 1);
-      future = [];
-    },
-    undo() {
-      if (past.length < 2) return null;
-      future.push(past.pop()!);
-      return past[past.length - 1]!.state;
-    },
-    redo() {
-      const next = future.pop();
-      if (!next) return null;
-      past.push(next);
-      return next.state;
-    },
-    reset(state) {
-      past = [{ state, label: '' }];
-      future = [];
-    },
-    get undoLabel() {
-      return past.length >= 2 ? past[past.length - 1]!.label : null;
-    },
-    get redoLabel() {
-      return future.length ? future[future.length - 1]!.label : null;
-    },
-  };
+export function startHistory<T>(initial: T): History<T> {
+  return { past: [{ state: initial, label: '' }], future: [] };
 }
+
+/** Records the state reached by an edit; clears the redo stack. */
+export function pushHistory<T>(h: History<T>, state: T, label: string, limit = 200): History<T> {
+  const past = [...h.past, { state, label }];
+  return { past: past.length > limit + 1 ? past.slice(past.length - limit - 1) : past, future: [] };
+}
+
+/** The history one edit back and the state it returns to, or null. */
+export function undoHistory<T>(h: History<T>): { history: History<T>; state: T } | null {
+  if (h.past.length < 2) return null;
+  const past = h.past.slice(0, -1);
+  return { history: { past, future: [...h.future, h.past.at(-1)!] }, state: past.at(-1)!.state };
+}
+
+export function redoHistory<T>(h: History<T>): { history: History<T>; state: T } | null {
+  const next = h.future.at(-1);
+  if (!next) return null;
+  return { history: { past: [...h.past, next], future: h.future.slice(0, -1) }, state: next.state };
+}
+
+/** The edit an undo would take back, or null. */
+export const undoLabel = <T>(h: History<T>): string | null => (h.past.length >= 2 ? h.past.at(-1)!.label : null);
+export const redoLabel = <T>(h: History<T>): string | null => h.future.at(-1)?.label ?? null;

@@ -3,7 +3,7 @@
 // neighbours of a chain. A formula whose clause graph is not a set of paths (a
 // variable in three clauses, a cycle, a three-literal clause) is refused with the
 // reason, since the gadget lays its chains out along one line. (The Section 3.1
-// gadget places its fans on a hexagonal grid instead: mixedGadget.ts.)
+// gadget places its fans on a hexagonal grid instead: mixed/build.ts.)
 import type { Cnf, Literal } from './formula.ts';
 
 export class ChainLayoutError extends Error {

@@ -1,44 +1,11 @@
-import type { Hodt, ObjectiveId, Terrain } from 'hodt';
-import type { SolverClient } from '../solver/solverClient.ts';
-import type { SolveSettings } from '../ui/objectivePanel.ts';
-import type { TerrainSource } from '../ui/terrainPanel.ts';
+// What the teaching views' panes share: the paper's link, the pane, legends,
+// buttons, the objective picker, the step controls, and a small terrain.
+import type { Hodt, ObjectiveId } from 'hodt';
+import { seededRandom } from '../terrains/rng.ts';
 import { h } from '../ui/dom.ts';
 import { OBJECTIVE_HELP } from '../ui/objectiveHelp.ts';
 import type { StepPlayer } from './stepPlayer.ts';
-import { seededRandom } from '../terrains/rng.ts';
-
-/** What the teaching views may use of the page. */
-export interface TeachContext {
-  hodt: Hodt;
-  /** The page's committed terrain (owned by the page: never dispose it). */
-  terrain(): Terrain;
-  points(): Float64Array;
-  settings(): SolveSettings;
-  /** Replaces the page's points (undoable, like an import) and optionally picks
-   * an objective; `source`: the built-in generator that made them (for the
-   * terrain controls and the link). */
-  load(points: Float64Array, label: string, objective?: ObjectiveId, source?: TerrainSource): void;
-  /** Switches the page to its 3D and plan views. */
-  showViews(): void;
-  /** Sets the sidebar's objective or epsilon (a view's selector changed): the
-   * page re-solves and every view hears changed(). */
-  choose(change: { objective?: ObjectiveId; epsilon?: number }): void;
-  /** The teaching views' own solver worker (the page's keeps running). */
-  solver: SolverClient;
-}
-
-export interface TeachView {
-  readonly id: string;
-  readonly label: string;
-  readonly root: HTMLElement;
-  /** Shown: bring the view up to date. */
-  activate(): void;
-  deactivate(): void;
-  /** The page's terrain or settings changed. */
-  changed(): void;
-  /** Plain data for tests/e2e (window.__hodtTeach). */
-  hooks(): Record<string, unknown>;
-}
+import type { TeachContext } from './view.ts';
 
 export const PAPER_TITLE = 'M. van Kreveld, M. Löffler, R. I. Silveira: Optimization for first order Delaunay triangulations (Computational Geometry, 2010)';
 export const PAPER_URL = 'https://dblp.org/search?q=Optimization+for+first+order+Delaunay+triangulations';

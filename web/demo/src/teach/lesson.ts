@@ -3,10 +3,10 @@
 // (lessonSteps.ts), or builds the view's own instance.
 import { TERRAINS } from '../terrains/catalog.ts';
 import { h } from '../ui/dom.ts';
-import type { TeachContext } from './common.ts';
 import { PAPER_TITLE, PAPER_URL } from './common.ts';
 import { LESSON_STEPS, type LessonStep } from './lessonSteps.ts';
-import type { TeachTab } from './teachPanel.ts';
+import type { TeachContext } from './view.ts';
+import type { TeachTab } from './views.ts';
 
 /** What a step's button loads, for its tooltip. */
 function loads(s: LessonStep): string {

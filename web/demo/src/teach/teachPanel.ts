@@ -1,17 +1,10 @@
-// The "Teach" tab: seven views of the paper's ideas, one visible at a time.
+// The "Teach" tab: the views of views.ts, one visible at a time, and the lesson.
 import { byId, h } from '../ui/dom.ts';
-import { createBakerView } from './bakerView.ts';
-import { createBruteView } from './bruteView.ts';
-import type { TeachContext, TeachView } from './common.ts';
-import { createDegreeView } from './degreeView.ts';
-import { createGadgetView } from './gadgetView.ts';
 import { createLesson } from './lesson.ts';
-import { createMixedView } from './mixedView.ts';
-import { createOrderView } from './orderView.ts';
-import { createSatView } from './satView.ts';
+import type { TeachContext } from './view.ts';
+import { TEACH_VIEWS, type TeachTab } from './views.ts';
 
-export const TEACH_TABS = ['sat', 'baker', 'gadget', 'degree', 'mixed', 'brute', 'order'] as const;
-export type TeachTab = (typeof TEACH_TABS)[number];
+export type { TeachTab };
 
 export interface TeachPanel {
   /** The Teach tab is shown (or hidden). */
@@ -23,13 +16,13 @@ export interface TeachPanel {
 
 export function createTeachPanel(ctx: TeachContext): TeachPanel {
   const root = byId('teach');
-  const views: TeachView[] = [createSatView(ctx), createBakerView(ctx), createGadgetView(ctx), createDegreeView(ctx), createMixedView(ctx), createBruteView(ctx), createOrderView(ctx)];
-  const tabs = views.map((v) => {
-    const b = h('button', { type: 'button', role: 'tab', id: `teach-tab-${v.id}`, 'data-teach': v.id, 'aria-selected': 'false', 'aria-controls': `teach-${v.id}` }, v.label);
-    b.addEventListener('click', () => select(v.id as TeachTab));
+  const views = TEACH_VIEWS.map((spec) => ({ id: spec.id as TeachTab, view: spec.create(ctx) }));
+  const tabs = TEACH_VIEWS.map((spec) => {
+    const b = h('button', { type: 'button', role: 'tab', id: `teach-tab-${spec.id}`, 'data-teach': spec.id, 'aria-selected': 'false', 'aria-controls': `teach-${spec.id}` }, spec.label);
+    b.addEventListener('click', () => select(spec.id));
     return b;
   });
-  root.append(h('nav', { class: 'teach-tabs', role: 'tablist', 'aria-label': 'Teaching views' }, ...tabs), createLesson(ctx, (tab) => select(tab)), ...views.map((v) => v.root));
+  root.append(h('nav', { class: 'teach-tabs', role: 'tablist', 'aria-label': 'Teaching views' }, ...tabs), createLesson(ctx, (tab) => select(tab)), ...views.map((v) => v.view.root));
   let visible = false;
   let current: TeachTab = 'sat';
 
@@ -38,12 +31,14 @@ export function createTeachPanel(ctx: TeachContext): TeachPanel {
     current = tab;
     views.forEach((v, i) => {
       const on = v.id === tab;
-      v.root.hidden = !on;
+      v.view.root.hidden = !on;
       tabs[i]!.setAttribute('aria-selected', String(on));
-      if (!on && v.id === before) v.deactivate();
+      if (!on && v.id === before) v.view.deactivate();
     });
-    if (visible) views.find((v) => v.id === tab)!.activate();
+    if (visible) shown().activate();
   }
+
+  const shown = () => views.find((v) => v.id === current)!.view;
 
   window.__hodtTeach = {
     get visible() {
@@ -52,7 +47,7 @@ export function createTeachPanel(ctx: TeachContext): TeachPanel {
     get tab() {
       return current;
     },
-    view: (id: string) => views.find((v) => v.id === id)?.hooks() ?? null,
+    view: (id: string) => views.find((v) => v.id === id)?.view.hooks() ?? null,
   };
   select('sat');
 
@@ -60,12 +55,11 @@ export function createTeachPanel(ctx: TeachContext): TeachPanel {
     setVisible(on) {
       if (on === visible) return;
       visible = on;
-      const view = views.find((v) => v.id === current)!;
-      if (on) view.activate();
-      else view.deactivate();
+      if (on) shown().activate();
+      else shown().deactivate();
     },
     changed() {
-      for (const v of views) v.changed();
+      for (const v of views) v.view.changed();
     },
     select,
   };

@@ -19,8 +19,8 @@
 // The paper proves the reduction for planar formulas; here the formula must have
 // a drawing with the variables on a line and the clauses as nested arcs above and
 // below it (found by search). Whether the solver's optimum really decodes to an
-// optimal assignment is checked on every instance by the view (gadgetCheck.ts).
-import type { Formula } from './formula.ts';
+// optimal assignment is checked on every instance by the view (check.ts).
+import type { Formula } from '../formula.ts';
 
 export interface GadgetCell {
   /** Lower-left lattice corner and size (1 x 1, or 2 x 1 for a skip). */

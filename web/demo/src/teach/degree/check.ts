@@ -1,7 +1,7 @@
 // Reading a triangulation of the Section 3.2 gadget back as an assignment, and the
 // per-instance check that the construction behaves as the proof says.
-import { literalTrue, type Cnf } from './formula.ts';
-import type { DegreeGadget, VertexRole } from './degreeGadget.ts';
+import { literalTrue, type Cnf } from '../formula.ts';
+import type { DegreeGadget, VertexRole } from './build.ts';
 
 const FIXED_ROLES = new Set<VertexRole>(['wire', 'clause', 'unit']);
 

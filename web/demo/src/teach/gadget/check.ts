@@ -1,7 +1,7 @@
 // Reading a triangulation of the hardness gadget back as an assignment, and the
 // per-instance check that the construction behaves as Section 3.3 says.
-import { countSatisfied, type Formula } from './formula.ts';
-import type { Gadget } from './gadget.ts';
+import { countSatisfied, type Formula } from '../formula.ts';
+import type { Gadget } from './build.ts';
 
 /** Which library quad each gadget cell is, and whether its Delaunay diagonal is
  * the convex (south-west to north-east) one. */
@@ -96,20 +96,24 @@ export interface GadgetCertificate {
   values: number[];
 }
 
+/** The assignment of a bit mask: variable v is true when bit v is set. */
+export const assignmentOf = (mask: number, n: number) => Array.from({ length: n }, (_, v) => ((mask >> v) & 1) === 1);
+
+/** The convex edges of the pattern of assignment `mask` (other quads as in base). */
+export const scoreAssignment = (evaluate: (choice: Uint8Array) => number, g: Gadget, map: CellQuads, base: Uint8Array, mask: number) =>
+  evaluate(choiceFor(map, canonicalStates(g, assignmentOf(mask, g.formula.names.length)), base));
+
+/** The check on the patterns' values (one per assignment, by mask): each must be
+ * a constant plus its satisfied clauses. */
+export function certificateOf(formula: Formula, values: number[]): GadgetCertificate {
+  const n = formula.names.length;
+  const constants = values.map((v, mask) => v - countSatisfied(formula, assignmentOf(mask, n)));
+  return { constant: constants.every((c) => c === constants[0]) ? constants[0]! : null, tried: values.length, values };
+}
+
 /** Evaluates the pattern of every assignment (with the other quads as in base)
  * and checks that its convex edges are a constant plus its satisfied clauses. */
 export function certify(formula: Formula, evaluate: (choice: Uint8Array) => number, g: Gadget, map: CellQuads, base: Uint8Array): GadgetCertificate {
-  const n = formula.names.length;
-  const values: number[] = [];
-  let constant: number | null = null;
-  let ok = true;
-  for (let mask = 0; mask < 1 << n; mask++) {
-    const a = Array.from({ length: n }, (_, v) => ((mask >> v) & 1) === 1);
-    const value = evaluate(choiceFor(map, canonicalStates(g, a), base));
-    values.push(value);
-    const c = value - countSatisfied(formula, a);
-    if (constant === null) constant = c;
-    else if (constant !== c) ok = false;
-  }
-  return { constant: ok ? constant : null, tried: 1 << n, values };
+  const values = Array.from({ length: 1 << formula.names.length }, (_, mask) => scoreAssignment(evaluate, g, map, base, mask));
+  return certificateOf(formula, values);
 }

@@ -36,9 +36,9 @@
 // two clauses, clauses of one or two literals, no cycle (and no splitter or
 // three-literal clause vertex, which the paper needs for 3-SAT). Whether the
 // instance behaves as claimed is checked by the view with the exact solver
-// (degreeCheck.ts).
-import type { Cnf, Literal } from './formula.ts';
-import { chainLayout, ChainLayoutError, clauseText } from './chainLayout.ts';
+// (check.ts).
+import type { Cnf, Literal } from '../formula.ts';
+import { chainLayout, ChainLayoutError, clauseText } from '../chainLayout.ts';
 
 export const DEGREE_BOUND = 7;
 /** The domain the gadget is measured in: cell diagonals (1.28) and every edge

@@ -1,7 +1,7 @@
 // Reading a triangulation of the Section 3.1 gadget back as an assignment, and the
 // per-instance check that the construction behaves as the proof says.
-import { literalTrue, type Cnf } from './formula.ts';
-import { sectorCorners, type MixedGadget } from './mixedGadget.ts';
+import { literalTrue, type Cnf } from '../formula.ts';
+import { sectorCorners, type MixedGadget } from './build.ts';
 
 /** Which library quad each fan sector is, and whether its Delaunay diagonal is
  * the counterclockwise one. */

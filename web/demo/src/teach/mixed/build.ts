@@ -43,9 +43,9 @@
 // formula must fit on the grid: the fans of each clause meet at a corner, one
 // corner per clause (found by search, or refused with the reason). Whether an
 // instance behaves as claimed is checked by the view with the exact solver
-// (mixedCheck.ts).
-import type { Cnf, Literal } from './formula.ts';
-import { clauseText } from './chainLayout.ts';
+// (check.ts).
+import type { Cnf, Literal } from '../formula.ts';
+import { clauseText } from '../chainLayout.ts';
 
 /** Height scale (any positive value gives the same classes). */
 const L = 10;
