@@ -17,43 +17,43 @@ namespace hodt {
 
 namespace {
 
-// Theorem 1: in every quad take the reflex diagonal. A convex vertex stays convex
-// when a convex diagonal at it is replaced by the reflex one, and non-convex
-// vertices can only become convex, so this maximises convex vertices.
-Choice reflex_diagonals(const FirstOrder& fo, const DpLimits& limits) {
-  const Progress& progress = limits.progress;
-  const Mesh& m = fo.base;
+// The objectives whose optimum is a rule applied to each quad alone: `flip(q)`
+// says whether quad q takes its other diagonal. Within a domain the quads
+// touching an outside triangle interact (which terms count depends on them), so
+// for any choice of theirs the rule is still best in the others, and those
+// quads alone go to the factor graph.
+template <class Flip>
+Choice by_rule_per_quad(const FirstOrder& fo, Objective o, const DpLimits& limits, Flip flip) {
   Choice c(fo.num_quads(), 0);
   WorkCounter work;
   for (uint32_t q = 0; q < fo.num_quads(); ++q) {
-    if (work.tick(16)) report(progress, q, fo.num_quads());
-    const Quad& k = fo.quads[q];
-    c[q] = edge_shape(m.point(k.a), m.point(k.b), m.point(k.c), m.point(k.d)) == kConvexEdge;
+    if (work.tick(16)) report(limits.progress, q, fo.num_quads());
+    c[q] = flip(fo.quads[q]);
   }
-  // Within a domain which vertices count depends only on the quads touching an
-  // outside triangle, so for any choice of theirs the reflex diagonals are still
-  // best in the others; those quads alone go to the factor graph.
-  if (has_domain(m)) solve_free_quads(fo, Objective::MaxConvexVertices, quads_touching_outside(fo), c, limits);
+  if (has_domain(fo.base)) solve_free_quads(fo, o, quads_touching_outside(fo), c, limits);
   return c;
+}
+
+// Theorem 1: in every quad take the reflex diagonal. A convex vertex stays convex
+// when a convex diagonal at it is replaced by the reflex one, and non-convex
+// vertices can only become convex, so this maximises convex vertices. (Within a
+// domain, which vertices count depends only on the quads touching outside.)
+Choice reflex_diagonals(const FirstOrder& fo, const DpLimits& limits) {
+  const Mesh& m = fo.base;
+  return by_rule_per_quad(fo, Objective::MaxConvexVertices, limits, [&](const Quad& k) {
+    return edge_shape(m.point(k.a), m.point(k.b), m.point(k.c), m.point(k.d)) == kConvexEdge;
+  });
 }
 
 // Total edge length is a sum over edges, and a quad's choice changes only its
 // diagonal: the shorter diagonal in every quad is optimal (ties keep Delaunay).
+// (Within a domain, a quad whose triangles are inside either way still counts
+// its diagonal and its sides whatever the rest choose.)
 Choice shorter_diagonals(const FirstOrder& fo, const DpLimits& limits) {
-  const Progress& progress = limits.progress;
   const Mesh& m = fo.base;
-  Choice c(fo.num_quads(), 0);
-  WorkCounter work;
-  for (uint32_t q = 0; q < fo.num_quads(); ++q) {
-    if (work.tick(16)) report(progress, q, fo.num_quads());
-    const Quad& k = fo.quads[q];
-    c[q] = edge_length(m.point(k.c), m.point(k.d)) < edge_length(m.point(k.a), m.point(k.b));
-  }
-  // Within a domain a quad whose triangles are inside either way still counts
-  // its diagonal and its sides whatever the rest choose; the others' lengths
-  // depend on their neighbours: those quads alone go to the factor graph.
-  if (has_domain(m)) solve_free_quads(fo, Objective::MinTotalEdgeLength, quads_touching_outside(fo), c, limits);
-  return c;
+  return by_rule_per_quad(fo, Objective::MinTotalEdgeLength, limits, [&](const Quad& k) {
+    return edge_length(m.point(k.c), m.point(k.d)) < edge_length(m.point(k.a), m.point(k.b));
+  });
 }
 
 // The largest triangle is the max over fixed triangles and, per quad, the larger
