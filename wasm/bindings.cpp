@@ -197,6 +197,19 @@ class TerrainHandle {
       out.set("critical", val::null());
     }
     out.set("trace", to_js(s.trace));
+    val phases = val::array();  // (by hand: a value_object has no optional fields)
+    for (const PhaseStep& p : s.phases) {
+      val step = val::object();
+      step.set("phase", p.name);
+      step.set("ms", p.ms);
+      step.set("value", p.value ? val(*p.value) : val::null());
+      step.set("bound", p.bound ? val(*p.bound) : val::null());
+      step.set("improved", p.improved);
+      step.set("tightened", p.tightened);
+      step.set("proved", p.proved);
+      phases.call<void>("push", step);
+    }
+    out.set("phases", phases);
     return out;
   }
 

@@ -2,6 +2,7 @@
 // against an independent enumeration, and every result k-OD.
 #include <doctest/doctest.h>
 
+#include <fstream>
 #include <functional>
 #include <map>
 #include <set>
@@ -12,6 +13,7 @@
 #include "hodt/predicates.hpp"
 #include "generators.hpp"
 #include "higher_order/k_order.hpp"
+#include "higher_order/phases/phase_table.hpp"
 #include "higher_order/search/flip_search.hpp"
 #include "mesh/circle_count.hpp"
 
@@ -204,4 +206,22 @@ TEST_CASE("k-OD flips: valid, never worse, and a local optimum (no single k-OD f
     }
   MESSAGE(runs << " local searches, " << flipped << " with flips");
   CHECK(flipped > runs / 3);
+}
+
+// docs/higher-order.md describes the solve's phases in a table: it must list the
+// code's rows, in the code's order, and no others.
+TEST_CASE("the phase table of docs/higher-order.md is the driver's") {
+  std::ifstream in(std::string(HODT_FIXTURES) + "/../../docs/higher-order.md");
+  REQUIRE(in);
+  std::vector<std::string> documented;
+  bool inside = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("### The phases", 0) == 0) inside = true;
+    else if (inside && line.rfind("#", 0) == 0) break;
+    else if (inside && line.rfind("| ", 0) == 0 && line.rfind("| phase ", 0) != 0)
+      documented.push_back(line.substr(2, line.find(" |", 2) - 2));
+  }
+  std::vector<std::string> code;
+  for (const KOrderPhase& phase : k_order_phases()) code.push_back(phase.name);
+  CHECK(documented == code);
 }

@@ -171,3 +171,26 @@ describe('AbortSignal', () => {
     expect(a.value).toBe(b.value);
   });
 });
+
+describe('order k with trace: the phases that ran', () => {
+  it('lists the phases in the order of docs/higher-order.md, the last one deciding optimal, only when asked', async () => {
+    const { readFileSync } = await import('node:fs');
+    const doc = readFileSync(new URL('../../docs/higher-order.md', import.meta.url), 'utf8');
+    const table = doc.slice(doc.indexOf('### The phases'), doc.indexOf('## Measuring it'));
+    const names = [...table.matchAll(/^\| (?!phase \|)([^|]+?) \|/gm)].map((m) => m[1]);
+    expect(names.length).toBeGreaterThan(20);
+    for (const objective of ['max-convex-edges', 'minmax-vertex-normal-angle', 'min-total-edge-length'] as const) {
+      const s = terrain.solve(objective, { order: 3, trace: true });
+      expect(s.phases.length).toBeGreaterThan(0);
+      const at = s.phases.map((p) => names.indexOf(p.phase));
+      expect(at.every((i) => i >= 0)).toBe(true);
+      for (let j = 1; j < at.length; j++) expect(at[j]).toBeGreaterThan(at[j - 1]);
+      const last = s.phases.at(-1)!;
+      expect(last.proved).toBe(s.optimal);
+      expect(last.value).toBe(s.value);
+      if (!s.optimal) expect(last.bound).toBe(s.bound);
+      for (const p of s.phases) expect(p.ms).toBeGreaterThanOrEqual(0);
+      expect(terrain.solve(objective, { order: 3 }).phases).toEqual([]);
+    }
+  });
+});

@@ -96,6 +96,25 @@ export interface Solution {
   critical: { first: Uint32Array; second: Uint32Array; value: number } | null;
   /** Order 1, `trace: true`: the tested thresholds, in order; else empty. */
   trace: ThresholdStep[];
+  /** Order k >= 2, `trace: true`: the phases of the solve that ran, in order; else empty. */
+  phases: PhaseStep[];
+}
+
+/** One phase of an order-k solve (`trace: true`): its name, its time, and the answer after it. */
+export interface PhaseStep {
+  /** The phase, as docs/higher-order.md names it (for example `'the exact DP'`). */
+  phase: string;
+  ms: number;
+  /** The answer's value after it, or null before the first triangulation. */
+  value: number | null;
+  /** The proven bound after it, or null before the first. */
+  bound: number | null;
+  /** It found a better triangulation. */
+  improved: boolean;
+  /** It tightened the bound. */
+  tightened: boolean;
+  /** The answer is proven optimal after it. */
+  proved: boolean;
 }
 
 /** The `stats` document of the CLI. */
@@ -390,6 +409,7 @@ export class Terrain implements Disposable {
       details: s.details,
       critical: s.critical,
       trace: s.trace,
+      phases: s.phases,
     };
   }
   /** Values of every objective for all 2^m choices (m <= 24): entry

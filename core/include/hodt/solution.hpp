@@ -18,6 +18,18 @@ struct ThresholdStep {
   bool immediate_no;    // a fixed pair or a quad with both diagonals over the threshold
 };
 
+// One phase of an order-k solve, as it ran (SolveOptions::trace): its name,
+// its time, and the answer after it.
+struct PhaseStep {
+  std::string name;
+  double ms = 0;
+  std::optional<double> value;  // the answer's value after it (none yet)
+  std::optional<double> bound;  // the proven bound after it (none yet)
+  bool improved = false;        // it found a better triangulation
+  bool tightened = false;       // it tightened the bound
+  bool proved = false;          // the answer is optimal after it
+};
+
 // The two triangles that attain a min-max value.
 struct CriticalPair {
   Tri first, second;
@@ -37,6 +49,7 @@ struct Solution {
   std::string details;                   // what ran, in a few words (for reports)
   std::optional<CriticalPair> critical;  // min-max pair objectives
   std::vector<ThresholdStep> trace;      // bottleneck search, when asked for
+  std::vector<PhaseStep> phases;         // order k >= 2, when a trace is asked for
   // Higher order (k > 1): the triangulation itself (not a choice of diagonals), and
   // the number of its edges that are not Delaunay edges.
   uint32_t order = 1;

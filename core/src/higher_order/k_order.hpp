@@ -1,16 +1,15 @@
 // Optimising over k-th order Delaunay triangulations (k >= 1; paper Section 4.3).
 //
 // The fixed edges cut the hull into regions (regions.hpp); each region's k-OD
-// triangulations are enumerated, and the objective's terms become a state graph
-// over the regions (region_model.hpp):
-//  - exact: the state graph's DP over a tree decomposition (every region
-//    enumerated, every table within the memory cap): `optimal` is then proven;
-//  - otherwise: coordinate descent over the regions' states from the first order
-//    optimum, with the bound of a relaxation (each factor at its best), so the
-//    gap is known; `optimal` when the bound meets the value.
-//  - brute force: every k-OD triangulation of the whole instance (small inputs):
-//    the reference the engine is tested against.
-// Every returned triangulation is verified k-OD.
+// triangulations are listed, and the objective's terms become a state graph
+// over the regions (region_model.hpp). The solve is a table of phases
+// (phases/phase_table.hpp) over one answer (incumbent.hpp): the exact DP over a
+// tree decomposition when every region is listed whole; else searches from the
+// first order optimum and the order below, and proven bounds, until the bound
+// meets the value (`optimal`) or the phases run out (the gap is known).
+// Brute force (every k-OD triangulation of the whole instance, small inputs) is
+// the reference the engine is tested against. Every returned triangulation is
+// verified k-OD.
 #pragma once
 #include <functional>
 
@@ -32,6 +31,7 @@ struct KOrderResult {
   uint64_t enumerated = 0;  // triangulations enumerated (brute force)
   std::string method;       // "brute-force", "exact" or "heuristic"
   std::string details;      // what ran, in a few words
+  std::vector<PhaseStep> phases;  // the phases that ran (the top order's)
 };
 
 // Brute force at order k enumerates the whole instance: at most this many points.

@@ -113,6 +113,18 @@ std::string solution_json(const Terrain& t, const Solution& r, bool with_triangl
            ", \"clauses\": " + std::to_string(r.trace[k].clauses) + "}";
     s += "]";
   }
+  if (with_trace && !r.phases.empty()) {
+    s += ", \"phases\": [";
+    for (size_t k = 0; k < r.phases.size(); ++k) {
+      const PhaseStep& p = r.phases[k];
+      s += std::string(k ? ", " : "") + "{\"phase\": \"" + json_escape(p.name) + "\", \"ms\": " + ms_json(p.ms) +
+           ", \"value\": " + (p.value ? json_number(*p.value) : "null") +
+           ", \"bound\": " + (p.bound ? json_number(*p.bound) : "null") +
+           ", \"improved\": " + (p.improved ? "true" : "false") + ", \"tightened\": " + (p.tightened ? "true" : "false") +
+           ", \"proved\": " + (p.proved ? "true" : "false") + "}";
+    }
+    s += "]";
+  }
   s += "}";
   if (!with_triangles) return s;
   return with_triangles_json(

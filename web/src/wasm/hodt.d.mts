@@ -3,7 +3,7 @@
 import type { BakerExplanation, ExactExplanation, RegionExplanation, SearchExplanation } from '../explain.js';
 import type { SolvedBy } from '../objectives.js';
 import type { ProgressInfo } from '../solve.js';
-import type { ThresholdStep } from '../terrain.js';
+import type { PhaseStep, ThresholdStep } from '../terrain.js';
 export interface RawChoiceResult {
   triangles: Uint32Array;
   halfedges: Int32Array;
@@ -31,6 +31,7 @@ export interface RawSolution {
   localSearchImproved: boolean;
   details: string;
   trace: ThresholdStep[];
+  phases: PhaseStep[];
 }
 /** What solve and explain return: order k >= 2 adds the triangles (not a choice of diagonals). */
 export type RawSolved = RawSolution & { order: number; triangles?: Uint32Array };

@@ -1,0 +1,121 @@
+#include "higher_order/phases/phase_table.hpp"
+
+#include <chrono>
+
+#include "hodt/error.hpp"
+#include "higher_order/phases/phases.hpp"
+
+namespace hodt {
+
+namespace {
+
+bool always(const KOrderRun&) { return true; }
+bool max_terms(const KOrderRun& run) { return run.description.combine == TermCombine::Max; }
+bool incomplete(const KOrderRun& run) { return run.engine->R.incomplete; }
+
+}  // namespace
+
+// Cheap proofs first, then the exact engine, then the search and its starts,
+// then the bounds from the cheapest up. Counts read the dual before the views
+// (the dual proves most of them on its own); the stars come after the views,
+// which tell them whether the gap is more likely the value's or the bound's;
+// the glued fill graphs last, where all else left a gap.
+const std::vector<KOrderPhase>& k_order_phases() {
+  static const std::vector<KOrderPhase> rows = {
+      {"the first order optimum meets the global bound",
+       [](const KOrderRun& r) { return r.bounded && r.k >= 2 && r.description.global_bound != nullptr; }, meet_global_bound},
+      {"finding the regions", always, find_regions},
+      // (Order 1 stays on the region engine: solve() takes the first order paths itself.)
+      {"a diagonal per quad", [](const KOrderRun& r) { return r.k >= 2; }, solve_as_quads},
+      // (One order's regions in memory at a time.)
+      {"the lower order, first", [](const KOrderRun& r) { return r.k >= r.budgets.early_rung_order; }, solve_lower_order},
+      {"listing the regions", always, build_engine},
+      {"listing the regions whole", [](const KOrderRun& r) { return r.provable && incomplete(r); }, list_whole},
+      {"the exact DP", always, solve_exactly},
+      {"the start", always, take_start},
+      {"a min-max proof of the start", always, prove_start},
+      {"the start listed", always, list_start},
+      {"a quick reading of the fill graphs",
+       [](const KOrderRun& r) {
+         return r.provable && r.k < r.budgets.early_rung_order && incomplete(r) && r.options.method != Method::Approx;
+       },
+       quick_fill_graph_proof},
+      {"the lower order", [](const KOrderRun& r) { return r.k >= 3 && !r.lower; }, solve_lower_order},
+      {"the lower order's answer as a start", [](const KOrderRun& r) { return r.lower.has_value(); }, start_from_lower_order},
+      {"the best listed combination", always, best_listed},
+      {"Baker's shifting at order k",
+       [](const KOrderRun& r) { return r.bounded && r.k >= 2 && r.options.method == Method::Approx; }, shift_bands},
+      {"k-OD flips", always, flip},
+      // A rung ends here: its answer is a start, its bound of no use.
+      {"descents over the fill graphs (a rung)", [](const KOrderRun& r) { return !r.bounded && r.counts && incomplete(r); },
+       descend_fill_graphs},
+      {"the relaxation", [](const KOrderRun& r) { return r.bounded && !r.dual_first; }, relax},
+      {"the terms' floor", [](const KOrderRun& r) { return r.bounded && max_terms(r); }, floor_terms},
+      {"the dual proof", [](const KOrderRun& r) { return r.provable; }, prove_by_dual},
+      {"the relaxation, after the dual", [](const KOrderRun& r) { return r.dual_first; }, relax},
+      {"the regions' views", [](const KOrderRun& r) { return r.bounded; }, view_regions},
+      {"thresholds over the fill graphs", [](const KOrderRun& r) { return r.bounded && max_terms(r) && incomplete(r); },
+       refute_thresholds},
+      {"the vertices' fans", [](const KOrderRun& r) { return r.bounded && max_terms(r); }, floor_fans},
+      {"the vertices' stars", [](const KOrderRun& r) { return r.bounded && !max_terms(r); }, search_stars},
+      {"the fill graphs glued", [](const KOrderRun& r) { return r.bounded && r.unglued.has_value(); }, glue_fill_graphs},
+  };
+  return rows;
+}
+
+std::vector<PhaseStep> run_phases(KOrderRun& run) {
+  std::vector<PhaseStep> ran;
+  const Incumbent& answer = run.answer;
+  for (const KOrderPhase& phase : k_order_phases()) {
+    if (answer.optimal() || run.method) break;
+    if (!phase.applies(run)) continue;
+    const bool had = answer.has();
+    const double value = answer.value();
+    const std::optional<double> bound = answer.bound();
+    const auto t0 = std::chrono::steady_clock::now();
+    phase.run(run);
+    PhaseStep step;
+    step.name = phase.name;
+    step.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (answer.has()) step.value = answer.value();
+    step.bound = answer.bound();
+    step.improved = answer.has() && (!had || better(run.sense, answer.value(), value));
+    step.tightened = step.bound && (!bound || better(run.sense, *bound, *step.bound));
+    step.proved = answer.optimal();
+    ran.push_back(std::move(step));
+  }
+  return ran;
+}
+
+// The answer as the phases left it: `optimal` is the incumbent's (the bound
+// meets the value), the method what produced it.
+KOrderResult solve_at_order(const KOrderShared& shared, uint32_t k, const SolveOptions& options, bool bounded,
+                            const UsefulEdges* above) {
+  KOrderRun run(shared, k, options, bounded, above);
+  KOrderResult r;
+  r.phases = run_phases(run);
+  const Incumbent& answer = run.answer;
+  r.optimal = answer.optimal();
+  if (bounded && !run.method && options.method == Method::Exact && !r.optimal)
+    throw LimitError("exact at order " + std::to_string(k) + ": " + run.refused + "; the dual bound left a gap");
+  r.value = answer.value();
+  if (!r.optimal) r.bound = answer.bound();
+  r.method = run.method ? *run.method : r.optimal ? "exact" : "heuristic";
+  if (run.details) {
+    r.details = *run.details;
+  } else {
+    r.details = run.engine ? region_summary(run.engine->R) + "; " : "";
+    r.details += answer.found_by();
+    if (r.optimal)
+      r.details += "; optimal: " + (answer.proof().empty() ? "its value meets " + answer.bound_by() : answer.proof());
+    else if (r.bound)
+      r.details += "; bound from " + answer.bound_by();
+    r.details += answer.notes();
+    if (!run.refused.empty()) r.details += " (exact refused: " + run.refused + ")";
+    else if (options.method == Method::Approx) r.details += " (approx asked)";
+  }
+  r.triangulation = run.answer.take_triangulation();
+  return r;
+}
+
+}  // namespace hodt
