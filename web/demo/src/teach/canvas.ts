@@ -1,5 +1,6 @@
 // A canvas that fills its container, keeps a data-to-screen transform fitted to a
-// bounding box, and redraws on resize: the drawing surface of the teaching views.
+// bounding box, and redraws on resize: the drawing surface of the teaching views;
+// the state a view draws on it; and what the views' drawings share.
 import { fitTransform, toScreenX, toScreenY, type PlanTransform } from '../views/plan/planTransform.ts';
 
 export interface FittedCanvas {
@@ -68,6 +69,43 @@ export function createFittedCanvas(container: HTMLElement, draw: (ctx: CanvasRen
   }
   new ResizeObserver(() => self.redraw()).observe(container);
   return self;
+}
+
+/**
+ * The state a view shows (null, if S allows it, while there is none yet), on a
+ * fitted canvas in `container` (`draw`) and in its pane (`fill`, once the canvas
+ * is asked to redraw); neither runs while the state is null. `set` replaces the
+ * state and shows it; `render` shows it again (a step, a control of the view's own).
+ */
+export function createShownState<S>(
+  container: HTMLElement,
+  label: string,
+  draw: (ctx: CanvasRenderingContext2D, c: FittedCanvas, s: NonNullable<S>) => void,
+  fill: (s: NonNullable<S>) => void,
+  initial: S,
+) {
+  let state = initial;
+  const canvas = createFittedCanvas(container, (ctx, c) => state != null && draw(ctx, c, state), label);
+  const render = (): void => {
+    canvas.redraw();
+    if (state != null) fill(state);
+  };
+  return {
+    canvas,
+    get state(): S {
+      return state;
+    },
+    set(s: NonNullable<S>): void {
+      state = s;
+      render();
+    },
+    render,
+  };
+}
+
+/** Where point i of xyz (x, y, z per point) is on the canvas. */
+export function screenPoints(c: FittedCanvas, xyz: Float64Array): { X: (i: number) => number; Y: (i: number) => number } {
+  return { X: (i) => c.sx(xyz[3 * i]!), Y: (i) => c.sy(xyz[3 * i + 1]!) };
 }
 
 /** Pale grey triangles by mean elevation and thin edges: the backdrop of a view. */
@@ -154,7 +192,17 @@ export function tint(hex: string, alpha: number): string {
   return `rgba(${(v >> 16) & 255}, ${(v >> 8) & 255}, ${v & 255}, ${alpha})`;
 }
 
-export const CATEGORICAL = ['#1f77b4', '#e6550d', '#31a354', '#9467bd', '#d62728', '#17becf', '#bcbd22', '#8c564b', '#e377c2', '#636363'] as const;
+const CATEGORICAL = ['#1f77b4', '#e6550d', '#31a354', '#9467bd', '#d62728', '#17becf', '#bcbd22', '#8c564b', '#e377c2', '#636363'] as const;
+
+/** The colour of a gadget's variable v (the colours repeat past ten variables). */
+export const variableColor = (v: number): string => CATEGORICAL[v % CATEGORICAL.length]!;
+
+/** Labels from here on centred on their point, in system-ui of this weight and size. */
+export function centredLabels(c: CanvasRenderingContext2D, weight: number, px: number): void {
+  c.font = `${weight} ${px}px system-ui, sans-serif`;
+  c.textAlign = 'center';
+  c.textBaseline = 'middle';
+}
 
 /** Sequential colours for layers 0..count-1 (outer to inner). */
 export function layerColor(layer: number, count: number): string {

@@ -4,7 +4,7 @@ import type { Hodt, ObjectiveId } from 'hodt';
 import { seededRandom } from '../terrains/rng.ts';
 import { h } from '../ui/dom.ts';
 import { OBJECTIVE_HELP } from '../ui/objectiveHelp.ts';
-import type { StepPlayer } from './stepPlayer.ts';
+import { StepPlayer } from './stepPlayer.ts';
 import type { TeachContext } from './view.ts';
 
 export const PAPER_TITLE = 'M. van Kreveld, M. Löffler, R. I. Silveira: Optimization for first order Delaunay triangulations (Computational Geometry, 2010)';
@@ -30,8 +30,11 @@ export const COMPONENT_COLORS = ['#1f77b4', '#9467bd', '#2ca02c', '#17becf', '#8
 /** A mark in a view's legend: a filled area, a line, a dashed line, a cross, a dot. */
 export type LegendMark = 'fill' | 'line' | 'dash' | 'cross' | 'dot';
 
+/** A line of a legend: the mark, its colour, what it means. */
+export type LegendItem = readonly [LegendMark, string, string];
+
 /** The legend of a view: every mark it draws, with what it means. */
-export function legend(items: readonly (readonly [LegendMark, string, string])[]): HTMLUListElement {
+export function legend(items: readonly LegendItem[]): HTMLUListElement {
   return h(
     'ul',
     { class: 'teach-legend' },
@@ -53,24 +56,28 @@ export function objectiveSelect(ctx: TeachContext, id: string, ids: readonly Obj
   return select;
 }
 
-/** First / Prev / Play / Next buttons and a counter, driving a StepPlayer. */
+/** The stepping of a view: a StepPlayer over the positions 0 to `last()` (`step`
+ * shows a position, `intervalMs` apart while playing), the First / Prev / Play /
+ * Next buttons that drive it, and the counter after them (`#<prefix>-counter`,
+ * which the view writes). */
 export function stepControls(
   prefix: string,
-  player: StepPlayer,
-  counter: HTMLElement,
-  labels: { first: [string, string]; prev: [string, string]; next: [string, string]; play: string },
-): HTMLElement {
-  const play = button(`${prefix}-play`, '▶ Play', labels.play, () => player.toggle());
+  o: { last: () => number; step: () => void; intervalMs: number; first: [string, string]; prev: [string, string]; next: [string, string]; play: string },
+): { player: StepPlayer; counter: HTMLElement; controls: HTMLElement } {
+  const player = new StepPlayer(o.last, o.step, o.intervalMs);
+  const counter = h('span', { class: 'teach-counter', id: `${prefix}-counter` });
+  const play = button(`${prefix}-play`, '▶ Play', o.play, () => player.toggle());
   player.attach(play);
-  return h(
+  const controls = h(
     'div',
     { class: 'teach-controls' },
-    button(`${prefix}-first`, labels.first[0], labels.first[1], () => player.go(0)),
-    button(`${prefix}-prev`, labels.prev[0], labels.prev[1], () => player.go(player.pos - 1)),
+    button(`${prefix}-first`, o.first[0], o.first[1], () => player.go(0)),
+    button(`${prefix}-prev`, o.prev[0], o.prev[1], () => player.go(player.pos - 1)),
     play,
-    button(`${prefix}-next`, labels.next[0], labels.next[1], () => player.go(player.pos + 1)),
+    button(`${prefix}-next`, o.next[0], o.next[1], () => player.go(player.pos + 1)),
     counter,
   );
+  return { player, counter, controls };
 }
 
 export function button(id: string, label: string, title: string, onClick: () => void, secondary = true): HTMLButtonElement {

@@ -1,122 +1,106 @@
-// What the three hardness-gadget views share in the DOM: a pane with a formula
-// box, a "Build and solve" button, a status line and a verdict; the summary,
-// solver line and clause table of a built gadget; and the tab that builds on
-// first show. The logic behind them is in gadgetModel.ts.
+// What the three hardness-gadget views share in the DOM: the pane (the lead, a
+// formula box, a "Build and solve" button, a status line and a verdict, then the
+// view's own panels, its legend and a note on what the page does not show), the
+// canvas, the runner that builds into them, and the tab that builds on first
+// show. The logic behind them is in gadgetModel.ts.
+import type { Hodt } from 'hodt';
+import type { SolveJob } from '../solver/solverClient.ts';
 import { h } from '../ui/dom.ts';
-import type { FittedCanvas } from './canvas.ts';
-import { clauseText } from './chainLayout.ts';
-import { button, createPane } from './common.ts';
-import { literalTrue, type Cnf, type Literal } from './formula.ts';
-import type { BuiltGadget, GadgetRunner, Verdict } from './gadgetModel.ts';
-import type { TeachView } from './view.ts';
+import { createFittedCanvas, type FittedCanvas } from './canvas.ts';
+import { button, createPane, legend, paperLink, type LegendItem } from './common.ts';
+import { gadgetRunner, type BuiltGadget, type GadgetRunner } from './gadgetModel.ts';
+import type { TeachContext, TeachView } from './view.ts';
 
-export interface GadgetPane {
-  root: HTMLElement;
-  side: HTMLElement;
-  main: HTMLElement;
-  caption: HTMLElement;
-  input: HTMLTextAreaElement;
-  build: HTMLButtonElement;
-  buttons: HTMLElement;
+/** The panels every gadget view fills from its build. */
+export interface GadgetPanels {
+  /** The formula, the gadget and what the solver found (or why nothing is built). */
   summary: HTMLElement;
+  /** Whether the reduction held on this instance. */
   verdict: HTMLElement;
 }
 
-/** The pane, its side opened by the formula's label, box and buttons (the view
- * appends the rest: status, verdict, tables, legend). */
-export function createGadgetPane(o: {
+/** A gadget view: what its pane says, how it builds and solves a formula, and
+ * how it shows a build. */
+export interface GadgetViewSpec<B extends BuiltGadget> {
   id: string;
   title: string;
-  lead: (Node | string)[];
-  label: string;
-  formula: string;
-  rows: number;
-  ariaLabel: string;
+  /** The lead's sentences, before "See Section <section> of the paper." */
+  lead: readonly string[];
+  section: string;
+  formula: { label: string; text: string; rows: number; ariaLabel: string };
   buildTitle: string;
-  run: () => void;
-}): GadgetPane {
-  const { root, side, main, caption } = createPane(o.id, o.title, o.lead);
-  const input = h('textarea', { id: `${o.id}-formula`, rows: o.rows, spellcheck: false, 'aria-label': o.ariaLabel });
-  input.value = o.formula;
-  const build = button(`${o.id}-build`, 'Build and solve', o.buildTitle, () => o.run(), false);
-  const buttons = h('div', { class: 'buttons' }, build);
-  const summary = h('p', { class: 'teach-status', id: `${o.id}-summary`, 'aria-live': 'polite' });
-  const verdict = h('p', { class: 'teach-verdict', id: `${o.id}-verdict` });
-  side.append(h('label', { for: `${o.id}-formula`, class: 'teach-label' }, o.label), input, buttons);
-  return { root, side, main, caption, input, build, buttons, summary, verdict };
+  /** Buttons after "Build and solve". */
+  buttons?: readonly HTMLElement[];
+  /** The side below the formula box, in order; the legend and the note follow. */
+  panels(p: GadgetPanels): HTMLElement[];
+  legend: readonly LegendItem[];
+  /** What the page does not show: bold headings, each with its text, in one paragraph. */
+  note: readonly (readonly [string, string])[];
+  /** The canvas draws the current build, fitted to each new one (`fit`: the
+   * points to frame, `margin` pixels around them). */
+  canvas: { draw(c: CanvasRenderingContext2D, fc: FittedCanvas, b: B): void; label: string; fit(b: B): Float64Array; margin: number };
+  /** Makes the build from the formula box, throwing one of `refusals` for a
+   * formula it cannot take (its message is shown). */
+  make(hodt: Hodt, text: string): B;
+  refusals: readonly (new (...args: never[]) => Error)[];
+  job(b: B): SolveJob;
+  /** Runs once the solution (or failure) is in. */
+  solved?(b: B): void;
+  /** The canvas's caption once the optimum is in ("The construction" before). */
+  solvedCaption: string;
+  /** The panels besides the verdict that show a build: emptied when there is none. */
+  unbuilt: readonly HTMLElement[];
+  show(b: B, p: GadgetPanels): void;
+  hooks(runner: GadgetRunner<B>, formula: string): Record<string, unknown>;
 }
 
-/** The status line when there is nothing built (the layout's message, or a
- * prompt), and the built gadget's other panels emptied. */
-export function showUnbuilt(summary: HTMLElement, error: string | null, ...panels: HTMLElement[]): void {
-  summary.replaceChildren(error ? h('span', { class: 'error' }, `Cannot build the gadget: ${error}.`) : 'Type a formula and press Build and solve.');
-  for (const panel of panels) panel.replaceChildren();
-}
-
-/** The verdict's check, marked for the tests (`#<id>-check`, data-ok). */
-export const checkSpan = (id: string, v: Verdict) => h('span', { id: `${id}-check`, 'data-ok': String(v.holds), class: v.holds ? 'good' : 'bad' }, v.text);
-
-/** "3 variables, 2 clauses: satisfiable (all 2^3 assignments tried)". */
-export function formulaLine(id: string, f: Cnf, satisfiable: boolean): (Node | string)[] {
-  const n = f.names.length;
-  return [
-    `${n} variable${n === 1 ? '' : 's'}, ${f.clauses.length} clause${f.clauses.length === 1 ? '' : 's'}: `,
-    h('b', { id: `${id}-satisfiable`, 'data-value': String(satisfiable) }, satisfiable ? 'satisfiable' : 'unsatisfiable'),
-    ` (all 2`,
-    h('sup', {}, String(n)),
-    ` assignments tried). `,
-  ];
-}
-
-/** What the exact solver found (`finds`: the value in words), its failure, or that it runs. */
-export function solverLine(b: BuiltGadget, finds: (value: number) => string): Node | string {
-  if (b.solution) return `The library (exact${b.solution.optimal ? ', proven optimal' : ', not proven optimal'}) finds ${finds(b.solution.value)} in ${b.solution.timeMs.toFixed(0)} ms.`;
-  return b.failure ? h('span', { class: 'error' }, `The library could not solve it: ${b.failure}.`) : 'Solving…';
-}
-
-/** The clause table of a 3.1 or 3.2 gadget: each clause vertex, whether the values
- * read from the optimum satisfy its clause, and what its vertex is there. */
-export function fillClauseTable(
-  table: HTMLElement,
-  f: Cnf,
-  vertices: readonly { clause: number; point: number; literals: Literal[] }[],
-  read: readonly boolean[] | null,
-  vertex: ((point: number) => string) | null,
-  titles: { satisfied: string; vertex: string },
-): void {
-  table.replaceChildren(
-    h('thead', {}, h('tr', {}, h('th', {}, '#'), h('th', {}, 'clause'), h('th', { title: titles.satisfied }, 'satisfied'), h('th', { title: titles.vertex }, 'vertex'))),
-    h(
-      'tbody',
-      {},
-      ...vertices.map((cv) =>
-        h(
-          'tr',
-          {},
-          h('td', {}, `C${cv.clause + 1}`),
-          h('td', {}, clauseText(f, cv.literals)),
-          h('td', {}, read ? (cv.literals.some((l) => literalTrue(l, read)) ? '✓' : '✗') : ''),
-          h('td', {}, vertex ? vertex(cv.point) : ''),
-        ),
-      ),
-    ),
+/** The view of a gadget spec; its runner and `render` (the canvas and the pane
+ * shown again) for a view that adds to its build after the solve. */
+export function createGadgetView<B extends BuiltGadget>(ctx: TeachContext, o: GadgetViewSpec<B>): { view: TeachView; runner: GadgetRunner<B>; render(): void } {
+  const { root, side, main, caption } = createPane(o.id, o.title, [...o.lead, 'See ', paperLink(o.section), '.']);
+  const input = h('textarea', { id: `${o.id}-formula`, rows: o.formula.rows, spellcheck: false, 'aria-label': o.formula.ariaLabel });
+  input.value = o.formula.text;
+  const build = button(`${o.id}-build`, 'Build and solve', o.buildTitle, () => runner.run(), false);
+  const panels: GadgetPanels = {
+    summary: h('p', { class: 'teach-status', id: `${o.id}-summary`, 'aria-live': 'polite' }),
+    verdict: h('p', { class: 'teach-verdict', id: `${o.id}-verdict` }),
+  };
+  side.append(
+    h('label', { for: `${o.id}-formula`, class: 'teach-label' }, o.formula.label),
+    input,
+    h('div', { class: 'buttons' }, build, ...(o.buttons ?? [])),
+    ...o.panels(panels),
+    legend(o.legend),
+    h('p', { class: 'teach-note' }, ...o.note.flatMap(([heading, text]) => [h('b', {}, heading), text])),
   );
-}
-
-/** A gadget's tab: built on first show, independent of the page's terrain. */
-export function gadgetTab<B extends BuiltGadget>(
-  o: { root: HTMLElement; runner: GadgetRunner<B>; canvas: FittedCanvas; hooks: () => Record<string, unknown> },
-): TeachView {
-  return {
-    root: o.root,
+  const canvas = createFittedCanvas(main, (c, fc) => runner.built && o.canvas.draw(c, fc, runner.built), o.canvas.label);
+  const render = (): void => {
+    canvas.redraw();
+    const b = runner.built;
+    caption.textContent = b?.solution ? o.solvedCaption : 'The construction';
+    if (b) return o.show(b, panels);
+    panels.summary.replaceChildren(runner.error ? h('span', { class: 'error' }, `Cannot build the gadget: ${runner.error}.`) : 'Type a formula and press Build and solve.');
+    for (const panel of [panels.verdict, ...o.unbuilt]) panel.replaceChildren();
+  };
+  const runner = gadgetRunner<B>(ctx, {
+    text: () => input.value,
+    refusals: o.refusals,
+    make: (text) => o.make(ctx.hodt, text),
+    built: (b) => canvas.fit(o.canvas.fit(b), o.canvas.margin),
+    job: (b) => o.job(b),
+    solved: (b) => o.solved?.(b),
+    render,
+  });
+  // A gadget does not depend on the page's terrain: it is built on first show.
+  const view: TeachView = {
+    root,
     activate() {
-      if (!o.runner.built && !o.runner.error) o.runner.run();
-      o.canvas.redraw();
+      if (!runner.built && !runner.error) runner.run();
+      canvas.redraw();
     },
     deactivate() {},
-    changed() {
-      // The gadget does not depend on the page's terrain.
-    },
-    hooks: o.hooks,
+    changed() {},
+    hooks: () => o.hooks(runner, input.value),
   };
+  return { view, runner, render };
 }

@@ -54,15 +54,16 @@ export const teachView = <const Id extends string>(spec: TeachViewSpec<Id>): Tea
  * stale, and showing it brings it up to date. `follow` copies the sidebar's
  * settings into the view's own controls (on show and on every change), `refresh`
  * recomputes, `changed` runs on a change before it (e.g. to drop a pending
- * answer), `shown` and `hidden` after showing and hiding.
+ * answer). The view's `canvas` is redrawn once it is shown (a hidden pane has
+ * no size to draw at) and its step `player` stops when it is hidden.
  */
 export function pageView(o: {
   root: HTMLElement;
   refresh(): void;
   follow?(): void;
   changed?(): void;
-  shown?(): void;
-  hidden?(): void;
+  canvas?: { redraw(): void };
+  player?: { stop(): void };
   hooks(): Record<string, unknown>;
 }): TeachView & {
   /** The view's own control changed: recompute (now, if shown). `during` runs
@@ -87,11 +88,11 @@ export function pageView(o: {
       active = true;
       o.follow?.();
       run();
-      o.shown?.();
+      o.canvas?.redraw();
     },
     deactivate() {
       active = false;
-      o.hidden?.();
+      o.player?.stop();
     },
     changed() {
       o.follow?.();

@@ -4,9 +4,8 @@
 import { h } from '../../ui/dom.ts';
 import { formatValue, OBJECTIVE_HELP } from '../../ui/objectiveHelp.ts';
 import { FLIPPED_COLOR } from '../../views/palette.ts';
-import { createFittedCanvas, layerColor } from '../canvas.ts';
+import { createShownState, layerColor } from '../canvas.ts';
 import { createPane, legend, paperLink, stepControls } from '../common.ts';
-import { StepPlayer } from '../stepPlayer.ts';
 import { readStructure } from '../structure.ts';
 import { latestSolve, pageView, teachView } from '../view.ts';
 import { CUT_COLOR, drawLayers } from './draw.ts';
@@ -50,9 +49,10 @@ export const bakerView = teachView({
         view.invalidate(() => ctx.choose({ objective: objective.value as BakerObjective, epsilon: clampEpsilon(epsilon.value) })),
       );
     }
-    const player = new StepPlayer(() => lastPosition(state), () => render(), 1400);
-    const counter = h('span', { class: 'teach-counter', id: 'baker-counter' });
-    const controls = stepControls('baker', player, counter, {
+    const { player, counter, controls } = stepControls('baker', {
+      last: () => lastPosition(shown.state),
+      step: () => shown.render(),
+      intervalMs: 1400,
       first: ['Start', 'Layers only'],
       prev: ['◀ Prev', 'Previous shift'],
       next: ['Next ▶', 'Next shift'],
@@ -77,9 +77,7 @@ export const bakerView = teachView({
         ['line', FLIPPED_COLOR, 'outline: a quad this shift’s (or the result’s) triangulation flips'],
       ]),
     );
-    const canvas = createFittedCanvas(main, (c, f) => state && drawLayers(c, f, state, player.pos), 'Quad graph coloured by layer, with the edges cut by the current shift');
-
-    let state: BakerState | null = null;
+    const shown = createShownState<BakerState | null>(main, 'Quad graph coloured by layer, with the edges cut by the current shift', (c, f, s) => drawLayers(c, f, s, player.pos), fill, null);
     const solver = latestSolve(ctx.solver);
 
     /** The sidebar's objective (when this view shows it) and epsilon. */
@@ -94,21 +92,15 @@ export const bakerView = teachView({
       const eps = clampEpsilon(epsilon.value);
       const id = objective.value as BakerObjective;
       const run = startRun(readStructure(ctx.terrain()), id, eps);
-      state = run;
       player.pos = 0;
-      canvas.fit(run.structure.points);
-      render();
+      shown.canvas.fit(run.structure.points);
+      shown.set(run);
       // In the teaching views' worker (the page stays responsive while it runs).
-      solver.solve({ points: ctx.points(), objective: id, method: 'approx', epsilon: eps, order: 1, maxEdge: ctx.settings().maxEdge, explain: true }, (o) => {
-        state = withOutcome(run, o);
-        render();
-      });
+      solver.solve({ points: ctx.points(), objective: id, method: 'approx', epsilon: eps, order: 1, maxEdge: ctx.settings().maxEdge, explain: true }, (o) => shown.set(withOutcome(run, o)));
     }
 
-    function render(): void {
-      canvas.redraw();
-      const s = state;
-      if (!s) return;
+    /** The pane for the current position of the player. */
+    function fill(s: BakerState): void {
       const fmt = (v: number) => formatValue(s.objective, v);
       const max = isMax(s);
       const shifts = shiftsOf(s);
@@ -204,9 +196,9 @@ export const bakerView = teachView({
       refresh,
       // A result for the old terrain must not land on the new one.
       changed: () => solver.drop(),
-      shown: () => canvas.redraw(),
-      hidden: () => player.stop(),
-      hooks: () => bakerHooks(state, objective.value, player.pos),
+      canvas: shown.canvas,
+      player,
+      hooks: () => bakerHooks(shown.state, objective.value, player.pos),
     });
     return view;
   },

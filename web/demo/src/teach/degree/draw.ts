@@ -1,13 +1,12 @@
 // Drawing of the Max degree view: the rows of cells with the diagonal each uses,
 // the points coloured by their role and degree, the clause vertices' degrees.
-import { CATEGORICAL, drawQuad, tint, type FittedCanvas } from '../canvas.ts';
+import { centredLabels, drawQuad, screenPoints, tint, variableColor, type FittedCanvas } from '../canvas.ts';
 import type { DegreeBuilt } from './model.ts';
 
 export function drawDegree(c: CanvasRenderingContext2D, fc: FittedCanvas, b: DegreeBuilt): void {
   const g = b.gadget;
   const p = g.points;
-  const X = (i: number) => fc.sx(p[3 * i]!);
-  const Y = (i: number) => fc.sy(p[3 * i + 1]!);
+  const { X, Y } = screenPoints(fc, p);
   const choice = b.solution?.choice ?? null;
   const degrees = b.terrain.measures(choice ?? undefined).degree;
   g.cells.forEach((cell, i) => {
@@ -15,7 +14,7 @@ export function drawDegree(c: CanvasRenderingContext2D, fc: FittedCanvas, b: Deg
     const q = b.map.quad[i]!;
     const rises = (choice ? choice[q] === 0 : true) === (b.map.delaunayRises[i] === 1); // sw-ne
     drawQuad(c, X, Y, cell.corners, {
-      fill: v >= 0 ? tint(CATEGORICAL[v % CATEGORICAL.length]!, 0.35) : 'rgba(120, 120, 120, 0.25)',
+      fill: v >= 0 ? tint(variableColor(v), 0.35) : 'rgba(120, 120, 120, 0.25)',
       outline: '#555',
       diagonalAC: rises,
       width: Math.max(1.5, fc.scale * 0.04),
@@ -30,9 +29,7 @@ export function drawDegree(c: CanvasRenderingContext2D, fc: FittedCanvas, b: Deg
     c.arc(X(i), Y(i), role === 'pendant' && !over ? r * 0.6 : r, 0, 2 * Math.PI);
     c.fill();
   }
-  c.font = `600 ${Math.max(10, Math.min(13, fc.scale * 0.22))}px system-ui, sans-serif`;
-  c.textAlign = 'center';
-  c.textBaseline = 'middle';
+  centredLabels(c, 600, Math.max(10, Math.min(13, fc.scale * 0.22)));
   for (const cv of g.clauses) {
     const i = cv.point;
     const up = p[3 * i + 1]! > 0.4 ? -1 : 1;
@@ -41,7 +38,7 @@ export function drawDegree(c: CanvasRenderingContext2D, fc: FittedCanvas, b: Deg
   }
   for (const w of g.wires) {
     const first = g.cells[w.cells[0]!]!, last = g.cells[w.cells.at(-1)!]!;
-    c.fillStyle = CATEGORICAL[w.variable % CATEGORICAL.length]!;
+    c.fillStyle = variableColor(w.variable);
     c.fillText(b.formula.names[w.variable]!, (fc.sx(first.x) + fc.sx(last.x + 1)) / 2, fc.sy(first.y + 1.55));
   }
 }

@@ -3,11 +3,10 @@
 // solved by the library and read back.
 import { h } from '../../ui/dom.ts';
 import { EDGE_COLORS } from '../../views/palette.ts';
-import { CATEGORICAL, createFittedCanvas } from '../canvas.ts';
-import { button, legend, paperLink } from '../common.ts';
+import { variableColor } from '../canvas.ts';
+import { button } from '../common.ts';
 import { clauseTrue, countSatisfied, formatClause, FormulaError } from '../formula.ts';
-import { gadgetRunner } from '../gadgetModel.ts';
-import { createGadgetPane, gadgetTab, showUnbuilt } from '../gadgetPane.ts';
+import { createGadgetView, type GadgetPanels } from '../gadgetPane.ts';
 import { teachView } from '../view.ts';
 import { LayoutError } from './build.ts';
 import { drawGadget } from './draw.ts';
@@ -17,13 +16,6 @@ export const gadgetView = teachView({
   id: 'gadget',
   label: 'Hardness gadget',
   create(ctx) {
-    const { root, side, main, caption, input, buttons, summary, verdict } = createGadgetPane({ id: 'gadget', title: 'Why most convex edges is NP-hard', label: 'Formula (clauses of two literals, up to 10 variables)', formula: DEFAULT_FORMULA, rows: 3, ariaLabel: 'MAX-2-SAT formula', buildTitle: 'Build the gadget for this formula and solve it', run: () => runner.run(), lead: [
-      'A grid of unit quads with heights f(x, y) = xy − (x² + y²)/10 has one convex (red) and one reflex (blue) diagonal in every quad, and an edge between two quads is convex unless both use their convex diagonal. ',
-      'So a large pool of quads scores best in one of two chessboard patterns: a variable. Each clause sends a tentacle from each of its two pools; they meet at one shared edge, which scores when either end quad is reflex, that is when either literal is true. ',
-      'High points coat everything else. The best triangulation then satisfies as many clauses as possible: MAX-2-SAT. See ',
-      paperLink('3.3'),
-      '.',
-    ] });
     const open = button('gadget-open', 'Open in the main views', 'Load the gadget’s points into the page (objective: most convex edges)', () => {
       const built = runner.built;
       if (!built) return;
@@ -32,45 +24,51 @@ export const gadgetView = teachView({
     });
     const vars = h('table', { class: 'teach-table', id: 'gadget-vars' });
     const clauses = h('table', { class: 'teach-table', id: 'gadget-clauses' });
-    const honesty = h(
-      'p',
-      { class: 'teach-note' },
-      h('b', {}, 'Not a proof. '),
-      'The paper proves the reduction for planar formulas with pools larger than their number of tentacles. Here pools are at most 8 quads high (so the exact solver can handle them), and the tentacles turn corners and skip columns in ways the paper only sketches, so this page does not claim the construction is exact in general: it checks every instance instead (the check above), by scoring the chessboard pattern of all 2ⁿ assignments.',
-    );
-    buttons.append(open);
-    side.append(
-      summary,
-      verdict,
-      vars,
-      clauses,
-      legend([
-        ['fill', CATEGORICAL[0]!, 'a variable’s pool and its tentacles (one colour per variable)'],
+    const { view, runner, render } = createGadgetView(ctx, {
+      id: 'gadget',
+      title: 'Why most convex edges is NP-hard',
+      lead: [
+        'A grid of unit quads with heights f(x, y) = xy − (x² + y²)/10 has one convex (red) and one reflex (blue) diagonal in every quad, and an edge between two quads is convex unless both use their convex diagonal. ',
+        'So a large pool of quads scores best in one of two chessboard patterns: a variable. Each clause sends a tentacle from each of its two pools; they meet at one shared edge, which scores when either end quad is reflex, that is when either literal is true. ',
+        'High points coat everything else. The best triangulation then satisfies as many clauses as possible: MAX-2-SAT. ',
+      ],
+      section: '3.3',
+      formula: { label: 'Formula (clauses of two literals, up to 10 variables)', text: DEFAULT_FORMULA, rows: 3, ariaLabel: 'MAX-2-SAT formula' },
+      buildTitle: 'Build the gadget for this formula and solve it',
+      buttons: [open],
+      panels: ({ summary, verdict }) => [summary, verdict, vars, clauses],
+      legend: [
+        ['fill', variableColor(0), 'a variable’s pool and its tentacles (one colour per variable)'],
         ['line', EDGE_COLORS.convex, 'a quad using its convex diagonal'],
         ['line', EDGE_COLORS.reflex, 'a quad using its reflex diagonal'],
         ['dash', '#111', 'a tentacle cell that skips a column'],
         ['line', '#17804a', 'clause edge that scores (its clause is satisfied); grey: it does not'],
         ['dot', 'rgba(90, 100, 96, 0.6)', 'coating points (high, they fix everything else)'],
-      ]),
-      honesty,
-    );
-    const canvas = createFittedCanvas(main, (c, f) => runner.built && drawGadget(c, f, runner.built), 'The hardness gadget: variable pools, tentacles and clause edges');
-
-    const runner = gadgetRunner<GadgetBuilt>(ctx, {
-      text: () => input.value,
-      refusals: [FormulaError, LayoutError],
-      make: (text) => makeGadget(ctx.hodt, text),
-      built(b) {
-        const { x0, y0, x1, y1 } = b.gadget.bounds;
-        canvas.fit(Float64Array.of(x0, y0, 0, x1, y1, 0), 12);
+      ],
+      note: [
+        [
+          'Not a proof. ',
+          'The paper proves the reduction for planar formulas with pools larger than their number of tentacles. Here pools are at most 8 quads high (so the exact solver can handle them), and the tentacles turn corners and skip columns in ways the paper only sketches, so this page does not claim the construction is exact in general: it checks every instance instead (the check above), by scoring the chessboard pattern of all 2ⁿ assignments.',
+        ],
+      ],
+      canvas: {
+        draw: drawGadget,
+        label: 'The hardness gadget: variable pools, tentacles and clause edges',
+        fit: ({ gadget: { bounds: { x0, y0, x1, y1 } } }) => Float64Array.of(x0, y0, 0, x1, y1, 0),
+        margin: 12,
       },
+      make: makeGadget,
+      refusals: [FormulaError, LayoutError],
       job: gadgetJob,
       solved(b) {
         if (!b.solution) return;
         readSolved(b);
         certifyInSlices(b);
       },
-      render: () => render(),
+      solvedCaption: 'Optimum: red convex, blue reflex diagonals · green clause edge convex · dashed: a skipped column',
+      unbuilt: [vars, clauses],
+      show,
+      hooks: (r, formula) => gadgetViewHooks(r.error, formula, r.built),
     });
 
     /** Scores the pattern of every assignment, 32 per task. */
@@ -85,17 +83,8 @@ export const gadgetView = teachView({
       window.setTimeout(step, 0);
     }
 
-    function render(): void {
-      canvas.redraw();
-      const built = runner.built;
-      caption.textContent = built?.solution
-        ? 'Optimum: red convex, blue reflex diagonals · green clause edge convex · dashed: a skipped column'
-        : 'The construction';
-      if (!built) {
-        showUnbuilt(summary, runner.error, vars, clauses, verdict);
-        return;
-      }
-      const b = built;
+    /** The built gadget: its summary, the pools' values, the clause edges, the check. */
+    function show(b: GadgetBuilt, { summary, verdict }: GadgetPanels): void {
       const f = b.formula;
       const g = b.gadget;
       const n = f.names.length;
@@ -122,7 +111,7 @@ export const gadgetView = teachView({
             h(
               'tr',
               { 'data-variable': f.names[v]! },
-              h('td', {}, h('i', { class: 'swatch', style: `background: ${CATEGORICAL[v % CATEGORICAL.length]}` }), f.names[v]!),
+              h('td', {}, h('i', { class: 'swatch', style: `background: ${variableColor(v)}` }), f.names[v]!),
               h('td', {}, rb ? h('b', { class: rb.assignment[v] ? 'good' : 'bad' }, rb.assignment[v] ? 'true' : 'false') : '…'),
               h('td', {}, rb ? `${Math.round(rb.agreement[v]! * 100)}%` : ''),
             ),
@@ -185,6 +174,6 @@ export const gadgetView = teachView({
       verdict.replaceChildren(...parts);
     }
 
-    return gadgetTab({ root, runner, canvas, hooks: () => gadgetViewHooks(runner.error, input.value, runner.built) });
+    return view;
   },
 });

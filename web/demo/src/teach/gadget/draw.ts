@@ -1,15 +1,14 @@
 // Drawing of the Hardness gadget view: the coating, each variable's pool and
 // tentacles with the diagonal each cell uses, the clause edges and the labels.
 import { EDGE_COLORS } from '../../views/palette.ts';
-import { CATEGORICAL, tint, type FittedCanvas } from '../canvas.ts';
+import { centredLabels, screenPoints, tint, variableColor, type FittedCanvas } from '../canvas.ts';
 import { cellStates } from './check.ts';
 import type { GadgetBuilt } from './model.ts';
 
 export function drawGadget(c: CanvasRenderingContext2D, f: FittedCanvas, b: GadgetBuilt): void {
   const g = b.gadget;
   const p = g.points;
-  const X = (i: number) => f.sx(p[3 * i]!);
-  const Y = (i: number) => f.sy(p[3 * i + 1]!);
+  const { X, Y } = screenPoints(f, p);
   // The coating: the lattice region, pale.
   c.fillStyle = '#eceeea';
   c.fillRect(f.sx(g.bounds.x0), f.sy(g.bounds.y1), (g.bounds.x1 - g.bounds.x0) * f.scale, (g.bounds.y1 - g.bounds.y0) * f.scale);
@@ -27,7 +26,7 @@ export function drawGadget(c: CanvasRenderingContext2D, f: FittedCanvas, b: Gadg
     path.lineTo(X(ne), Y(ne));
     path.lineTo(X(nw), Y(nw));
     path.closePath();
-    c.fillStyle = tint(CATEGORICAL[cell.variable % CATEGORICAL.length]!, cell.clause < 0 ? 0.3 : 0.5);
+    c.fillStyle = tint(variableColor(cell.variable), cell.clause < 0 ? 0.3 : 0.5);
     c.fill(path);
     outline.addPath(path);
     if (cell.w > 1) skips.addPath(path);
@@ -55,9 +54,7 @@ export function drawGadget(c: CanvasRenderingContext2D, f: FittedCanvas, b: Gadg
   c.stroke(skips);
   c.setLineDash([]);
   // Clause meeting edges.
-  c.font = `700 ${Math.max(10, Math.min(14, f.scale * 0.7))}px system-ui, sans-serif`;
-  c.textAlign = 'center';
-  c.textBaseline = 'middle';
+  centredLabels(c, 700, Math.max(10, Math.min(14, f.scale * 0.7)));
   b.gadget.clauses.forEach((cl, k) => {
     const a = g.cells[cl.tentacles[0].cells.at(-1)!]!;
     const z = g.cells[cl.tentacles[1].cells.at(-1)!]!;
@@ -79,7 +76,7 @@ export function drawGadget(c: CanvasRenderingContext2D, f: FittedCanvas, b: Gadg
   g.pools.forEach((pool) => {
     const v = pool.variable;
     const text = `${b.formula.names[v]}${b.readback ? ` = ${b.readback.assignment[v] ? 'T' : 'F'}` : ''}`;
-    label(c, text, f.sx(pool.x0 + pool.w / 2), f.sy(pool.y0 + pool.h / 2), CATEGORICAL[v % CATEGORICAL.length]!);
+    label(c, text, f.sx(pool.x0 + pool.w / 2), f.sy(pool.y0 + pool.h / 2), variableColor(v));
   });
 }
 

@@ -1,7 +1,7 @@
 // Drawing of the Mixed vertices view: the triangulation's edges, each fan's
 // quads with the diagonal it uses, the mixed vertices and the clause vertices.
 import { VertexClass } from 'hodt';
-import { CATEGORICAL, drawQuad, tint, type FittedCanvas } from '../canvas.ts';
+import { centredLabels, drawQuad, screenPoints, tint, variableColor, type FittedCanvas } from '../canvas.ts';
 import { sectorCorners } from './build.ts';
 import type { MixedBuilt } from './model.ts';
 
@@ -10,8 +10,7 @@ export const MIXED = '#d62728';
 export function drawMixed(c: CanvasRenderingContext2D, fc: FittedCanvas, b: MixedBuilt): void {
   const g = b.gadget;
   const p = g.points;
-  const X = (i: number) => fc.sx(p[3 * i]!);
-  const Y = (i: number) => fc.sy(p[3 * i + 1]!);
+  const { X, Y } = screenPoints(fc, p);
   const choice = b.solution?.choice ?? null;
   const classes = b.terrain.measures(choice ?? undefined).vertexClass;
   // Every edge of the triangulation, thin, then the fans' quads on top.
@@ -27,7 +26,7 @@ export function drawMixed(c: CanvasRenderingContext2D, fc: FittedCanvas, b: Mixe
   }
   c.stroke();
   g.fans.forEach((fan, i) => {
-    const colour = CATEGORICAL[fan.variable % CATEGORICAL.length]!;
+    const colour = variableColor(fan.variable);
     fan.inner.forEach((_, k) => {
       const q = b.map.quad[i]![k]!;
       const ccw = (choice ? choice[q] === 0 : true) === (b.map.delaunayCcw[i]![k] === 1);
@@ -43,9 +42,7 @@ export function drawMixed(c: CanvasRenderingContext2D, fc: FittedCanvas, b: Mixe
     c.arc(X(i), Y(i), mixed || role === 'clause' || role === 'unit' ? r : r * 0.7, 0, 2 * Math.PI);
     c.fill();
   }
-  c.font = `600 ${Math.max(10, Math.min(13, fc.scale * 0.22))}px system-ui, sans-serif`;
-  c.textAlign = 'center';
-  c.textBaseline = 'middle';
+  centredLabels(c, 600, Math.max(10, Math.min(13, fc.scale * 0.22)));
   // Clause labels just below their vertex.
   const labelled = new Map<number, string[]>();
   for (const cv of g.clauses) labelled.set(cv.point, [...(labelled.get(cv.point) ?? []), `C${cv.clause + 1}`]);
@@ -54,7 +51,7 @@ export function drawMixed(c: CanvasRenderingContext2D, fc: FittedCanvas, b: Mixe
     c.fillText(names.join(', '), X(i), fc.sy(p[3 * i + 1]! - 0.45));
   }
   for (const fan of g.fans) {
-    c.fillStyle = CATEGORICAL[fan.variable % CATEGORICAL.length]!;
+    c.fillStyle = variableColor(fan.variable);
     c.fillText(b.formula.names[fan.variable]!, fc.sx(fan.x), fc.sy(fan.y + 0.5));
   }
 }

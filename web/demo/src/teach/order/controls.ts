@@ -7,9 +7,8 @@ import { MAX_ORDER } from '../../app/settings.ts';
 import { h } from '../../ui/dom.ts';
 import { formatValue, OBJECTIVE_HELP } from '../../ui/objectiveHelp.ts';
 import { FLIPPED_COLOR } from '../../views/palette.ts';
-import { createFittedCanvas } from '../canvas.ts';
+import { createShownState } from '../canvas.ts';
 import { COMPONENT_COLORS, createPane, legend, objectiveSelect, paperLink, stepControls } from '../common.ts';
-import { StepPlayer } from '../stepPlayer.ts';
 import { latestSolve, pageView, teachView } from '../view.ts';
 import { drawRegions, FIXED_COLOR, MINIMUM_COLOR } from './draw.ts';
 import { captionText, orderHooks, startSolve, valueOf, valueRows, withOutcome, type OrderState, type OrderValue } from './model.ts';
@@ -26,10 +25,11 @@ export const orderView = teachView({
       '.',
     ]);
     const objective = objectiveSelect(ctx, 'order-objective', OBJECTIVE_IDS, 'Objective', () => view.invalidate());
-    const counter = h('span', { class: 'teach-counter', id: 'order-counter' });
-    // Positions 0..7 are the orders 1..8.
-    const player = new StepPlayer(() => MAX_ORDER - 1, () => view.invalidate(), 2200);
-    const controls = stepControls('order', player, counter, {
+    const { player, counter, controls } = stepControls('order', {
+      // Positions 0..7 are the orders 1..8.
+      last: () => MAX_ORDER - 1,
+      step: () => view.invalidate(),
+      intervalMs: 2200,
       first: ['k = 1', 'First order'],
       prev: ['◀ k − 1', 'Lower order'],
       next: ['k + 1 ▶', 'Higher order'],
@@ -46,9 +46,7 @@ export const orderView = teachView({
       ['dot', MINIMUM_COLOR, 'local minimum of the optimum (a ring: one of Delaunay’s, gone at this k)'],
     ]);
     side.append(h('div', { class: 'row' }, objective), controls, status, table, key);
-    const canvas = createFittedCanvas(main, (c, f) => state && drawRegions(c, f, state, ctx.points()), 'Regions of order k, fixed and useful edges, and the optimal triangulation');
-
-    let state: OrderState | null = null;
+    const shown = createShownState<OrderState | null>(main, 'Regions of order k, fixed and useful edges, and the optimal triangulation', (c, f, s) => drawRegions(c, f, s, ctx.points()), fill, null);
     const solver = latestSolve(ctx.solver);
     /** Value per order for the current terrain and settings (the table; cleared on any change). */
     const values = new Map<number, OrderValue>();
@@ -58,20 +56,17 @@ export const orderView = teachView({
       const id = objective.value as ObjectiveId;
       const { method, epsilon, maxEdge } = ctx.settings();
       const solving = startSolve(order, id);
-      state = solving;
-      canvas.fit(ctx.points());
-      render();
+      shown.canvas.fit(ctx.points());
+      shown.set(solving);
       solver.solve({ points: ctx.points(), objective: id, method, epsilon, order, maxEdge, explain: true }, (o) => {
-        state = withOutcome(solving, o, ctx.terrain());
-        if (state.explanation) values.set(order, valueOf(state.explanation.solution));
-        render();
+        const solved = withOutcome(solving, o, ctx.terrain());
+        if (solved.explanation) values.set(order, valueOf(solved.explanation.solution));
+        shown.set(solved);
       });
     }
 
-    function render(): void {
-      canvas.redraw();
-      const s = state;
-      if (!s) return;
+    /** The pane for the order solved (or being solved), and the values seen so far. */
+    function fill(s: OrderState): void {
       const fmt = (v: number) => formatValue(s.objective, v);
       counter.textContent = `k = ${s.order}`;
       const e = s.explanation;
@@ -111,9 +106,9 @@ export const orderView = teachView({
       follow: () => (objective.value = ctx.settings().objective),
       refresh,
       changed: () => values.clear(),
-      shown: () => canvas.redraw(),
-      hidden: () => player.stop(),
-      hooks: () => orderHooks(state, caption.textContent),
+      canvas: shown.canvas,
+      player,
+      hooks: () => orderHooks(shown.state, caption.textContent),
     });
     return view;
   },

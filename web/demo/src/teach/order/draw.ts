@@ -4,7 +4,7 @@
 import { hasChoice, triangulationsMark } from '../../app/regionCount.ts';
 import { FLIPPED_COLOR } from '../../views/palette.ts';
 import { withAlpha } from '../../views/plan/planRenderer.ts';
-import type { FittedCanvas } from '../canvas.ts';
+import { centredLabels, screenPoints, type FittedCanvas } from '../canvas.ts';
 import { COMPONENT_COLORS } from '../common.ts';
 import { pitsGone, splitByDelaunay, type OrderState } from './model.ts';
 
@@ -14,7 +14,7 @@ export const MINIMUM_COLOR = '#c62828';
 export function drawRegions(c: CanvasRenderingContext2D, f: FittedCanvas, s: OrderState, p: Float64Array): void {
   const r = s.explanation?.regions;
   if (!r) return;
-  const X = (v: number) => f.sx(p[3 * v]!), Y = (v: number) => f.sy(p[3 * v + 1]!);
+  const { X, Y } = screenPoints(f, p);
   // Regions with a choice, one colour each; the rest pale.
   const paths = new Map<number, Path2D>();
   const single = new Path2D();
@@ -62,9 +62,7 @@ export function drawRegions(c: CanvasRenderingContext2D, f: FittedCanvas, s: Ord
       for (let j = 0; j < 3; j++) (acc[0] += X(r.triangles[3 * t + j]!) / 3), (acc[1] += Y(r.triangles[3 * t + j]!) / 3);
       acc[2]++;
     }
-    c.font = '600 11px system-ui, sans-serif';
-    c.textAlign = 'center';
-    c.textBaseline = 'middle';
+    centredLabels(c, 600, 11);
     for (const [g, [x, y, n]] of sum) {
       const label = triangulationsMark(r.triangulations[g]!, r.complete[g] === 1);
       c.lineWidth = 3;

@@ -5,9 +5,8 @@ import { jitteredGridPoints } from '../../terrains/jitteredGrid.ts';
 import { h } from '../../ui/dom.ts';
 import { formatValue, OBJECTIVE_HELP } from '../../ui/objectiveHelp.ts';
 import { CRITICAL_COLOR, FLIPPED_COLOR, QUAD_COLOR } from '../../views/palette.ts';
-import { createFittedCanvas } from '../canvas.ts';
+import { createShownState } from '../canvas.ts';
 import { button, COMPONENT_COLORS, createPane, legend, objectiveSelect, paperLink, stepControls } from '../common.ts';
-import { StepPlayer } from '../stepPlayer.ts';
 import { pageView, teachView } from '../view.ts';
 import { BLOCK_COLOR, drawLine, drawSearch } from './draw.ts';
 import { captionText, counterText, explainSearch, isPairObjective, lastPosition, PAIR_OBJECTIVES, quadPairs, satHooks, testAt, type PairObjective, type SatState } from './model.ts';
@@ -39,9 +38,10 @@ export const satView = teachView({
     line.setAttribute('aria-label', 'Candidate values and tested thresholds');
     const status = h('p', { class: 'teach-status', id: 'sat-status', 'aria-live': 'polite' });
     const list = h('ol', { class: 'sat-steps', id: 'sat-steps' });
-    const counter = h('span', { class: 'teach-counter', id: 'sat-counter' });
-    const player = new StepPlayer(() => lastPosition(state.search), () => render(), 1300);
-    const controls = stepControls('sat', player, counter, {
+    const { player, counter, controls } = stepControls('sat', {
+      last: () => lastPosition(shown.state.search),
+      step: () => shown.render(),
+      intervalMs: 1300,
       first: ['Start', 'Back to the start'],
       prev: ['◀ Prev', 'Previous step'],
       next: ['Next ▶', 'Next step'],
@@ -58,9 +58,7 @@ export const satView = teachView({
       ['line', '#1f77b4', 'number line: the interval still searched (blue), thresholds answered yes (green) and no (red)'],
     ]);
     side.append(h('div', { class: 'row' }, objective, small), line, controls, status, list, key);
-    const canvas = createFittedCanvas(main, (c, f) => state.search && drawSearch(c, f, state.search, player.pos), '2-SAT step: the terrain, forced quads, pairs over the threshold and the implication graph');
-
-    let state: SatState = { search: null, error: null };
+    const shown = createShownState<SatState>(main, '2-SAT step: the terrain, forced quads, pairs over the threshold and the implication graph', (c, f, s) => s.search && drawSearch(c, f, s.search, player.pos), fill, { search: null, error: null });
 
     /** The sidebar's objective, when it is one this view shows. */
     function follow(): void {
@@ -70,14 +68,14 @@ export const satView = teachView({
 
     function refresh(): void {
       player.stop();
-      state = explainSearch(ctx.terrain(), objective.value as PairObjective);
-      if (state.search) canvas.fit(state.search.structure.points);
+      const state = explainSearch(ctx.terrain(), objective.value as PairObjective);
+      if (state.search) shown.canvas.fit(state.search.structure.points);
       player.pos = 0;
-      render();
+      shown.set(state);
     }
 
-    function render(): void {
-      canvas.redraw();
+    /** The pane for the current step of the search, or why there is none. */
+    function fill(state: SatState): void {
       if (!state.search) {
         status.textContent = state.error ? `Cannot show the search: ${state.error}` : '';
         list.replaceChildren();
@@ -152,9 +150,9 @@ export const satView = teachView({
       root,
       follow,
       refresh,
-      shown: () => canvas.redraw(),
-      hidden: () => player.stop(),
-      hooks: () => satHooks(state, objective.value, player.pos),
+      canvas: shown.canvas,
+      player,
+      hooks: () => satHooks(shown.state, objective.value, player.pos),
     });
     return view;
   },
