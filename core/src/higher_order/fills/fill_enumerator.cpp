@@ -64,6 +64,7 @@ struct Enumerator {
   uint64_t budget;
   const std::function<void(const std::vector<Tri>&)>& visit;
   const Progress& progress;
+  const AcceptTriangle& accept;
   std::unordered_set<uint64_t> open;  // directed edges with the uncovered side on their left
   std::vector<std::pair<uint32_t, uint32_t>> edges;
   std::vector<Tri> tris;
@@ -73,6 +74,44 @@ struct Enumerator {
   const std::vector<uint32_t>* options(uint64_t e) const {
     const auto it = cand.find(e);
     return it == cand.end() ? nullptr : &it->second;
+  }
+
+  // Whether triangle u v w may cover the open edge u -> v: each of its other
+  // sides either closes an open edge in the same direction (the region beyond
+  // is this triangle) or opens its reverse, which must cross nothing placed.
+  bool fits(uint32_t u, uint32_t v, uint32_t w, bool close[2]) const {
+    const uint32_t side[2][2] = {{v, w}, {w, u}};
+    for (int s = 0; s < 2; ++s) {
+      const uint32_t a = side[s][0], b = side[s][1];
+      close[s] = open.count(edge_key(a, b)) > 0;
+      if (close[s]) continue;
+      if (open.count(edge_key(b, a))) return false;  // its far side is covered already
+      for (auto [c, d] : edges)
+        if ((c == a && d == b) || (c == b && d == a) || segments_cross(dt, a, b, c, d)) return false;
+    }
+    return true;
+  }
+
+  void place(uint64_t e, uint32_t w, const bool close[2]) {
+    const uint32_t u = static_cast<uint32_t>(e >> 32), v = static_cast<uint32_t>(e);
+    const uint32_t side[2][2] = {{v, w}, {w, u}};
+    open.erase(e);
+    size_t added = 0;
+    for (int s = 0; s < 2; ++s) {
+      const uint32_t a = side[s][0], b = side[s][1];
+      if (close[s]) open.erase(edge_key(a, b));
+      else open.insert(edge_key(b, a)), edges.push_back({a, b}), ++added;
+    }
+    tris.push_back({u, v, w});
+    run();
+    tris.pop_back();
+    for (int s = 1; s >= 0; --s) {
+      const uint32_t a = side[s][0], b = side[s][1];
+      if (close[s]) open.insert(edge_key(a, b));
+      else open.erase(edge_key(b, a));
+    }
+    edges.resize(edges.size() - added);
+    open.insert(e);
   }
 
   void run() {
@@ -86,6 +125,7 @@ struct Enumerator {
       visit(tris);
       return;
     }
+    if (accept) return run_pruned();
     // The open edge with the fewest candidate triangles (ties: smallest key).
     uint64_t best = 0;
     size_t fewest = SIZE_MAX;
@@ -98,38 +138,36 @@ struct Enumerator {
     const uint32_t u = static_cast<uint32_t>(best >> 32), v = static_cast<uint32_t>(best);
     for (uint32_t w : *options(best)) {
       if (!complete) return;
-      // The triangle's other sides v -> w and w -> u: each closes the open edge in
-      // the same direction (that region is this triangle), or leaves the region
-      // beyond it uncovered: the reversed edge opens, if it crosses nothing placed.
-      bool ok = true;
       bool close[2];
-      const uint32_t side[2][2] = {{v, w}, {w, u}};
-      for (int s = 0; s < 2 && ok; ++s) {
-        const uint32_t a = side[s][0], b = side[s][1];
-        close[s] = open.count(edge_key(a, b)) > 0;
-        if (close[s]) continue;
-        if (open.count(edge_key(b, a))) { ok = false; break; }  // its far side is covered already
-        for (auto [c, d] : edges)
-          if ((c == a && d == b) || (c == b && d == a) || segments_cross(dt, a, b, c, d)) { ok = false; break; }
-      }
-      if (!ok) continue;
-      open.erase(best);
-      size_t added = 0;
-      for (int s = 0; s < 2; ++s) {
-        const uint32_t a = side[s][0], b = side[s][1];
-        if (close[s]) open.erase(edge_key(a, b));
-        else open.insert(edge_key(b, a)), edges.push_back({a, b}), ++added;
-      }
-      tris.push_back({u, v, w});
-      run();
-      tris.pop_back();
-      for (int s = 1; s >= 0; --s) {
-        const uint32_t a = side[s][0], b = side[s][1];
-        if (close[s]) open.insert(edge_key(a, b));
-        else open.erase(edge_key(b, a));
-      }
-      edges.resize(edges.size() - added);
-      open.insert(best);
+      if (fits(u, v, w, close)) place(best, w, close);
+    }
+  }
+
+  // With a pruning test: the open edge with the fewest triangles that fit and
+  // are accepted (ties: smallest key), so that a dead end anywhere on the
+  // frontier ends the branch at once.
+  void run_pruned() {
+    uint64_t best = 0;
+    std::vector<std::pair<uint32_t, uint8_t>> fewest, here;  // (apex, closes) per fitting triangle
+    bool first = true;
+    for (uint64_t e : open) {
+      here.clear();
+      const uint32_t u = static_cast<uint32_t>(e >> 32), v = static_cast<uint32_t>(e);
+      if (const auto* o = options(e))
+        for (uint32_t w : *o) {
+          if (!first && here.size() > fewest.size()) break;  // (then it is not chosen)
+          bool close[2];
+          if (fits(u, v, w, close) && accept(tris, Tri{u, v, w}))
+            here.push_back({w, static_cast<uint8_t>(close[0] | close[1] << 1)});
+        }
+      if (first || here.size() < fewest.size() || (here.size() == fewest.size() && e < best))
+        fewest.swap(here), best = e, first = false;
+      if (fewest.empty()) return;  // a dead end: nothing can cover this edge
+    }
+    for (const auto& [w, closes] : fewest) {
+      if (!complete) return;
+      const bool close[2] = {(closes & 1) != 0, (closes & 2) != 0};
+      place(best, w, close);
     }
   }
 };
@@ -138,8 +176,8 @@ struct Enumerator {
 
 bool enumerate_fills(const Mesh& dt, const Candidates& candidates, const std::vector<std::pair<uint32_t, uint32_t>>& boundary,
                      uint64_t max_nodes, const std::function<void(const std::vector<Tri>&)>& visit,
-                     const Progress& progress, uint64_t* nodes_used) {
-  Enumerator en{dt, candidates, max_nodes, visit, progress, {}, {}, {}};
+                     const Progress& progress, uint64_t* nodes_used, const AcceptTriangle& accept) {
+  Enumerator en{dt, candidates, max_nodes, visit, progress, accept, {}, {}, {}};
   for (auto [a, b] : boundary) en.open.insert(edge_key(a, b));
   try {
     en.run();

@@ -36,9 +36,13 @@ bool segments_cross(const Mesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t 
 // (directed edges with the inside on their left) by candidate triangles. Returns
 // false if it stopped because `max_nodes` search nodes were used. progress (if
 // given) is called every few thousand nodes; returning false throws Cancelled.
+// accept (when given): whether a triangle may join the ones placed so far (a
+// branch and bound prunes there; the search then visits only fills whose every
+// triangle was accepted).
+using AcceptTriangle = std::function<bool(const std::vector<Tri>& placed, const Tri& t)>;
 bool enumerate_fills(const Mesh& delaunay, const Candidates& candidates,
                      const std::vector<std::pair<uint32_t, uint32_t>>& boundary, uint64_t max_nodes,
                      const std::function<void(const std::vector<Tri>&)>& visit, const Progress& progress = {},
-                     uint64_t* nodes_used = nullptr);
+                     uint64_t* nodes_used = nullptr, const AcceptTriangle& accept = {});
 
 }  // namespace hodt

@@ -4,6 +4,7 @@
 
 #include "hodt/error.hpp"
 #include "higher_order/phases/phases.hpp"
+#include "higher_order/search/branch_and_bound.hpp"
 
 namespace hodt {
 
@@ -27,6 +28,12 @@ const std::vector<KOrderPhase>& k_order_phases() {
       {"finding the regions", always, find_regions},
       // (Order 1 stays on the region engine: solve() takes the first order paths itself.)
       {"a diagonal per quad", [](const KOrderRun& r) { return r.k >= 2; }, solve_as_quads},
+      {"branch and bound over every fill",
+       [](const KOrderRun& r) {
+         return r.bounded && r.k >= 2 && r.dt.num_vertices() <= r.budgets.branch_and_bound_points &&
+                branch_and_bound_applies(r.o, r.dt);
+       },
+       branch_and_bound_small},
       // (One order's regions in memory at a time.)
       {"the lower order, first", [](const KOrderRun& r) { return r.k >= r.budgets.early_rung_order; }, solve_lower_order},
       {"listing the regions", always, build_engine},

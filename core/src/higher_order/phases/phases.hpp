@@ -15,6 +15,10 @@ void meet_global_bound(KOrderRun& run);
 // order solvers take as it is; their answer is final.
 void solve_as_quads(KOrderRun& run);
 
+// Min-max on small inputs: branch and bound over every k-OD triangulation of
+// the instance, within a node budget (branch_and_bound.hpp).
+void branch_and_bound_small(KOrderRun& run);
+
 // --- The regions and their engine (regions_phases.cpp) ---
 // The useful edges of every order up to k, and the regions the fixed ones cut.
 void find_regions(KOrderRun& run);

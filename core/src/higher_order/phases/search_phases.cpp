@@ -1,5 +1,6 @@
 #include "higher_order/phases/phases.hpp"
 #include "higher_order/regions/region_model.hpp"
+#include "higher_order/search/branch_and_bound.hpp"
 #include "higher_order/search/flip_search.hpp"
 #include "higher_order/search/k_order_baker.hpp"
 
@@ -52,6 +53,21 @@ void flip(KOrderRun& run) {
 void descend_fill_graphs(KOrderRun& run) {
   read_fill_graphs(run, run.answer, run.searching, 0,
                    run.k >= run.budgets.early_rung_order ? run.budgets.rung_dual_sweeps : run.budgets.dual_sweeps);
+}
+
+// From the first order optimum: its value is the first cut, and each better
+// fill found cuts deeper.
+void branch_and_bound_small(KOrderRun& run) {
+  if (!run.structure) run.structure.emplace(run.dt, run.k, std::move(run.useful), run.finding);
+  const Mesh& start = run.shared.first_order.get();
+  const double known = run.shared.first_order.value;
+  const BranchAndBound b = branch_and_bound(run.dt, run.o, run.structure->candidates, known,
+                                            run.budgets.branch_and_bound_nodes, run.exactly);
+  if (b.found) run.answer.offer(*b.found, b.value, "branch and bound over every fill");
+  else run.answer.offer(start, known, "the first order optimum");
+  if (b.complete)
+    run.answer.prove("branch and bound over every k-OD triangulation (" + std::to_string(b.nodes) +
+                     " search nodes) found none better");
 }
 
 }  // namespace hodt
