@@ -1,5 +1,5 @@
 // Native side of `npm run bench`: times the same steps the wasm side times through
-// the JS API, on the same points (a binary file of doubles x, y, z, ... written by
+// the JS API (terrain, drainage, solves), on the same points (a binary file of doubles x, y, z, ... written by
 // scripts/bench.mjs). Prints one JSON object of median milliseconds.
 #include <algorithm>
 #include <chrono>
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "hodt/delaunay.hpp"
+#include "hodt/drainage.hpp"
 #include "hodt/error.hpp"
 #include "hodt/format.hpp"
 #include "hodt/solve.hpp"
@@ -53,8 +54,18 @@ int main(int argc, char** argv) {
     FirstOrder fo = first_order(terrain.structure().base);
     structure.push_back(ms_since(t0));
   }
+  // "drainage": the network of the Delaunay triangulation, in input indices (what
+  // the JS API's terrain.drainage() computes before copying it out).
+  std::vector<double> drain;
+  size_t pits = 0;
+  for (int r = 0; r < reps; ++r) {
+    const auto t0 = Clock::now();
+    pits = drainage(terrain, terrain.structure().base).pits.size();
+    drain.push_back(ms_since(t0));
+  }
   std::string out = "{\"terrain\": " + format_number(median(triangulate)) +
-                    ", \"structure\": " + format_number(median(structure)) + ", \"quads\": " +
+                    ", \"structure\": " + format_number(median(structure)) + ", \"drainage\": " +
+                    format_number(median(drain)) + ", \"pits\": " + std::to_string(pits) + ", \"quads\": " +
                     std::to_string(terrain.structure().num_quads()) + ", \"objectives\": {";
   const std::string flag = argc > 3 ? argv[3] : "";
   const bool approx = flag == "--approx", automatic = flag == "--auto";

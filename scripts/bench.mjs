@@ -119,13 +119,15 @@ for (const kind of Object.keys(KINDS).filter((k) => !onlyKinds || onlyKinds.incl
     const nat = JSON.parse(spawnSync(`${root}/build/native/hodt_bench`, [file, String(reps), '--auto', ...objectives], { encoding: 'utf8', maxBuffer: 1 << 24 }).stdout);
     // hodt wasm: a fresh module per size so that its heap size is this run's peak.
     const module = await warmModule(objectives);
-    const terrainMs = [], solveMs = Object.fromEntries(objectives.map((o) => [o, []]));
+    const terrainMs = [], drainageMs = [], solveMs = Object.fromEntries(objectives.map((o) => [o, []]));
     let quads = 0, pipelineHeap = 0;
     const approximated = {};  // objective -> its answer when auto did not run exact
     for (let r = 0; r < reps; ++r) {
       const [ms, t] = time(() => module.fromPoints(xyz, false));
       terrainMs.push(ms);
       quads = t.numQuads();
+      // The drainage network of the Delaunay triangulation, copied out as typed arrays.
+      drainageMs.push(time(() => t.drainage(null))[0]);
       // The pipeline objective first, so that the heap's peak is the pipeline's.
       const order = [PIPELINE_OBJECTIVE, ...objectives.filter((o) => o !== PIPELINE_OBJECTIVE)];
       for (const o of order) {
@@ -138,12 +140,13 @@ for (const kind of Object.keys(KINDS).filter((k) => !onlyKinds || onlyKinds.incl
       }
       t.delete();
     }
-    const wasm = { terrain: median(terrainMs), objectives: Object.fromEntries(objectives.map((o) => [o, median(solveMs[o])])) };
+    const wasm = { terrain: median(terrainMs), drainage: median(drainageMs), objectives: Object.fromEntries(objectives.map((o) => [o, median(solveMs[o])])) };
     const heap = pipelineHeap;  // peak wasm memory after terrain + pipeline objective
     const pipeWasm = wasm.terrain + wasm.objectives[PIPELINE_OBJECTIVE];
     const pipeNative = nat.terrain + nat.objectives[PIPELINE_OBJECTIVE];
     const run = { kind, n: xyz.length / 3, quads, delaunatorMs: dl, native: nat, wasm, approximated, pipelineWasmMs: pipeWasm, pipelineNativeMs: pipeNative,
-      wasmOverDelaunator: pipeWasm / dl, wasmOverNative: pipeWasm / pipeNative, heapBytesPerPoint: heap / (xyz.length / 3) };
+      wasmOverDelaunator: pipeWasm / dl, wasmOverNative: pipeWasm / pipeNative, heapBytesPerPoint: heap / (xyz.length / 3),
+      drainage: { nativeMs: nat.drainage, wasmMs: wasm.drainage, wasmOverNative: wasm.drainage / nat.drainage, pits: nat.pits } };
     summary.runs.push(run);
     log(`\n${kind} n=${run.n} (${quads} quads): delaunator ${dl.toFixed(1)} ms | hodt terrain native ${nat.terrain.toFixed(1)} ms, wasm ${wasm.terrain.toFixed(1)} ms`);
     log(`  pipeline (terrain + ${PIPELINE_OBJECTIVE}): native ${pipeNative.toFixed(1)} ms, wasm ${pipeWasm.toFixed(1)} ms; wasm/delaunator ${run.wasmOverDelaunator.toFixed(2)}, wasm/native ${run.wasmOverNative.toFixed(2)}; wasm heap ${run.heapBytesPerPoint.toFixed(0)} B/point`);
@@ -152,6 +155,10 @@ for (const kind of Object.keys(KINDS).filter((k) => !onlyKinds || onlyKinds.incl
     const perPoint = (side, o) => (Number.isFinite(side.objectives[o]) ? (side.terrain + side.objectives[o]) / nPoints : NaN);
     if (kind === 'uniform') uniformPerPoint[n] = { native: nat, wasm, n: nPoints };
     const base = uniformPerPoint[n];
+    // Drainage beside the solves: its time, wasm over native, and over the terrain's construction.
+    if (kind === 'uniform' && Math.abs(run.n - 1e6) <= 1e4) summary.drainage_1M = run.drainage;
+    log(`  ${`drainage (Delaunay, ${nat.pits} pits)`.padEnd(36)} native ${`${nat.drainage.toFixed(1)} ms`.padStart(12)}   wasm ${`${wasm.drainage.toFixed(1)} ms`.padStart(12)}` +
+      `   wasm/native ${run.drainage.wasmOverNative.toFixed(2)}; / terrain: native ${(nat.drainage / nat.terrain).toFixed(3)}, wasm ${(wasm.drainage / wasm.terrain).toFixed(3)}`);
     run.perPointOverUniform = {};
     for (const o of objectives) {
       const ratio = REAL.has(kind) && base

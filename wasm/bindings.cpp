@@ -7,6 +7,7 @@
 #include "hodt/brute_force.hpp"
 #include "hodt/cli.hpp"
 #include "hodt/domain.hpp"
+#include "hodt/drainage.hpp"
 #include "hodt/error.hpp"
 #include "hodt/explain.hpp"
 #include "hodt/higher_order.hpp"
@@ -125,6 +126,14 @@ class TerrainHandle {
   val measuresOfTriangles(val triangles) const {
     return guarded([&] {
       return measures_value(measure(t_.mesh_of_input_triangles(emscripten::convertJSArrayToNumberVector<uint32_t>(triangles))));
+    });
+  }
+  // The drainage network (drainage.hpp) of the base triangulation (triangles null)
+  // or of any triangulation of the points (input indices); per input point.
+  Drainage drainage(val triangles) const {
+    return guarded([&] {
+      if (triangles.isNull() || triangles.isUndefined()) return hodt::drainage(t_, t_.structure().base);
+      return hodt::drainage(t_, t_.mesh_of_input_triangles(emscripten::convertJSArrayToNumberVector<uint32_t>(triangles)));
     });
   }
   val delaunayValues() const {
@@ -438,12 +447,19 @@ EMSCRIPTEN_BINDINGS(hodt) {
       .function("delaunayValues", &TerrainHandle::delaunayValues)
       .function("evaluateTriangles", &TerrainHandle::evaluateTriangles)
       .function("measuresOfTriangles", &TerrainHandle::measuresOfTriangles)
+      .function("drainage", &TerrainHandle::drainage)
       .function("solve", &TerrainHandle::solve)
       .function("explain", &TerrainHandle::explain)
       .function("enumerateAll", &TerrainHandle::enumerateAll)
       .function("statsJson", &TerrainHandle::statsJson)
       .function("usefulEdges", &TerrainHandle::usefulEdges)
       .function("usefulTriangles", &TerrainHandle::usefulTriangles);
+  emscripten::value_object<Drainage>("Drainage")
+      .field("downstream", &Drainage::downstream)
+      .field("basin", &Drainage::basin)
+      .field("accumulation", &Drainage::accumulation)
+      .field("pits", &Drainage::pits)
+      .field("outlets", &Drainage::outlets);
   emscripten::value_object<ThresholdStep>("ThresholdStep")
       .field("threshold", &ThresholdStep::threshold)
       .field("satisfiable", &ThresholdStep::satisfiable)

@@ -35,8 +35,11 @@ describe('hodt stats', () => {
     const r = hodt(['stats', fixture('uniform-50.csv')]);
     expect(r.code).toBe(0);
     const j = JSON.parse(r.out);
-    expect(Object.keys(j)).toEqual(['points', 'triangles', 'edges', 'flippable', 'hullVertices', 'delaunay']);
+    expect(Object.keys(j)).toEqual(['points', 'triangles', 'edges', 'flippable', 'hullVertices', 'delaunay', 'drainage']);
     expect(Object.keys(j.delaunay)).toEqual(IDS);
+    // Every local minimum is a pit; the lowest point drains nowhere.
+    expect(j.drainage.pits).toBeGreaterThanOrEqual(j.delaunay['min-local-minima']);
+    expect(j.drainage.pits + j.drainage.outlets).toBeGreaterThanOrEqual(1);
     expect(j.points).toBe(50);
     // Euler's formula for a triangulated convex polygon.
     expect(j.triangles).toBe(2 * j.points - j.hullVertices - 2);
@@ -76,7 +79,7 @@ describe('hodt solve', () => {
     const r = hodt(['solve', fixture('uniform-12.csv'), '--objective', 'max-convex-edges', '--method', 'brute-force', '--triangles']);
     expect(r.code).toBe(0);
     const j = JSON.parse(r.out);
-    expect(Object.keys(j)).toEqual(['objective', 'sense', 'method', 'value', 'delaunayValue', 'optimal', 'bound', 'flipped', 'timeMs', 'times', 'triangles']);
+    expect(Object.keys(j)).toEqual(['objective', 'sense', 'method', 'value', 'delaunayValue', 'optimal', 'bound', 'flipped', 'timeMs', 'times', 'drainage', 'triangles']);
     expect(j).toMatchObject({ objective: 'max-convex-edges', sense: 'max', method: 'brute-force', optimal: true, bound: null });
     expect(j.value).toBeGreaterThanOrEqual(j.delaunayValue);
     expect(j.triangles).toHaveLength(JSON.parse(hodt(['stats', fixture('uniform-12.csv')]).out).triangles);

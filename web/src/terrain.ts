@@ -44,6 +44,30 @@ export interface Measures {
   inside: Uint8Array;
 }
 
+/**
+ * The drainage network of one triangulation (docs/api.md, "Drainage"): water at a
+ * point runs down the edge to its steepest strictly lower neighbour (slope = height
+ * drop over plane length, ties to the smaller index, decided exactly); a point with
+ * no lower neighbour drains nowhere: a pit if it is interior, an outlet on the
+ * convex hull (or, with maxEdge, touching a triangle outside the domain). Point
+ * indices as everywhere; a duplicate dropped by `dedupe: 'first'` is no vertex:
+ * downstream and basin -1, accumulation 0.
+ */
+export interface Drainage {
+  /** Per point: the neighbour it drains to, or -1 (a pit or an outlet). */
+  downstream: Int32Array;
+  /** Per point: the pit or outlet its path down the network ends at. */
+  basin: Int32Array;
+  /** Per point: how many points drain through it, itself included (a pit's or
+   * an outlet's is the size of its basin). */
+  accumulation: Uint32Array;
+  /** The interior points that drain nowhere, ascending: local minima, and points
+   * of a flat (a neighbour of the same height, none lower). */
+  pits: Uint32Array;
+  /** The points on the hull (or the domain's edge) that drain nowhere, ascending. */
+  outlets: Uint32Array;
+}
+
 /** One threshold of the bottleneck search (paper, Section 2.1). */
 export interface ThresholdStep {
   threshold: number;
@@ -128,6 +152,9 @@ export interface TerrainStats {
   hullVertices: number;
   /** Values of the 13 objectives for the Delaunay triangulation. */
   delaunay: ObjectiveValues;
+  /** Pits and outlets of the drainage network of the terrain's own triangulation
+   * (see Terrain.drainage). */
+  drainage: { pits: number; outlets: number };
   /** With stats(order): the order k and the counts of useful k-OD edges and triangles. */
   order?: number;
   usefulEdges?: number;
@@ -330,11 +357,27 @@ export class Terrain implements Disposable {
   /** Measures of any triangulation of these points given as triangles (point
    * indices), such as a higher order result; edgeShape follows their halfedges. */
   measuresOfTriangles(triangles: ArrayLike<number>): Measures {
-    return guard(() => this.#byPoint(this.#handle.measuresOfTriangles(Uint32Array.from(triangles))));
+    const raw = this.#handle;
+    const t = triangleIndices(triangles, raw.numInputPoints());
+    return guard(() => this.#byPoint(raw.measuresOfTriangles(t)));
   }
   /** Values of all 13 objectives for any triangulation of these points. */
   evaluateTriangles(triangles: ArrayLike<number>): ObjectiveValues {
-    return guard(() => toValues(this.#handle.evaluateTriangles(Uint32Array.from(triangles))));
+    const raw = this.#handle;
+    const t = triangleIndices(triangles, raw.numInputPoints());
+    return guard(() => toValues(raw.evaluateTriangles(t)));
+  }
+  /**
+   * The drainage network of a triangulation of these points: by default the
+   * terrain's own (`delaunay()`), else the one given as triangles (point indices,
+   * three per triangle, such as `solution.triangles` at any order). Throws
+   * InputError naming what is wrong when the triangles are not a triangulation
+   * of the points. Linear in the number of points.
+   */
+  drainage(triangles?: ArrayLike<number>): Drainage {
+    const raw = this.#handle;
+    const t = triangles === undefined ? null : triangleIndices(triangles, raw.numInputPoints());
+    return guard(() => raw.drainage(t));
   }
   // Vertex arrays of the core (internal vertex order) by point index.
   #byPoint(m: RawMeasures): Measures {
@@ -476,6 +519,23 @@ function checkCoordinates(point: number, x: unknown, y: unknown, z: unknown): vo
     const v = xyz[axis];
     if (typeof v !== 'number') throw new InputError(`point ${point}: ${axis} is ${describeValue(v)}, expected a finite number`);
   }
+}
+
+// Triangles as the core takes them: a Uint32Array as it is (the core names an
+// index that is not a vertex), anything else checked here, since the conversion
+// would wrap -1 and truncate 2.5 without a word.
+function triangleIndices(triangles: ArrayLike<number>, count: number): Uint32Array {
+  if (triangles instanceof Uint32Array) return triangles;
+  if (triangles === null || typeof triangles !== 'object' || typeof triangles.length !== 'number') {
+    throw new InputError(`triangles is ${describeValue(triangles)}, expected point indices, three per triangle`);
+  }
+  for (let k = 0; k < triangles.length; k++) {
+    const v: unknown = triangles[k];
+    if (typeof v !== 'number' || !Number.isInteger(v) || v < 0 || v >= count) {
+      throw new InputError(`triangles[${k}] is ${describeValue(v)}, expected a point index from 0 to ${count - 1}`);
+    }
+  }
+  return Uint32Array.from(triangles);
 }
 
 /** out[index[v]] = values[v]: per-vertex values into point order. */

@@ -19,6 +19,7 @@ constexpr double kTiny = 0x1p-900;
 int orient2d_exact(const double* a, const double* b, const double* c);
 int in_circle_exact(const double* a, const double* b, const double* c, const double* d);
 int compare_length_exact(const double* a, const double* b, double length);
+int compare_descents_exact(const double* v, const double* a, const double* b);
 bool in_circle_perturbed(const double* a, const double* b, const double* c, const double* d);
 }  // namespace detail
 
@@ -73,6 +74,27 @@ inline int compare_length(const double* a, const double* b, double length) {
   if ((diff > 8 * detail::kEps * sum || -diff > 8 * detail::kEps * sum) && sum > detail::kTiny && sum < INFINITY)
     return diff > 0 ? 1 : -1;
   return detail::compare_length_exact(a, b, length);
+}
+
+// Which of two descents from v is steeper: the sign of (z_v - z_a) / |va| minus
+// (z_v - z_b) / |vb| (plane lengths), exact: -1, 0, +1. a and b must be strictly
+// lower than v and at other (x, y): both slopes are then positive, so their order
+// is that of their squares, and the sign is that of
+//   D = dz_a^2 |vb|^2 - dz_b^2 |va|^2   (dz = z_v - z, |.|^2 = dx^2 + dy^2),
+// a polynomial in the coordinates, with no root or division. (Inline: drainage
+// asks it of every edge, and the filter decides almost all.)
+inline int compare_descents(const double* v, const double* a, const double* b) {
+  const double dza = v[2] - a[2], dzb = v[2] - b[2];
+  const double xa = v[0] - a[0], ya = v[1] - a[1], xb = v[0] - b[0], yb = v[1] - b[1];
+  const double pa = dza * dza * (xb * xb + yb * yb), pb = dzb * dzb * (xa * xa + ya * ya);
+  // With u = 2^-53 each rounded difference is within u, a square within 3u, a
+  // length^2 within 4u, so each product is within 8u (plus O(u^2)) of its exact
+  // value and D within u |pa - pb| + 8.1u (pa + pb) < 12u sum: the sign of diff
+  // is exact when |diff| exceeds that.
+  const double diff = pa - pb, sum = pa + pb;
+  if ((diff > 12 * detail::kEps * sum || -diff > 12 * detail::kEps * sum) && sum > detail::kTiny && sum < INFINITY)
+    return diff > 0 ? 1 : -1;
+  return detail::compare_descents_exact(v, a, b);
 }
 
 // Lexicographic xy order, exact: -1, 0, +1.

@@ -7,7 +7,8 @@
 
 namespace hodt {
 
-// {"points", "triangles", "edges", "flippable", "hullVertices", "delaunay": {id: value}}
+// {"points", "triangles", "edges", "flippable", "hullVertices", "delaunay": {id: value},
+//  "drainage": {"pits", "outlets"}} (of the base triangulation; drainage.hpp)
 // With order k > 1 (or k given): also "usefulEdges" and "usefulTriangles" counts.
 std::string stats_json(const Terrain& terrain, uint32_t order = 0);
 // How long the CLI's steps took, in milliseconds.
@@ -18,7 +19,8 @@ struct PhaseTimes {
 };
 
 // {"objective", "sense", "method", "value", "delaunayValue", "optimal", "bound",
-//  "flipped", "timeMs"[, "times": {"readMs", "buildMs", "solveMs"}]
+//  "flipped", "timeMs"[, "times": {"readMs", "buildMs", "solveMs"}][, "order"],
+//  "drainage": {"pits", "outlets"} (of the solution's triangulation)
 //  [, "critical": {"first", "second", "value"}]
 //  [, "trace": [{"threshold", "satisfiable", "clauses"}, ...]][, "triangles"]}
 std::string solution_json(const Terrain& terrain, const Solution& s, bool with_triangles, bool with_trace = false,

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "hodt/domain.hpp"
+#include "hodt/drainage.hpp"
 #include "hodt/error.hpp"
 #include "hodt/format.hpp"
 #include "hodt/read_points.hpp"
@@ -17,6 +18,7 @@
 #include "cli/cli_help.hpp"
 #include "cli/cli_progress.hpp"
 #include "higher_order/k_order.hpp"
+#include "io/drainage_geojson.hpp"
 #include "io/file_errors.hpp"
 #include "io/quote_input.hpp"
 #include "terrain/crs.hpp"
@@ -132,6 +134,7 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     std::string file, objective_id;
     bool have_file = false, triangles = false, quiet = false, force_progress = false;
     std::vector<Output> outputs;
+    std::optional<std::string> drainage_path;  // --drainage FILE.geojson
     SolveOptions options;
     Dedupe dedupe = Dedupe::Error;
     bool have_order = false;
@@ -174,6 +177,12 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
           throw Usage("--output " + quoted(path) + ": this build of hodt writes .json only; for ." + format_id(*format) +
                       " use the npm CLI: npx hodt");
         outputs.push_back({path, *format});
+      } else if (a == "--drainage") {
+        const std::string& path = value();
+        if (output_format_of(path) != OutputFormat::GeoJson)
+          throw Usage("--drainage " + quoted(path) + ": the drainage network is GeoJSON; name the file .geojson");
+        if (!host.write) throw Usage("--drainage " + quoted(path) + ": this front end writes no files");
+        drainage_path = path;
       } else if (a == "--max-edge") {
         const std::string& v = value();
         max_edge = v == "none" ? INFINITY : parse_number(a, v);
@@ -295,6 +304,12 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
         ok = host.write_mesh(o.path, o.format, *tin, error);
       }
       if (!ok) throw InputError("cannot write " + escape_input(o.path) + ": " + file_error_message(error, FileAccess::Write));
+    }
+    if (drainage_path) {
+      progress.step(Phase::Writing, *drainage_path);
+      const Drainage d = drainage(terrain, solved ? *solved : terrain.delaunay_mesh());
+      if (!host.write(*drainage_path, drainage_geojson(d, parsed.xyz, crs.value_or("")), error))
+        throw InputError("cannot write " + escape_input(*drainage_path) + ": " + file_error_message(error, FileAccess::Write));
     }
     r.out = printed + "\n";
   } catch (const InputError& e) {

@@ -121,6 +121,23 @@ int detail::compare_length_exact(const double* a, const double* b, double length
   return sign(CGAL::compare(x * x + y * y, l * l));
 }
 
+int detail::compare_descents_exact(const double* v, const double* a, const double* b) {
+  // Grids with heights in fixed steps (integer metres, centimetres) tie often:
+  // scaled to integers, xy below 2^62 gives squared lengths below 2^125, z below
+  // 2^62 squared drops below 2^124, and D in 256 bits.
+  const double* pts[3] = {a, b, v};
+  Scaled xy, z;
+  if (scaled_differences(pts, 3, 0, 2, xy) && scaled_differences(pts, 3, 2, 1, z)) {
+    const auto sq = [](int64_t x) { return static_cast<Int128>(x) * x; };
+    const Int128 la = sq(xy.v[0]) + sq(xy.v[1]), lb = sq(xy.v[2]) + sq(xy.v[3]);
+    return (Int256::product(sq(z.v[0]), lb) + Int256::product(sq(z.v[1]), la).negated()).sign();
+  }
+  using F = CGAL::MP_Float;  // exact sums and products of doubles
+  const F za = F(v[2]) - F(a[2]), zb = F(v[2]) - F(b[2]);
+  const F xa = F(v[0]) - F(a[0]), ya = F(v[1]) - F(a[1]), xb = F(v[0]) - F(b[0]), yb = F(v[1]) - F(b[1]);
+  return sign(CGAL::compare(za * za * (xb * xb + yb * yb), zb * zb * (xa * xa + ya * ya)));
+}
+
 int compare_xy(const double* a, const double* b) {  // comparisons of doubles are exact
   return a[0] < b[0] ? -1 : a[0] > b[0] ? 1 : a[1] < b[1] ? -1 : a[1] > b[1] ? 1 : 0;
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "hodt/domain.hpp"
+#include "hodt/drainage.hpp"
 #include "hodt/format.hpp"
 #include "hodt/higher_order.hpp"
 
@@ -18,6 +19,12 @@ std::string domain_json(const Mesh& m) {
   const std::vector<uint8_t> inside = inside_triangles(m);
   return ", \"maxEdge\": " + json_number(m.coords.max_edge()) +
          ", \"outsideTriangles\": " + std::to_string(std::count(inside.begin(), inside.end(), 0));
+}
+// How many pits and outlets the drainage network of m has (drainage.hpp).
+std::string drainage_json(const Terrain& t, const Mesh& m) {
+  const Drainage d = drainage(t, m);
+  return ", \"drainage\": {\"pits\": " + std::to_string(d.pits.size()) + ", \"outlets\": " +
+         std::to_string(d.outlets.size()) + "}";
 }
 }  // namespace
 
@@ -33,7 +40,7 @@ std::string stats_json(const Terrain& t, uint32_t order) {
   const auto& v = t.delaunay_values();
   for (size_t k = 0; k < kNumObjectives; ++k)
     s += (k ? ", \"" : "\"") + std::string(objectives()[k].id) + "\": " + json_number(v[k]);
-  s += "}" + domain_json(m);
+  s += "}" + domain_json(m) + drainage_json(t, m);
   if (order > 0) {
     const auto edges = useful_edges(t.delaunay_mesh(), order);
     const auto triangles = useful_triangles(t.delaunay_mesh(), order, edges);
@@ -99,7 +106,9 @@ std::string solution_json(const Terrain& t, const Solution& r, bool with_triangl
     s += ", \"times\": {\"readMs\": " + ms_json(times->read_ms) + ", \"buildMs\": " + ms_json(times->build_ms) +
          ", \"solveMs\": " + ms_json(times->solve_ms) + "}";
   if (r.order > 1) s += ", \"order\": " + std::to_string(r.order);
-  if (has_domain(t.structure().base)) s += domain_json(r.mesh ? *r.mesh : triangulate(t.structure(), r.choice));
+  const Mesh triangulated = r.mesh ? Mesh{} : triangulate(t.structure(), r.choice);
+  const Mesh& mesh = r.mesh ? *r.mesh : triangulated;
+  s += domain_json(mesh) + drainage_json(t, mesh);
   if (r.method == "approx") s += std::string(", \"localSearchImproved\": ") + (r.local_search_improved ? "true" : "false");
   if (!r.details.empty()) s += ", \"details\": \"" + json_escape(r.details) + "\"";
   if (r.critical)
@@ -127,8 +136,7 @@ std::string solution_json(const Terrain& t, const Solution& r, bool with_triangl
   }
   s += "}";
   if (!with_triangles) return s;
-  return with_triangles_json(
-      std::move(s), t.to_input(r.mesh ? r.mesh->triangles : triangulate(t.structure(), r.choice).triangles));
+  return with_triangles_json(std::move(s), t.to_input(mesh.triangles));
 }
 
 }  // namespace hodt

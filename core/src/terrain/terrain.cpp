@@ -43,7 +43,8 @@ std::vector<uint32_t> Terrain::to_input(std::vector<uint32_t> indices) const {
 Mesh Terrain::mesh_of_input_triangles(const std::vector<uint32_t>& triangles) const {
   std::vector<int64_t> internal(num_input_, -1);
   for (uint32_t v = 0; v < fo_.base.num_vertices(); ++v) internal[to_input(v)] = v;
-  if (triangles.size() % 3 != 0) throw InputError("triangles: length is not a multiple of 3");
+  if (triangles.size() % 3 != 0)
+    throw InputError("triangles: " + std::to_string(triangles.size()) + " indices is not a multiple of 3");
   Mesh m;
   m.coords = fo_.base.coords;
   m.triangles.reserve(triangles.size());

@@ -16,6 +16,13 @@ export interface RawMeasures {
   degree: Uint32Array;
   inside: Uint8Array;
 }
+export interface RawDrainage {
+  downstream: Int32Array;
+  basin: Int32Array;
+  accumulation: Uint32Array;
+  pits: Uint32Array;
+  outlets: Uint32Array;
+}
 export interface RawSolution {
   objective: string;
   sense: 'min' | 'max';
@@ -64,6 +71,8 @@ export interface RawTerrain {
   delaunayValues(): Float64Array;
   evaluateTriangles(triangles: Uint32Array): Float64Array;
   measuresOfTriangles(triangles: Uint32Array): RawMeasures;
+  /** null: the terrain's own triangulation. */
+  drainage(triangles: Uint32Array | null): RawDrainage;
   /** order >= 2: with the triangles (not a choice of diagonals). */
   solve(
     objective: string,
