@@ -64,9 +64,9 @@ BakerResult baker(FactorGraph& g, const std::vector<uint32_t>& layer, double eps
   r.bound = all_top;  // every factor at its best
   r.value = -INFINITY;
   r.width = 0;
-  // Each shift's graph borrows the factors it keeps (moved, not copied: at
-  // 100,000 factors a copy per shift, and freeing it, cost more than its DP's
-  // reading them), and gives them back even when its DP throws.
+  // Each shift's graph borrows the factors it keeps (moved, not copied: a copy
+  // per shift, and freeing it, touches every factor's table as the DP's reading
+  // does, and allocates besides), and gives them back even when its DP throws.
   struct Lent {
     FactorGraph& owner;
     FactorGraph sub;

@@ -200,11 +200,9 @@ struct Ascent {
   // best state per class, its own message taken back) joins the table, and the
   // table's min-marginals go back to the variables in equal shares. The bound
   // never falls (the minimum of a sum is at least the sum of the minima).
-  // (Not inlined, nor set_least: inlined into raise, one call that runs for
-  // seconds, the sweeps were slower in wasm: 10,000 DEM points at k = 4,
-  // max-convex-edges, 6.1-6.7 -> 5.0-5.3 s. V8 optimises a wasm function only
-  // after calls to it, and huge functions less well; which of the two it was
-  // is not known.)
+  // (Not inlined, nor set_least: inlined into raise, one long call for a whole
+  // ascent, the sweeps are slower in wasm. V8 optimises a wasm function only
+  // after calls to it, and huge functions less well.)
   [[gnu::noinline]] void update(size_t fi, WorkCounter& work, const Progress& progress, double sweep, double sweeps) {
     if (fi >= g.factors.size()) return update_implicit(fi);
     const StateFactor& f = g.factors[fi];
@@ -415,9 +413,8 @@ std::optional<Raised> raise(const StateGraph& g, const DualLimits& limits, doubl
 
 // Each factor's positions from the most classes to the fewest (the same
 // relaxation): the ascent's loops run along rows of the first position, and
-// a first position of 2 classes, as most joined tables had, left rows whose
-// bookkeeping cost more than their entries (10,000 DEM points at k = 4,
-// max-convex-edges: 1.4 of the 1.7 million entries in such tables).
+// a first position of 2 classes, as joined tables often have, leaves rows
+// whose bookkeeping costs more than their entries.
 void widest_first(StateGraph& g) {
   std::vector<size_t> order, stride;
   for (StateFactor& f : g.factors) {

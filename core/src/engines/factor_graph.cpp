@@ -122,8 +122,8 @@ void eliminate_min_degree(Adjacency adj, Decomposition& d, uint32_t max_width, c
 }
 
 // Min-fill order (fewest edges added; ties by degree, then index): narrower than
-// min-degree on grid-like graphs (a raster's frustrated quads: width 17 against
-// 22), but each step recounts the fill of the variables within two steps of the
+// min-degree on grid-like graphs (such as a raster's frustrated quads), but
+// each step recounts the fill of the variables within two steps of the
 // eliminated one. Gives up (false) past `budget` pair tests.
 bool eliminate_min_fill(Adjacency adj, Decomposition& d, uint32_t max_width, const Progress& progress,
                         double budget) {

@@ -129,7 +129,7 @@ double enclosing_circle(const double* a, const double* b, const double* c, const
   std::array<double, 6> key;
   if (!shape_key(p, key.data())) return sorted_enclosing_circle(p);
   // (8192 shapes, 512 KB: a reprojected raster's rounding makes a few thousand
-  // distinct ones, and with 1024 a million-cell raster missed one call in ten.)
+  // distinct ones, and a cache with room for fewer misses them in turn.)
   static thread_local RecentValues<6, double, 8192> recent;
   return recent.get(key, [&] { return sorted_enclosing_circle(p); });
 }

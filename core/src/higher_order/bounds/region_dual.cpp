@@ -189,9 +189,8 @@ Probe probe(const Mesh& dt, Regions& listed, Objective o, const std::vector<Regi
 // RegionDual::proven, above, with `best` the best value at hand (the start's
 // or one found). A target one unit short of the bound prunes the most: each
 // such target proven unbeaten takes the bound one unit closer, and an
-// optimum found is one. Then the best at hand itself. (A 10,000-point DEM
-// sample at k = 4, max-convex-edges: the bound met by no triangulation found,
-// the proof of 20021 did not fit its lists, of 20026 did, and found 20027.)
+// optimum found is one. Then the best at hand itself: its proof lists other
+// fills and may fit where the first target's did not.
 // The targets share one copy of the regions and one model, updated in turn.
 void prove(const Mesh& dt, const Regions& R, Objective o, const std::vector<RegionFactor>& factors,
            const std::vector<uint32_t>& region_of_factor, const DualProof& proof, double best,

@@ -35,8 +35,9 @@ struct RegionDualLimits {
   uint32_t max_second = 256;
   uint32_t max_second_failures = 8;
   uint64_t max_total = 2'000'000;
-  // ... or this many per point when that is more (a large DEM at k = 5 is
-  // hundreds of strips of a few thousand partial fills each).
+  // ... or this many per point when that is more (a large terrain at high
+  // order is many strips of thousands of partial fills each, and a total fixed
+  // for all sizes would leave most of them unread).
   uint64_t max_total_per_point = 32;
   uint32_t restarts = 6;               // descents from the dual's states with the regions shuffled
   // The proof lists, per region, the fills that could beat the incumbent.

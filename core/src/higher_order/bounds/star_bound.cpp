@@ -64,16 +64,15 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
 
   // The vertices in tiles of consecutive numbers (spatially coherent: the
   // terrain numbers them along a Morton curve), each as many as the budget of
-  // nodes holds, so memory is one tile's (the 131,753-point DEM at k = 8 lists
-  // more than 100 million nodes). A tile's vertices with a neighbour in a tile
-  // still to come are carried into the next: listed again (the same fans in the
-  // same order), their values with the multipliers so far folded in, so that
-  // their diamonds with the next tile's vertices get multipliers too. Any
-  // multipliers keep the bound; a vertex's best fan is counted once no
-  // multiplier at it changes again (its tile's last, or once it is not
-  // carried). Agreement is dropped only where the carried are over budget (a
-  // 100 x 100 DEM crop at k = 8 in tiles of 3 million nodes,
-  // min-mixed-vertices: 235 tiles alone, 239 carried, 240 whole).
+  // nodes holds, so memory is one tile's (the fans of a large terrain at high
+  // order run to far more nodes than one would hold at once). A tile's
+  // vertices with a neighbour in a tile still to come are carried into the
+  // next: listed again (the same fans in the same order), their values with
+  // the multipliers so far folded in, so that their diamonds with the next
+  // tile's vertices get multipliers too. Any multipliers keep the bound; a
+  // vertex's best fan is counted once no multiplier at it changes again (its
+  // tile's last, or once it is not carried). Agreement is dropped only where
+  // the carried are over budget.
   FanTrees t;
   FanLister lister(dt, cand, t);
   std::vector<uint8_t> in(n, 0);                  // its fans listed (else its terms at their best)
@@ -212,9 +211,8 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
     }
     // The fans' values kept under the multipliers: a multiplier's change is an
     // add over its end's intervals, and the best fan with or without an end the
-    // most over them or between them, in one pass over the vertex's fans, not
-    // its trees (on 10,000 DEM points at k = 4, min-mixed-vertices, the sweeps
-    // 7.5 -> 1.7 s).
+    // most over them or between them, in one pass over the vertex's fans'
+    // values (contiguous), not a walk of its trees.
     constexpr double kCap = double(int64_t{1} << 32);  // (an end every fan holds: its margin capped)
     auto most = [&](uint64_t from, uint64_t to) {
       int64_t best = INT64_MIN;
@@ -279,9 +277,8 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
       // Stop once the last sweep's gain, kept up for every sweep left, would not
       // reach the next value the bound can prove (the next integer for counts, or
       // past the known bound; half a unit for lengths): a tile of many aims at
-      // its share of that. The gains shrink slowly: on the volcano at k = 4,
-      // min-mixed-vertices, 74.27 after 8 sweeps (each gaining less than half a
-      // unit), 75.0 after 24, proving the 76 found.
+      // its share of that. The gains shrink slowly: sweeps that each gain
+      // less than a unit can still add up to the next provable value.
       const int64_t sum = total + best;
       int64_t next = integral ? sum - floor_div(sum, kUnit) * kUnit + 1 : kUnit / 2;
       if (integral && whole && std::isfinite(limits.known_bound) && std::fabs(limits.known_bound) < 1e12)

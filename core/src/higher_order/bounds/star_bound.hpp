@@ -12,11 +12,11 @@
 // (diamond_ends.hpp): with the two ends' multipliers summing to 0, any
 // triangulation keeps its value, and the sum of each vertex's best fan bounds
 // the optimum. Block coordinate descent over each diamond's ends (MPLP) lowers
-// it. No region is needed: on the volcano at k = 6, one region of 10,320
-// triangles, the bound on max-convex-vertices is 2760 for 2752 found (the
-// regions' relaxation: 5015). Diamonds bind tighter than triangles (agreeing
-// on each triangle alone): on min-mixed-vertices at k = 5, a 100 x 100 DEM
-// crop, 432 for 435 found (triangles: 399).
+// it. No region is needed, so the bound stays close where the fixed edges
+// leave one region too large to list, whose terms a relaxation over regions
+// can only read at their best. Diamonds bind tighter than triangles (agreeing
+// on each triangle alone): the two ends of an edge then agree on both its
+// sides at once.
 //
 // Exact: multipliers are integers in units of 2^-12, every sum an integer, and
 // the bound is the floor of the best (max) or the ceiling (min).

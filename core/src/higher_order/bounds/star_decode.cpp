@@ -30,8 +30,8 @@ class Fans {
 
 // Neighbours: any two vertices one's fans pass through the other. Read off the
 // trees' nodes (every node is on a fan's ring), each once per vertex, not off
-// every fan's ring (10,000 DEM points at k = 4, min-mixed-vertices: 7 % of
-// the run, its rings sorted five times).
+// every fan's ring (a node is on the rings of all the fans through it, so the
+// rings read it many times over).
 std::vector<std::vector<uint32_t>> neighbours(const FanTrees& t, uint32_t n) {
   std::vector<std::vector<uint32_t>> near(n);
   std::vector<uint32_t> seen(n, UINT32_MAX);
@@ -136,9 +136,9 @@ std::optional<std::vector<Tri>> StarDecoder::search(const std::vector<int64_t>& 
   };
   // v's fans in the order tried: the first kLookahead alive ones by their
   // value plus, per undecided neighbour, the best value it keeps with them (a
-  // fan that leaves its neighbours poor choices goes later: on the volcano at
-  // k = 8, max-convex-vertices, the sweeps' 2911-3036 become 3136-3142 for a
-  // bound of 3152), then the rest by value.
+  // fan that leaves its neighbours poor choices goes later: the search keeps
+  // the first fans that agree, so a greedy first choice costs its neighbours),
+  // then the rest by value.
   constexpr size_t kLookahead = 4;
   std::vector<std::vector<uint64_t>> ranked(n);
   auto rank = [&](uint32_t v) {

@@ -34,9 +34,8 @@ struct ViewBoundLimits {
 // Nothing when no region can be read through views (or the DP does not fit).
 // known: the value of a triangulation in hand; the rounds stop once the bound meets it.
 // at_hand: a bound proven otherwise; the rounds stop once one's bound trails it,
-// as each refines with more partial fills than the last (10,000 DEM points at
-// k = 4, min-mixed-vertices: 0.7, 2.0 and 0.7 million for 1452, 1454 and 1455,
-// 5 of the views' 6.8 s, where the dual's bound was 1455).
+// as each refines with more partial fills than the last: the rounds left cost
+// more than those run, for a bound that may still not pass the one at hand.
 std::optional<ViewBound> view_bound(const Mesh& delaunay, const Regions& regions, Objective o,
                                     const Candidates& candidates, const RegionTerms& terms,
                                     uint32_t max_region_triangles, std::optional<double> known = {},

@@ -92,8 +92,8 @@ class Layer {
     p.node = t.node;
   }
 
-  // Empty, its memory kept for the next layer (a fresh one per layer spent a
-  // fifth of a DEM sample's time at k = 4 in page faults and regrowth).
+  // Empty, its memory kept for the next layer (a fresh one per layer pays
+  // its page faults and regrowth again at every layer).
   void clear() {
     const size_t mask = slots_.size() - 1;
     for (uint32_t s = 0; s < states.size(); ++s) {
@@ -350,8 +350,8 @@ class FillDp {
     // candidate triangles, then the smallest key). The fill then sweeps the
     // region lengthwise and its frontier stays as short as the region is wide:
     // on regions glued from strips, or DEM regions of tens of triangles, this
-    // keeps up to 6 times fewer partial fills than growing at the edge with the
-    // fewest candidates.
+    // keeps far fewer partial fills than growing at the edge with the fewest
+    // candidates, whose frontier wanders across the region.
     size_t at = 0;
     double back = 0;
     size_t fewest = 0;

@@ -72,12 +72,11 @@ ListedBest RegionEngine::best_listed(const std::vector<uint32_t>& start_regions,
   // over mini-buckets, whose assignment is then one start of the local search.
   StateDpLimits mini = dl;
   mini.mini_buckets = true;
-  // Small buckets: on a 5,000-point grid at order 4 the bottleneck search over
-  // 2^22-entry buckets took 80 s, over 2^18 8 s, with the same results (and
-  // within one unit on 10,000 DEM points at order 4). Min-max smaller still: its
-  // search is a DP per threshold probed (10,000 points of a real DEM at order 4,
-  // minmax-degree: 8.5 -> 4.9 s over 2^14, the same results; counts over 2^16
-  // were slower, their local search starting further off).
+  // Small buckets: the mini-buckets' assignment is only a start for the local
+  // search, and their time grows with the tables' size while the start hardly
+  // improves past 2^18 entries. Min-max smaller still: its search is a DP per
+  // threshold probed, each paying the tables' size. (Counts over smaller
+  // tables start their local search further off and end slower.)
   mini.max_table = model.graph.combine == TermCombine::Max ? 1 << 14 : 1 << 18;
   const StateDpResult listed = solve_states(model.graph, mini);
   ListedBest out;

@@ -44,11 +44,11 @@ RegionModel region_model(const Mesh& delaunay, const Regions& regions, Objective
 // The model of `regions` from M, the model of the same regions before the
 // ones marked `changed` (per region) changed their triangulations: only the
 // terms that read a changed region are built again (a few incomplete regions
-// given more triangulations: a model of 68,000 regions in a tenth of the
-// time). views (as region_model's, for changed regions only): those read
-// through views from now on, their first view through the region's variable,
-// the others' variables after all the others (the fill graphs' model from the
-// engine's: a 131k-cell DEM at k = 4, max-convex-vertices, 15 -> 12.5 s).
+// of many given more triangulations: most of the model is kept). views (as
+// region_model's, for changed regions only): those read through views from
+// now on, their first view through the region's variable, the others'
+// variables after all the others (as the fill graphs' model is built from
+// the engine's).
 // The same model as region_model's, its variables and factors in another order,
 // except that a changed region left with one triangulation (or a first view of
 // one) keeps its variable (of one state); built whole where M has relaxed terms

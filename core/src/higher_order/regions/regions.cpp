@@ -256,12 +256,10 @@ void enumerate_regions(const Mesh& dt, Regions& out, const RegionLimits& limits)
         if (dp_used < limits.max_total_states &&
             by_dp(region, r, std::min(limits.max_states_per_region_dp, limits.max_total_states - dp_used)))
           continue;
-        // Over the DP's budgets: left to the fill graphs, views and stars (its
-        // fills one by one, each keyed, completed about one such region in 20 to
-        // 50 on a 10,000-point DEM sample at k = 4 to 6, changed no answer there,
-        // nor on the volcano at k = 4 to 8 or a 131k-cell DEM at k = 4, and cost
-        // a fifth to a third of the time: max-convex-vertices 9.1 -> 7.5 s at k = 4,
-        // 20.7 -> 13.9 s at k = 5).
+        // Over the DP's budgets: left to the fill graphs, views and stars, which
+        // read such a region without listing it (listing its fills one by one,
+        // each keyed, rarely completes a region the DP's budget did not hold,
+        // and costs a large share of the solve).
         region.complete = false;
         continue;
       }

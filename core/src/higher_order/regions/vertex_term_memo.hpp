@@ -1,9 +1,9 @@
 // Vertex terms remembered by their stars' neighbours, across the region models
 // of one solve: each model evaluates every star a combination of its regions'
 // fans gives, and the models of one solve (the engine's, rebuilt with more
-// states, the duals' and the views') meet the same stars again. A 131k-cell DEM
-// at k = 4, max-convex-vertices: four models of the same 1.46 million stars,
-// 3 s each to evaluate.
+// states, the duals' and the views') meet the same stars again, so each star's
+// term is evaluated once per solve rather than once per model (while the memo
+// has room, below).
 //
 // Over the convex hull the star of v in a triangulation is the fan over its
 // neighbours in angular order (the triangles around v tile a neighbourhood of
@@ -20,7 +20,8 @@ namespace hodt {
 class VertexTermMemo {
  public:
   // Up to max_stars stars are remembered (about 60 bytes each: 120 MB at the
-  // default, which holds the 1.7 million of a 131k-cell DEM at k = 4); past it,
+  // default, at about a dozen distinct stars per point at k = 4 enough for a
+  // terrain of over 100,000 points at that order); past it,
   // terms are evaluated each time.
   explicit VertexTermMemo(size_t max_stars = size_t(1) << 21) : max_stars_(max_stars) {}
 

@@ -161,8 +161,7 @@ std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, 
         current += own[a];
       }
       // Terms are never below 0: a minimised sum at 0 is at its best, and its
-      // fans need no listing (the 131k-cell DEM at k = 8, min-mixed-vertices:
-      // a descent of 25-vertex windows 63 -> 37 s).
+      // fans need no listing.
       const bool at_best = sign < 0 && current == 0;
       bool choice = false;
       for (size_t a = 0; a < m && !at_best; ++a) {

@@ -4,9 +4,9 @@
 // agree with their neighbours' are a triangulation (star_decode.hpp), so the
 // window's best is a branch and bound over its members' fans that agree with
 // the outside: a large neighbourhood searched exactly, which flips and region
-// descents do not reach (the volcano at k = 4, min-mixed-vertices: 77 -> 76,
-// the optimum). Lists fans one window at a time, within a budget of nodes
-// listed in all.
+// descents do not reach (a window changes the stars of many neighbouring
+// vertices at once, across region borders). Lists fans one window at a time,
+// within a budget of nodes listed in all.
 #pragma once
 #include <cmath>
 #include <cstdint>
@@ -28,10 +28,8 @@ struct WindowLimits {
   // the four offsets), the larger of the two: no window starts past it. The
   // windows run in rows from one side, so a budget short of the whole leaves
   // the far side as it was: per point, enough for the four offsets at k = 8 on
-  // DEMs (2,000 to 5,300 nodes per point on the volcano, a 10,000-point sample
-  // and a crop of a real DEM). The 131,753-point DEM at k = 8, max-convex-vertices
-  // from the Delaunay triangulation: 44,433 with 16 million nodes (3 s), 71,767
-  // with all (81 s).
+  // DEMs (a few thousand nodes per point at that order), so that a large
+  // terrain is searched whole; max_nodes is the floor for small inputs.
   uint64_t max_nodes = 16'000'000;
   uint64_t max_nodes_per_point = 8'192;
   // Stop once the windows improved the start by this much (the objective's
