@@ -10,11 +10,12 @@ struct PhaseBudgets {
   // Branch and bound over every fill of the instance (min-max): on inputs of at
   // most this many points, within this many search nodes. Small inputs at high
   // order have one region of astronomically many triangulations, which the
-  // regions' engine can only bound, while the terms' pruning proves them.
+  // regions' engine can only bound, while the terms' pruning proves them. It
+  // runs where the exact DP refused.
   // (A node tests every candidate of the frontier, so its cost grows with the
   // input: the budget keeps a search that cannot finish short beside the rest.)
   uint32_t branch_and_bound_points = 80;
-  uint64_t branch_and_bound_nodes = 200'000;
+  uint64_t branch_and_bound_nodes = 60'000;
   // The dual over the regions' fill graphs: sweeps of its ascent. Strips side by
   // side couple along whole boundaries and the ascent climbs slowly, so the
   // bound keeps tightening long after the first hundred sweeps.

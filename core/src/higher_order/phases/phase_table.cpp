@@ -13,6 +13,11 @@ namespace {
 bool always(const KOrderRun&) { return true; }
 bool max_terms(const KOrderRun& run) { return run.description.combine == TermCombine::Max; }
 bool incomplete(const KOrderRun& run) { return run.engine->R.incomplete; }
+// A small input and a min-max objective: the branch and bound's.
+bool small_min_max(const KOrderRun& r) {
+  return r.bounded && r.k >= 2 && r.dt.num_vertices() <= r.budgets.branch_and_bound_points &&
+         branch_and_bound_applies(r.o, r.dt);
+}
 
 }  // namespace
 
@@ -28,19 +33,16 @@ const std::vector<KOrderPhase>& k_order_phases() {
       {"finding the regions", always, find_regions},
       // (Order 1 stays on the region engine: solve() takes the first order paths itself.)
       {"a diagonal per quad", [](const KOrderRun& r) { return r.k >= 2; }, solve_as_quads},
-      {"branch and bound over every fill",
-       [](const KOrderRun& r) {
-         return r.bounded && r.k >= 2 && r.dt.num_vertices() <= r.budgets.branch_and_bound_points &&
-                branch_and_bound_applies(r.o, r.dt);
-       },
-       branch_and_bound_small},
       // (One order's regions in memory at a time.)
-      {"the lower order, first", [](const KOrderRun& r) { return r.k >= r.budgets.early_rung_order; }, solve_lower_order},
+      // (Not before the branch and bound, which needs no rung.)
+      {"the lower order, first", [](const KOrderRun& r) { return r.k >= r.budgets.early_rung_order && !small_min_max(r); },
+       solve_lower_order},
       {"listing the regions", always, build_engine},
       {"listing the regions whole", [](const KOrderRun& r) { return r.provable && incomplete(r); }, list_whole},
       {"the exact DP", always, solve_exactly},
       {"the start", always, take_start},
       {"a min-max proof of the start", always, prove_start},
+      {"branch and bound over every fill", small_min_max, branch_and_bound_small},
       {"the start listed", always, list_start},
       {"a quick reading of the fill graphs",
        [](const KOrderRun& r) {
