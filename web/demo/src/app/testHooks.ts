@@ -61,8 +61,8 @@ export function publishHooks(store: Store<AppState>, o: { plan: PlanView; scene:
       return showUseful && useful ? useful.edges.length / 2 : null;
     },
     get solution() {
-      const { solution } = s();
-      return solution ? JSON.parse(solutionToJson(solution)) : null;
+      const { solution, committed } = s();
+      return solution ? JSON.parse(solutionToJson(solution, committed.terrain)) : null;
     },
     get choice() {
       return shown() ? Array.from(shown()!.choice).join('') : '';

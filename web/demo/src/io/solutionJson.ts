@@ -1,8 +1,9 @@
-import type { Solution } from 'hodt';
+import type { Solution, Terrain } from 'hodt';
 
 /** A solution in the CLI's `solve` format (README, "CLI"): the same keys in the
- * same order, plus `critical` when the objective has a critical pair. */
-export function solutionToJson(s: Solution): string {
+ * same order, with the drainage counts of its triangulation on `terrain` (the
+ * one it was solved on), plus `critical` when the objective has a critical pair. */
+export function solutionToJson(s: Solution, terrain: Terrain): string {
   const doc: Record<string, unknown> = {
     objective: s.objective,
     sense: s.sense,
@@ -14,6 +15,8 @@ export function solutionToJson(s: Solution): string {
     flipped: s.flipped,
     timeMs: s.timeMs,
   };
+  const d = terrain.drainage(s.triangles);
+  doc.drainage = { pits: d.pits.length, outlets: d.outlets.length };
   if (s.critical) {
     doc.critical = { first: [...s.critical.first], second: [...s.critical.second], value: s.critical.value };
   }

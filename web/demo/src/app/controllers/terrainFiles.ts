@@ -41,14 +41,14 @@ export function connectTerrainFiles(store: Store<AppState>, edits: Edits, hodt: 
   }
 
   function exportAs(format: ExportFormat): void {
-    const { settings, solution, points, shown } = store.get();
+    const { settings, solution, points, shown, committed } = store.get();
     const base = `hodt-${settings.objective}`;
     const about = solution ? `${solution.objective} = ${solution.value} (Delaunay ${solution.delaunayValue})` : 'Delaunay triangulation';
     if (format === 'csv') download('hodt-points.csv', pointsToCsv(points), 'text/csv');
     else if (format !== 'json') {
       const { bytes, type } = meshFile(format, shown!, `hodt: ${about}`, settings.maxEdge !== null);
       download(`${base}.${format}`, bytes, type);
-    } else if (solution) download(`${base}.json`, solutionToJson(solution), 'application/json');
+    } else if (solution) download(`${base}.json`, solutionToJson(solution, committed.terrain), 'application/json');
     else notice.show('No solution to export yet: wait for the solver to finish.', 'info');
   }
 
