@@ -5,7 +5,7 @@ import { MAX_ORDER } from '../../app/settings.ts';
 import { h } from '../../ui/dom.ts';
 import { OBJECTIVE_HELP } from '../../ui/objectiveHelp.ts';
 import { createShownState } from '../canvas.ts';
-import { button, COMPONENT_COLORS, createPane, legend, paperLink } from '../common.ts';
+import { button, COMPONENT_COLORS, createPane, legend, objectiveOptions, paperLink } from '../common.ts';
 import { latestSolve, pageView, teachView } from '../view.ts';
 import { drawWater, FLOW_COLOR, OUTLET_COLOR, PIT_COLOR } from './draw.ts';
 import { countsText, shownNetwork, startWater, waterHooks, withSolution, type WaterShown, type WaterState } from './model.ts';
@@ -24,8 +24,8 @@ export const waterView = teachView({
       paperLink('1'),
       '.',
     ]);
-    const objective = h('select', { id: 'water-objective', 'aria-label': 'Objective of the optimum' });
-    objective.replaceChildren(...OBJECTIVE_IDS.map((o) => h('option', { value: o }, OBJECTIVE_HELP[o].name)));
+    // The view's own objective: the sidebar's may be any, the water view starts at the fewest pits.
+    const objective = objectiveOptions('water-objective', OBJECTIVE_IDS, 'Objective of the optimum');
     objective.value = DEFAULT_OBJECTIVE;
     const order = h('select', { id: 'water-order', 'aria-label': 'Order k of the optimum' });
     order.replaceChildren(...Array.from({ length: MAX_ORDER }, (_, i) => h('option', { value: String(i + 1) }, `order ${i + 1}`)));
