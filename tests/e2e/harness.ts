@@ -92,6 +92,13 @@ export async function hooks(page: Page) {
   })) as Omit<NonNullable<Window['__hodt']>, 'pointsCsv'> & { pointsCsv: string };
 }
 
+/** The page's points, exactly (the CSV export prints doubles round-trip). */
+export async function pagePoints(page: Page): Promise<Float64Array> {
+  const csv = (await hooks(page)).pointsCsv;
+  const rows = csv.trim().split('\n').filter((l) => /^[-\d]/.test(l));
+  return Float64Array.from(rows.flatMap((l) => l.split(',').map(Number)));
+}
+
 export async function screenshot(page: Page, name: string): Promise<Buffer> {
   mkdirSync(resultsDir, { recursive: true });
   const shot = await page.screenshot();

@@ -6,7 +6,7 @@ import { loadHodt, type Hodt, type ObjectiveId } from 'hodt';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { decodeState } from '../../web/demo/src/share/urlState.ts';
-import { hooks, keepScreenshots, openPage, screenshot, settled, startDemo, type Demo } from './harness.ts';
+import { hooks, keepScreenshots, openPage, pagePoints, screenshot, settled, startDemo, type Demo } from './harness.ts';
 
 let demo: Demo;
 let hodt: Hodt;
@@ -17,13 +17,6 @@ beforeAll(async () => {
 afterAll(async () => {
   await demo?.close();
 });
-
-/** The page's points, exactly (the CSV export prints doubles round-trip). */
-async function pagePoints(page: Page): Promise<Float64Array> {
-  const csv = (await hooks(page)).pointsCsv;
-  const rows = csv.trim().split('\n').filter((l) => /^[-\d]/.test(l));
-  return Float64Array.from(rows.flatMap((l) => l.split(',').map(Number)));
-}
 
 async function teachView(page: Page, id: string) {
   return page.evaluate((v) => window.__hodtTeach!.view(v), id) as Promise<Record<string, any>>;

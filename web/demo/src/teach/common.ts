@@ -44,11 +44,17 @@ export function legend(items: readonly LegendItem[]): HTMLUListElement {
   );
 }
 
+/** A select of these objectives, by their names. */
+export function objectiveOptions(id: string, ids: readonly ObjectiveId[], label: string): HTMLSelectElement {
+  const select = h('select', { id, 'aria-label': label });
+  select.replaceChildren(...ids.map((o) => h('option', { value: o }, OBJECTIVE_HELP[o].name)));
+  return select;
+}
+
 /** The objective picker of a view: choosing one moves the sidebar too
  * (ctx.choose, which tells every view), then the view updates. */
 export function objectiveSelect(ctx: TeachContext, id: string, ids: readonly ObjectiveId[], label: string, update: () => void): HTMLSelectElement {
-  const select = h('select', { id, 'aria-label': label });
-  select.replaceChildren(...ids.map((o) => h('option', { value: o }, OBJECTIVE_HELP[o].name)));
+  const select = objectiveOptions(id, ids, label);
   select.addEventListener('change', () => {
     ctx.choose({ objective: select.value as ObjectiveId });
     update();

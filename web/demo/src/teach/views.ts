@@ -7,6 +7,7 @@ import { gadgetView } from './gadget/controls.ts';
 import { mixedView } from './mixed/controls.ts';
 import { orderView } from './order/controls.ts';
 import { satView } from './sat/controls.ts';
+import { waterView } from './water/controls.ts';
 
-export const TEACH_VIEWS = [satView, bakerView, gadgetView, degreeView, mixedView, bruteView, orderView] as const;
+export const TEACH_VIEWS = [satView, bakerView, gadgetView, degreeView, mixedView, bruteView, orderView, waterView] as const;
 export type TeachTab = (typeof TEACH_VIEWS)[number]['id'];

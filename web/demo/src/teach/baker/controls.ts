@@ -5,7 +5,7 @@ import { h } from '../../ui/dom.ts';
 import { formatValue, OBJECTIVE_HELP } from '../../ui/objectiveHelp.ts';
 import { FLIPPED_COLOR } from '../../views/palette.ts';
 import { createShownState, layerColor } from '../canvas.ts';
-import { createPane, legend, paperLink, stepControls } from '../common.ts';
+import { createPane, legend, objectiveOptions, paperLink, stepControls } from '../common.ts';
 import { readStructure } from '../structure.ts';
 import { latestSolve, pageView, teachView } from '../view.ts';
 import { CUT_COLOR, drawLayers } from './draw.ts';
@@ -39,8 +39,7 @@ export const bakerView = teachView({
       paperLink('4'),
       ' (4.1 for convex edges).',
     ]);
-    const objective = h('select', { id: 'baker-objective', 'aria-label': 'Objective' });
-    objective.replaceChildren(...BAKER_OBJECTIVES.map((id) => h('option', { value: id }, OBJECTIVE_HELP[id].name)));
+    const objective = objectiveOptions('baker-objective', BAKER_OBJECTIVES, 'Objective');
     const epsilon = h('input', { id: 'baker-epsilon', type: 'number', min: 0.05, max: 0.95, step: 0.05, value: 0.34, 'aria-label': 'epsilon' });
     const lambdaOut = h('span', { class: 'teach-counter', id: 'baker-lambda' });
     for (const el of [objective, epsilon]) {
