@@ -64,7 +64,7 @@ struct Enumerator {
   uint64_t budget;
   const std::function<void(const std::vector<Tri>&)>& visit;
   const Progress& progress;
-  const AcceptTriangle& accept;
+  FillPruning* pruning;
   std::unordered_set<uint64_t> open;  // directed edges with the uncovered side on their left
   std::vector<std::pair<uint32_t, uint32_t>> edges;
   std::vector<Tri> tris;
@@ -103,7 +103,9 @@ struct Enumerator {
       else open.insert(edge_key(b, a)), edges.push_back({a, b}), ++added;
     }
     tris.push_back({u, v, w});
+    if (pruning) pruning->place(tris.back());
     run();
+    if (pruning) pruning->remove(tris.back());
     tris.pop_back();
     for (int s = 1; s >= 0; --s) {
       const uint32_t a = side[s][0], b = side[s][1];
@@ -125,7 +127,7 @@ struct Enumerator {
       visit(tris);
       return;
     }
-    if (accept) return run_pruned();
+    if (pruning) return run_pruned();
     // The open edge with the fewest candidate triangles (ties: smallest key).
     uint64_t best = 0;
     size_t fewest = SIZE_MAX;
@@ -157,7 +159,7 @@ struct Enumerator {
         for (uint32_t w : *o) {
           if (!first && here.size() > fewest.size()) break;  // (then it is not chosen)
           bool close[2];
-          if (fits(u, v, w, close) && accept(tris, Tri{u, v, w}))
+          if (fits(u, v, w, close) && pruning->accept(Tri{u, v, w}))
             here.push_back({w, static_cast<uint8_t>(close[0] | close[1] << 1)});
         }
       if (first || here.size() < fewest.size() || (here.size() == fewest.size() && e < best))
@@ -176,8 +178,8 @@ struct Enumerator {
 
 bool enumerate_fills(const Mesh& dt, const Candidates& candidates, const std::vector<std::pair<uint32_t, uint32_t>>& boundary,
                      uint64_t max_nodes, const std::function<void(const std::vector<Tri>&)>& visit,
-                     const Progress& progress, uint64_t* nodes_used, const AcceptTriangle& accept) {
-  Enumerator en{dt, candidates, max_nodes, visit, progress, accept, {}, {}, {}};
+                     const Progress& progress, uint64_t* nodes_used, FillPruning* pruning) {
+  Enumerator en{dt, candidates, max_nodes, visit, progress, pruning, {}, {}, {}};
   for (auto [a, b] : boundary) en.open.insert(edge_key(a, b));
   try {
     en.run();
