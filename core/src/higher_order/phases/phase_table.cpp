@@ -35,7 +35,7 @@ const std::vector<KOrderPhase>& k_order_phases() {
       {"a diagonal per quad", [](const KOrderRun& r) { return r.k >= 2; }, solve_as_quads},
       // (One order's regions in memory at a time.)
       // (Not before the branch and bound, which needs no rung.)
-      {"the lower order, first", [](const KOrderRun& r) { return r.k >= r.budgets.early_rung_order && !small_min_max(r); },
+      {"the lower order, first", [](const KOrderRun& r) { return r.k >= 3 && r.k >= r.budgets.early_rung_order && !small_min_max(r); },
        solve_lower_order},
       {"listing the regions", always, build_engine},
       {"listing the regions whole", [](const KOrderRun& r) { return r.provable && incomplete(r); }, list_whole},

@@ -22,7 +22,6 @@ void list_start(KOrderRun& run) {
 // gives fewer of this order's moves); above, half of k. A rung stops before
 // the bounds, so an answer can still trail the lower order's own.
 void solve_lower_order(KOrderRun& run) {
-  if (run.lower || run.k < 3) return;
   SolveOptions lower = run.options;
   lower.method = Method::Auto;
   lower.progress = hold_in_phase(run.options.progress, Phase::Searching);  // (a start for this order's search)
