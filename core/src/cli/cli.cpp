@@ -273,8 +273,10 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     std::string printed, written;
     std::optional<Mesh> solved;
     std::string comment;
+    std::optional<Drainage> network;  // (of the printed triangulation: the JSON's counts and --drainage)
     if (command == "stats") {
-      printed = with_crs_json(stats_json(terrain, have_order ? options.order : 0), crs);
+      network = drainage(terrain, terrain.delaunay_mesh());
+      printed = with_crs_json(stats_json(terrain, have_order ? options.order : 0, &*network), crs);
       // ("triangles" is already the count)
       if (json_output)
         written = with_triangles_json(printed, terrain.to_input(terrain.delaunay_mesh().triangles), "delaunayTriangles");
@@ -286,10 +288,12 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
       Solution s = solve(terrain.structure(), *objective, options);
       s.delaunay_value = terrain.delaunay_value(*objective);
       times.solve_ms = ms_since(started);
-      printed = with_crs_json(solution_json(terrain, s, triangles, options.trace, &times), crs);
-      if (json_output) written = with_crs_json(solution_json(terrain, s, true, options.trace, &times), crs);
-      if (s.mesh) solved = std::move(*s.mesh);
-      else solved = triangulate(terrain.structure(), s.choice);
+      solved = s.mesh ? std::move(*s.mesh) : triangulate(terrain.structure(), s.choice);
+      network = drainage(terrain, *solved);
+      const std::string document = solution_json(terrain, s, *solved, *network, options.trace, &times);
+      const auto with_triangles = [&] { return with_triangles_json(document, terrain.to_input(solved->triangles)); };
+      printed = with_crs_json(triangles ? with_triangles() : document, crs);
+      if (json_output) written = triangles ? printed : with_crs_json(with_triangles(), crs);
       comment = describe(s, name);
     }
 
@@ -307,8 +311,7 @@ CliResult run_cli(const std::vector<std::string>& args, const CliHost& host) {
     }
     if (drainage_path) {
       progress.step(Phase::Writing, *drainage_path);
-      const Drainage d = drainage(terrain, solved ? *solved : terrain.delaunay_mesh());
-      if (!host.write(*drainage_path, drainage_geojson(d, parsed.xyz, crs.value_or("")), error))
+      if (!host.write(*drainage_path, drainage_geojson(*network, parsed.xyz, crs.value_or("")), error))
         throw InputError("cannot write " + escape_input(*drainage_path) + ": " + file_error_message(error, FileAccess::Write));
     }
     r.out = printed + "\n";

@@ -20,15 +20,14 @@ std::string domain_json(const Mesh& m) {
   return ", \"maxEdge\": " + json_number(m.coords.max_edge()) +
          ", \"outsideTriangles\": " + std::to_string(std::count(inside.begin(), inside.end(), 0));
 }
-// How many pits and outlets the drainage network of m has (drainage.hpp).
-std::string drainage_json(const Terrain& t, const Mesh& m) {
-  const Drainage d = drainage(t, m);
+// How many pits and outlets a drainage network has (drainage.hpp).
+std::string drainage_json(const Drainage& d) {
   return ", \"drainage\": {\"pits\": " + std::to_string(d.pits.size()) + ", \"outlets\": " +
          std::to_string(d.outlets.size()) + "}";
 }
 }  // namespace
 
-std::string stats_json(const Terrain& t, uint32_t order) {
+std::string stats_json(const Terrain& t, uint32_t order, const Drainage* drainage) {
   const Mesh& m = t.structure().base;
   const size_t hull_edges = m.hull.size();
   const size_t edges = (m.triangles.size() + hull_edges) / 2;
@@ -40,7 +39,7 @@ std::string stats_json(const Terrain& t, uint32_t order) {
   const auto& v = t.delaunay_values();
   for (size_t k = 0; k < kNumObjectives; ++k)
     s += (k ? ", \"" : "\"") + std::string(objectives()[k].id) + "\": " + json_number(v[k]);
-  s += "}" + domain_json(m) + drainage_json(t, m);
+  s += "}" + domain_json(m) + drainage_json(drainage ? *drainage : hodt::drainage(t, m));
   if (order > 0) {
     const auto edges = useful_edges(t.delaunay_mesh(), order);
     const auto triangles = useful_triangles(t.delaunay_mesh(), order, edges);
@@ -91,8 +90,8 @@ std::string with_triangles_json(std::string s, const std::vector<uint32_t>& tris
   return s + "]}";
 }
 
-std::string solution_json(const Terrain& t, const Solution& r, bool with_triangles, bool with_trace,
-                          const PhaseTimes* times) {
+std::string solution_json(const Terrain& t, const Solution& r, const Mesh& mesh, const Drainage& drainage,
+                          bool with_trace, const PhaseTimes* times) {
   const ObjectiveInfo& oi = info(r.objective);
   std::string s = "{\"objective\": \"" + std::string(oi.id) + "\", \"sense\": \"" +
                   (oi.sense == Sense::Min ? "min" : "max") + "\", \"method\": \"" + r.method +
@@ -106,9 +105,7 @@ std::string solution_json(const Terrain& t, const Solution& r, bool with_triangl
     s += ", \"times\": {\"readMs\": " + ms_json(times->read_ms) + ", \"buildMs\": " + ms_json(times->build_ms) +
          ", \"solveMs\": " + ms_json(times->solve_ms) + "}";
   if (r.order > 1) s += ", \"order\": " + std::to_string(r.order);
-  const Mesh triangulated = r.mesh ? Mesh{} : triangulate(t.structure(), r.choice);
-  const Mesh& mesh = r.mesh ? *r.mesh : triangulated;
-  s += domain_json(mesh) + drainage_json(t, mesh);
+  s += domain_json(mesh) + drainage_json(drainage);
   if (r.method == "approx") s += std::string(", \"localSearchImproved\": ") + (r.local_search_improved ? "true" : "false");
   if (!r.details.empty()) s += ", \"details\": \"" + json_escape(r.details) + "\"";
   if (r.critical)
@@ -134,9 +131,7 @@ std::string solution_json(const Terrain& t, const Solution& r, bool with_triangl
     }
     s += "]";
   }
-  s += "}";
-  if (!with_triangles) return s;
-  return with_triangles_json(std::move(s), t.to_input(mesh.triangles));
+  return s + "}";
 }
 
 }  // namespace hodt
