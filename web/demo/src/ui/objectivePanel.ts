@@ -1,6 +1,7 @@
 import type { Method, ObjectiveId, ObjectiveInfo } from 'hodt';
-import { MAX_ORDER, METHODS } from '../app/settings.ts';
+import { METHODS } from '../app/settings.ts';
 import { byId, h } from './dom.ts';
+import { orderOptions } from './orderOptions.ts';
 import { OBJECTIVE_HELP } from './objectiveHelp.ts';
 
 export interface SolveSettings {
@@ -51,11 +52,7 @@ export function createObjectivePanel(objectives: readonly ObjectiveInfo[]): Obje
   const useful = byId<HTMLInputElement>('show-useful');
   const usefulCount = byId('useful-count');
   const maxEdge = byId<HTMLInputElement>('max-edge');
-  order.replaceChildren(
-    ...Array.from({ length: MAX_ORDER }, (_, i) =>
-      h('option', { value: i + 1, title: i === 0 ? 'First order: one diagonal per flippable quad' : `At most ${i + 1} points in every circumcircle` }, i === 0 ? '1 · first order' : String(i + 1)),
-    ),
-  );
+  order.replaceChildren(...orderOptions());
 
   select.replaceChildren(
     ...objectives.map((o) =>

@@ -1,9 +1,9 @@
 // The Water view (issue 60): where water runs on the Delaunay triangulation and
 // on an optimum, so that basins visibly merge when the optimum removes pits.
 import { OBJECTIVE_IDS, type ObjectiveId } from 'hodt';
-import { MAX_ORDER } from '../../app/settings.ts';
 import { h } from '../../ui/dom.ts';
 import { OBJECTIVE_HELP } from '../../ui/objectiveHelp.ts';
+import { orderOptions } from '../../ui/orderOptions.ts';
 import { createShownState } from '../canvas.ts';
 import { button, COMPONENT_COLORS, createPane, legend, objectiveOptions, paperLink } from '../common.ts';
 import { latestSolve, pageView, teachView } from '../view.ts';
@@ -28,7 +28,7 @@ export const waterView = teachView({
     const objective = objectiveOptions('water-objective', OBJECTIVE_IDS, 'Objective of the optimum');
     objective.value = DEFAULT_OBJECTIVE;
     const order = h('select', { id: 'water-order', 'aria-label': 'Order k of the optimum' });
-    order.replaceChildren(...Array.from({ length: MAX_ORDER }, (_, i) => h('option', { value: String(i + 1) }, `order ${i + 1}`)));
+    order.replaceChildren(...orderOptions());
     for (const select of [objective, order]) select.addEventListener('change', () => view.invalidate());
 
     let showing: WaterShown = 'optimum';
