@@ -415,7 +415,11 @@ val objectiveTable() {
     val o = val::object();
     o.set("id", std::string(i.id));
     o.set("sense", std::string(i.sense == Sense::Min ? "min" : "max"));
+    o.set("combine", std::string(i.combine == Combine::Sum ? "sum" : "max"));
     o.set("integral", i.integral);
+    o.set("polynomial", i.polynomial);
+    o.set("unit", std::string(i.unit));
+    o.set("reference", std::string(i.reference));
     o.set("summary", std::string(i.summary));
     out.call<void>("push", o);
   }

@@ -10,7 +10,7 @@
 namespace hodt::test {
 
 // Up to max_vars variables of up to max_states states.
-inline StateGraph random_state_graph(std::mt19937& rng, TermCombine combine, Sense sense, uint32_t max_vars = 7,
+inline StateGraph random_state_graph(std::mt19937& rng, Combine combine, Sense sense, uint32_t max_vars = 7,
                                      uint32_t max_states = 5) {
   auto below = [&](uint32_t n) { return static_cast<uint32_t>(rng() % n); };
   StateGraph g;

@@ -15,7 +15,7 @@
 #include "hodt/solve.hpp"
 #include "exact/min_max_degree.hpp"
 #include "generators.hpp"
-#include "objectives/factor_models.hpp"
+#include "exact/factor_models.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

@@ -216,10 +216,10 @@ TEST_CASE("--version and --help") {
   const CliResult h = run_cli({"--help"}, fake.host());
   CHECK(h.exit_code == 0);
   for (const auto& o : objectives())
-    CHECK(h.out.find("  " + std::string(o.id) + " [" + objective_unit(o.objective) + "]\n      " + o.summary + "\n") !=
+    CHECK(h.out.find("  " + std::string(o.id) + " [" + o.unit + "]\n      " + o.summary + "\n") !=
           std::string::npos);
-  CHECK(std::string(objective_unit(Objective::MinmaxEdgeNormalAngle)).rfind("radians", 0) == 0);
-  CHECK(std::string(objective_unit(Objective::MinmaxTriangleArea)) == "squared plane units");
+  CHECK(std::string(info(Objective::MinmaxEdgeNormalAngle).unit).rfind("radians", 0) == 0);
+  CHECK(std::string(info(Objective::MinmaxTriangleArea).unit) == "squared plane units");
 }
 
 namespace {

@@ -491,7 +491,7 @@ TEST_CASE("domain: the vertices' fans read the domain's terms: one fan window ov
         const double delaunay_value = evaluate(oi.objective, dt);
         WindowLimits all;
         all.per_window = 1u << 30, all.max_steps = 100'000'000;
-        if (oi.objective != Objective::MinTotalEdgeLength && objective_terms(oi.objective, dt).combine == TermCombine::Sum) {
+        if (oi.objective != Objective::MinTotalEdgeLength && objective_terms(oi.objective, dt).combine == Combine::Sum) {
           const auto best = improve_by_windows(dt, oi.objective, structure.candidates, dt, all);
           const double got = best ? evaluate(oi.objective, mesh_of(dt.coords, *best)) : delaunay_value;
           if (best) CHECK(is_k_order(mesh_of(dt.coords, *best), dt, k));

@@ -83,8 +83,8 @@ TEST_CASE("dual bound: never past the optimum, tight on most small graphs, clust
   int tight = 0, graphs = 0;
   for (int trial = 0; trial < 2000; ++trial) {
     const Sense sense = trial % 2 ? Sense::Max : Sense::Min;
-    const StateGraph g = trial % 4 < 2 ? random_state_graph(rng, TermCombine::Sum, sense)
-                                       : random_state_graph(rng, TermCombine::Sum, sense, 10, 3);
+    const StateGraph g = trial % 4 < 2 ? random_state_graph(rng, Combine::Sum, sense)
+                                       : random_state_graph(rng, Combine::Sum, sense, 10, 3);
     const double best = enumerate_best(g);
     for (double cluster : {1.0, 16.0, 1024.0}) {
       DualLimits limits;
@@ -134,7 +134,7 @@ TEST_CASE("dual bound: the same bound and states whatever the order of each fact
   int loose = 0;
   for (int trial = 0; trial < 900; ++trial) {
     const Sense sense = trial % 2 ? Sense::Max : Sense::Min;
-    StateGraph g = trial % 4 ? grid_graph(rng, 4 + trial % 3, 5, sense) : random_state_graph(rng, TermCombine::Sum, sense, 12, 6);
+    StateGraph g = trial % 4 ? grid_graph(rng, 4 + trial % 3, 5, sense) : random_state_graph(rng, Combine::Sum, sense, 12, 6);
     if (trial % 3 == 0)  // (wider values: relaxations that are not tight; else ties, classes to merge)
       for (StateFactor& f : g.factors)
         for (double& t : f.table) t = static_cast<double>(rng() % 40);
@@ -169,7 +169,7 @@ TEST_CASE("dual proof: proves the optimum, finds it from a worse incumbent, and 
   int proven = 0, found = 0;
   for (int trial = 0; trial < 2000; ++trial) {
     const Sense sense = trial % 2 ? Sense::Max : Sense::Min;
-    const StateGraph g = random_state_graph(rng, TermCombine::Sum, sense, 9, 4);
+    const StateGraph g = random_state_graph(rng, Combine::Sum, sense, 9, 4);
     const double best = enumerate_best(g);
     DualLimits limits;
     limits.cluster_entries = trial % 3 == 0 ? 1.0 : 64.0;
@@ -224,11 +224,11 @@ TEST_CASE("dual proof: grids wider than the DP allows, against the DP without li
 TEST_CASE("dual bound: only sums of moderate integers over whole graphs") {
   std::mt19937 rng(3);
   StateGraph g;
-  do g = random_state_graph(rng, TermCombine::Sum, Sense::Min);
+  do g = random_state_graph(rng, Combine::Sum, Sense::Min);
   while (g.factors.empty());
   CHECK(DualProof(g).applies());
   StateGraph max = g;
-  max.combine = TermCombine::Max;
+  max.combine = Combine::Max;
   CHECK(!DualProof(max).applies());
   StateGraph fraction = g;
   fraction.factors[0].table[0] = 0.5;

@@ -10,7 +10,7 @@
 #include "exact/exact.hpp"
 #include "exact/extrema.hpp"
 #include "generators.hpp"
-#include "objectives/factor_models.hpp"
+#include "exact/factor_models.hpp"
 #include "objectives/pair_measures.hpp"
 
 using namespace hodt;

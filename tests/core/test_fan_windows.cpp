@@ -24,7 +24,7 @@ TEST_CASE("fan windows: one window over everything equals brute force, small one
   for_small_k_instances({2u, 3u, 4u}, 150, 29, [&](uint32_t k, uint64_t seed, const FirstOrder& fo, const KOrderStructure& structure) {
     const Mesh& dt = fo.base;
     for (const auto& oi : objectives()) {
-      if (objective_terms(oi.objective, dt).combine != TermCombine::Sum) continue;
+      if (objective_terms(oi.objective, dt).combine != Combine::Sum) continue;
       const double delaunay_value = evaluate(oi.objective, dt);
       const double want = k_order_brute_force(fo, oi.objective, k, 20'000'000).value;
       CAPTURE(k);

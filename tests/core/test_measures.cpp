@@ -119,6 +119,32 @@ TEST_CASE("objective table and ids") {
   CHECK_FALSE(parse_objective("max-fun"));
 }
 
+#include <string>
+
+#include "objectives/objective_terms.hpp"
+#include "objectives/pair_measures.hpp"
+
+TEST_CASE("the objective table is what the engines read") {
+  for (const auto& i : objectives()) {
+    const std::string id = i.id;
+    INFO(id);
+    const ObjectiveTerms& d = objective_terms_inside(i.objective);
+    CHECK(d.combine == i.combine);
+    // The min-max objectives are named minmax-*; the rest are sums.
+    CHECK((i.combine == Combine::Max) == (id.rfind("minmax-", 0) == 0));
+    // The paper's NP-hardness results (Theorems 4, 5 and 6).
+    CHECK(i.polynomial == (id != "max-convex-edges" && id != "min-mixed-vertices" && id != "minmax-degree"));
+    CHECK((std::string(i.reference).rfind("NP-hard", 0) == 0) == !i.polynomial);
+    // Pairs: minmax-edge-* over edge-adjacent pairs, minmax-vertex-* over vertex-adjacent ones.
+    const bool edge_pairs = id.rfind("minmax-edge-", 0) == 0, vertex_pairs = id.rfind("minmax-vertex-", 0) == 0;
+    CHECK(is_pair_objective(i.objective) == (edge_pairs || vertex_pairs));
+    CHECK((d.site == TermSite::EdgePair) == edge_pairs);
+    CHECK((d.site == TermSite::VertexPair) == vertex_pairs);
+    CHECK((d.measure != PairMeasure::None) == (d.pair != nullptr));
+    CHECK(std::string(i.unit).size() > 0);
+  }
+}
+
 #include "generators.hpp"
 #include "geometry/portable_math.hpp"
 

@@ -42,7 +42,7 @@ TEST_CASE("fill graph: the region's triangulations, their best by entry and by c
       const KOrderStructure structure(dt, k, {});
       for (const auto& oi : objectives()) {
         const RegionEngine engine(dt, oi.objective, structure, k, RegionLimits{}, {});
-        if (engine.R.incomplete || engine.terms.terms().combine != TermCombine::Sum) continue;
+        if (engine.R.incomplete || engine.terms.terms().combine != Combine::Sum) continue;
         // Every listed triangulation of each region (the enumeration, not the DP).
         RegionLimits all;
         all.max_states_per_region = 1'000'000;
@@ -201,7 +201,7 @@ TEST_CASE("region threshold bound: min-max objectives over regions read through 
     const Mesh& dt = fo.base;
     for (const auto& oi : objectives()) {
       RegionEngine engine(dt, oi.objective, structure, k, RegionLimits{}, {});
-      if (engine.terms.terms().combine != TermCombine::Max || engine.R.incomplete) continue;
+      if (engine.terms.terms().combine != Combine::Max || engine.R.incomplete) continue;
       if (!forget_lists(engine.R)) continue;
       const double want = k_order_brute_force(fo, oi.objective, k).value;
       const double delaunay_value = evaluate(oi.objective, dt);
@@ -266,7 +266,7 @@ TEST_CASE("glued regions: the same k-OD triangulations, and a dual over them nev
     }
     // The dual over the glued regions, each read through its graph.
     for (const auto& oi : objectives()) {
-      if (objective_terms(oi.objective, dt).combine != TermCombine::Sum) continue;
+      if (objective_terms(oi.objective, dt).combine != Combine::Sum) continue;
       Regions forgotten = R;
       if (!forget_lists(forgotten)) continue;
       const RegionTerms forgotten_terms(dt, forgotten, oi.objective, &structure.candidates);

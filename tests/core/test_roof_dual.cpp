@@ -10,7 +10,7 @@
 #include "engines/max_flow.hpp"
 #include "engines/roof_dual.hpp"
 #include "generators.hpp"
-#include "objectives/factor_models.hpp"
+#include "exact/factor_models.hpp"
 
 using namespace hodt;
 using namespace hodt::test;

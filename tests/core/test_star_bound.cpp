@@ -93,7 +93,7 @@ TEST_CASE("star bound: sums only (counts, lengths); a triangulation's value is n
   int applied = 0;
   for (const auto& oi : objectives()) {
     CAPTURE(std::string(oi.id));
-    if (objective_terms(oi.objective, fo.base).combine == TermCombine::Max) {
+    if (objective_terms(oi.objective, fo.base).combine == Combine::Max) {
       CHECK(!star_bound(fo.base, oi.objective, structure.candidates, evaluate(oi.objective, fo.base)));
       continue;
     }
@@ -119,7 +119,7 @@ TEST_CASE("star decode: k-OD triangulations, never past the optimum, mostly at i
   for_small_k_instances({2u, 3u, 4u}, 60, 23, [&](uint32_t k, uint64_t seed, const FirstOrder& fo, const KOrderStructure& structure) {
     const Mesh& dt = fo.base;
     for (const auto& oi : objectives()) {
-      if (objective_terms(oi.objective, dt).combine != TermCombine::Sum) continue;
+      if (objective_terms(oi.objective, dt).combine != Combine::Sum) continue;
       StarBoundLimits limits;
       limits.decode = true;
       if (seed % 5 == 0) limits.decode_steps_per_vertex = 1;
@@ -199,7 +199,7 @@ TEST_CASE("star floor: min-max objectives, never past the brute-force optimum (k
       StarBoundLimits limits;
       if (seed % 4 == 0) limits.max_nodes_per_vertex = 1 + seed % 5;  // (some vertices say nothing)
       const auto f = star_floor(fo.base, oi.objective, structure.candidates, limits);
-      if (objective_terms(oi.objective, fo.base).combine != TermCombine::Max) {
+      if (objective_terms(oi.objective, fo.base).combine != Combine::Max) {
         CHECK(!f);
         continue;
       }

@@ -19,8 +19,8 @@ namespace {
 // objectives make).
 void for_random_graphs(uint32_t seed, const std::function<void(int, std::mt19937&, const StateGraph&)>& check) {
   std::mt19937 rng(seed);
-  const std::pair<TermCombine, Sense> kinds[] = {
-      {TermCombine::Sum, Sense::Min}, {TermCombine::Sum, Sense::Max}, {TermCombine::Max, Sense::Min}};
+  const std::pair<Combine, Sense> kinds[] = {
+      {Combine::Sum, Sense::Min}, {Combine::Sum, Sense::Max}, {Combine::Max, Sense::Min}};
   for (int trial = 0; trial < 3000; ++trial) {
     const StateGraph g = random_state_graph(rng, kinds[trial % 3].first, kinds[trial % 3].second);
     CAPTURE(trial);
@@ -85,13 +85,13 @@ TEST_CASE("state graph: min-max over independent components is the largest of th
   for (int trial = 0; trial < 1500; ++trial) {
     // Up to 4 random graphs side by side (variables renumbered), with a constant.
     StateGraph g;
-    g.combine = TermCombine::Max;
+    g.combine = Combine::Max;
     g.sense = Sense::Min;
     g.constant = static_cast<double>(rng() % 3);
     double want = g.constant;
     const uint32_t parts = 1 + rng() % 4;
     for (uint32_t p = 0; p < parts; ++p) {
-      const StateGraph h = random_state_graph(rng, TermCombine::Max, Sense::Min, 5, 4);
+      const StateGraph h = random_state_graph(rng, Combine::Max, Sense::Min, 5, 4);
       const uint32_t base = static_cast<uint32_t>(g.domain.size());
       g.domain.insert(g.domain.end(), h.domain.begin(), h.domain.end());
       g.unary.insert(g.unary.end(), h.unary.begin(), h.unary.end());
@@ -122,7 +122,7 @@ TEST_CASE("state graph: min-max windows follow the worst term from component to 
   // turn at the third, the second, then the first (windows before the worst term
   // cannot lower it, so a pass skips them; another pass comes back).
   StateGraph g;
-  g.combine = TermCombine::Max;
+  g.combine = Combine::Max;
   g.sense = Sense::Min;
   g.domain = {2, 2, 2};
   g.unary = {{8, 1}, {9, 2}, {10, 3}};
@@ -135,7 +135,7 @@ TEST_CASE("state graph: arc consistency refutes a min-max threshold only at or b
   std::mt19937 rng(23);
   int refuted = 0, kept_above = 0;
   for (int trial = 0; trial < 3000; ++trial) {
-    const StateGraph g = random_state_graph(rng, TermCombine::Max, Sense::Min);
+    const StateGraph g = random_state_graph(rng, Combine::Max, Sense::Min);
     const double best = enumerate_best(g);
     CAPTURE(trial);
     // (Tables hold 0 to 4: every threshold between them.)
@@ -148,5 +148,5 @@ TEST_CASE("state graph: arc consistency refutes a min-max threshold only at or b
   }
   CHECK(refuted > 3000);  // (thresholds at or below the optimum, refuted: most of them)
   CHECK(kept_above > 0);
-  CHECK(!none_below(random_state_graph(rng, TermCombine::Sum, Sense::Min), 1e9));  // (min-max only)
+  CHECK(!none_below(random_state_graph(rng, Combine::Sum, Sense::Min), 1e9));  // (min-max only)
 }

@@ -173,6 +173,11 @@ describe('--version and --help', () => {
       expect(line, o.id).toBeGreaterThan(0);
       const [, unit] = /\[(.*)\]$/.exec(help.out.split('\n')[line]!)!;
       expect(unit, o.id).toMatch(units[o.id]!);
+      expect(unit, o.id).toBe(o.unit);
+      // The rest of the core's objective table, as the bindings give it.
+      expect(o.combine, o.id).toBe(o.id.startsWith('minmax-') ? 'max' : 'sum');
+      expect(o.polynomial, o.id).toBe(!['max-convex-edges', 'min-mixed-vertices', 'minmax-degree'].includes(o.id));
+      expect(o.reference.startsWith('NP-hard'), o.id).toBe(!o.polynomial);
       expect(help.out.split('\n')[line + 1]!.trim()).toBe(o.summary);
     }
   });

@@ -26,8 +26,16 @@ export interface ObjectiveInfo {
   id: ObjectiveId;
   /** Whether the objective is minimised or maximised. */
   sense: 'min' | 'max';
+  /** How its local terms make the value: their sum, or their largest (min-max). */
+  combine: 'sum' | 'max';
   /** Counts and degrees are integers; ratios, angles and lengths are not. */
   integral: boolean;
+  /** A polynomial exact algorithm at first order; false: NP-hard (exact by the factor graph engine where the instance allows, approximated with a proven bound otherwise). */
+  polynomial: boolean;
+  /** The unit of its value, e.g. `'ratio, >= 1'`, `'radians, 0 to pi'`, `'count'`. */
+  unit: string;
+  /** The result of the paper it rests on, e.g. `'Thm 3, 2-SAT'`. */
+  reference: string;
   /** One sentence on what it optimises. */
   summary: string;
 }

@@ -29,12 +29,25 @@ constexpr size_t kNumObjectives = 13;
 
 enum class Sense : uint8_t { Min, Max };
 
+// How an objective's local terms make its value: their sum (counts, lengths) or
+// their largest (the min-max objectives). Every engine reads this one enum.
+enum class Combine : uint8_t { Sum, Max };
+// Two values combined (the identity is 0: every term is >= 0, and a max over nothing is 0).
+inline double combine(Combine c, double a, double b) { return c == Combine::Sum ? a + b : (a > b ? a : b); }
+
+// What the objective table knows of each objective; the solvers, the factor
+// models, the help texts and the bindings read it here rather than keeping
+// their own list.
 struct ObjectiveInfo {
   Objective objective;
-  const char* id;       // e.g. "max-convex-vertices"
+  const char* id;  // e.g. "max-convex-vertices"
   Sense sense;
-  bool integral;        // counts and degrees (exact integers)
-  const char* summary;  // one line, for help texts
+  Combine combine;
+  bool integral;           // counts and degrees (exact integers)
+  bool polynomial;         // a polynomial exact algorithm at first order (else NP-hard)
+  const char* unit;        // of the value, e.g. "ratio, >= 1"
+  const char* reference;   // the result it rests on, e.g. "Thm 3, 2-SAT"
+  const char* summary;     // one line, for help texts
 };
 
 const std::array<ObjectiveInfo, kNumObjectives>& objectives();

@@ -7,7 +7,7 @@
 #include "hodt/skeleton.hpp"
 #include "approx/baker.hpp"
 #include "exact/min_max_degree.hpp"
-#include "objectives/factor_models.hpp"
+#include "exact/factor_models.hpp"
 
 namespace hodt {
 
@@ -178,15 +178,12 @@ Solution degree_solution(const FirstOrder& fo, const SolveOptions& options) {
 }  // namespace
 
 Solution approximate(const FirstOrder& fo, Objective o, const SolveOptions& options, ReducedModel* built) {
-  switch (o) {
-    case Objective::MaxConvexEdges:
-    case Objective::MinMixedVertices:
-      return baker_solution(fo, o, options, built);
-    case Objective::MinmaxDegree:
-      return degree_solution(fo, options);
-    default:
-      throw std::logic_error("approximate: polynomial objectives are solved exactly");
-  }
+  if (info(o).polynomial) throw std::logic_error("approximate: polynomial objectives are solved exactly");
+  // Baker's shifting approximates any sum of local terms (Theorems 7 and 8);
+  // the degree has its own bound.
+  if (info(o).combine == Combine::Sum) return baker_solution(fo, o, options, built);
+  if (o == Objective::MinmaxDegree) return degree_solution(fo, options);
+  throw std::logic_error(std::string("approximate: no approximation for ") + info(o).id);
 }
 
 }  // namespace hodt

@@ -8,25 +8,6 @@ namespace hodt {
 
 const char* version() { return HODT_VERSION; }
 
-const char* objective_unit(Objective o) {
-  switch (o) {
-    case Objective::MaxConvexVertices:
-    case Objective::MinLocalMinima:
-    case Objective::MinLocalExtrema:
-    case Objective::MaxConvexEdges:
-    case Objective::MinMixedVertices: return "count";
-    case Objective::MinmaxDegree: return "count (neighbours)";
-    case Objective::MinmaxEdgeAreaRatio:
-    case Objective::MinmaxVertexAreaRatio: return "ratio, >= 1";
-    case Objective::MinmaxEdgeNormalAngle:
-    case Objective::MinmaxVertexNormalAngle: return "radians, 0 to pi";
-    case Objective::MinmaxEdgeEnclosingCircle: return "plane units (a radius)";
-    case Objective::MinTotalEdgeLength: return "plane units";
-    case Objective::MinmaxTriangleArea: return "squared plane units";
-  }
-  return "";
-}
-
 std::string cli_help() {
   std::string s =
       "usage: hodt stats FILE [--order K] [--dedupe first] [--nodata V] [--classes C]\n"
@@ -91,7 +72,7 @@ std::string cli_help() {
       "\n"
       "Objectives (--objective ID), each with the unit of its value:\n";
   for (const auto& o : objectives())
-    s += "  " + std::string(o.id) + " [" + objective_unit(o.objective) + "]\n      " + o.summary + "\n";
+    s += "  " + std::string(o.id) + " [" + o.unit + "]\n      " + o.summary + "\n";
   s +=
       "\n"
       "Prints JSON on stdout. Exit codes: 0 ok, 2 bad input or usage, 3 refused (a limit).\n"

@@ -8,8 +8,6 @@ namespace hodt {
 
 // The package version (package.json), e.g. "0.1.0".
 const char* version();
-// The unit of an objective's value: "count", "radians", "plane units", ...
-const char* objective_unit(Objective o);
 // Usage, every option, and every objective with its meaning and unit.
 std::string cli_help();
 

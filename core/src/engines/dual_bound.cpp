@@ -547,7 +547,7 @@ Reduced reduced_bounds(const StateGraph& g, const Ascent& a, double lb, const Pr
 }  // namespace
 
 bool integral_sum(const StateGraph& g) {
-  if (g.combine != TermCombine::Sum || !small_integer(g.constant)) return false;
+  if (g.combine != Combine::Sum || !small_integer(g.constant)) return false;
   for (const auto& u : g.unary)
     if (u.empty() || !std::all_of(u.begin(), u.end(), small_integer)) return false;
   for (const StateFactor& f : g.factors)

@@ -20,13 +20,10 @@ struct Factor {
   std::vector<double> table;    // 2^|scope| values; bit k of the index is scope[k]
 };
 
-// The objective value of an assignment is constant (+) or (max) the factors' values.
-enum class Combine : uint8_t { Sum, Max };
-
 struct FactorGraph {
   uint32_t num_vars = 0;
   Sense sense = Sense::Min;
-  Combine combine = Combine::Sum;
+  Combine combine = Combine::Sum;  // constant (+) or (max) the factors' values
   double constant = 0;
   std::vector<Factor> factors;
   // Terms left out because they were too large to tabulate (DpLimits): the graph

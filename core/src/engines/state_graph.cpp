@@ -15,7 +15,7 @@ namespace hodt {
 namespace {
 
 struct Ops {
-  TermCombine combine;
+  Combine combine;
   Sense sense;
   double zero() const { return 0; }  // every term is >= 0
   double add(double a, double b) const { return hodt::combine(combine, a, b); }
@@ -367,7 +367,7 @@ StateDpResult eliminate(const StateGraph& input, const StateDpLimits& limits) {
           }
         }
       };
-      if (g.combine == TermCombine::Sum) rows([](double a, double b) { return a + b; });
+      if (g.combine == Combine::Sum) rows([](double a, double b) { return a + b; });
       else rows([&](double a, double b) { return ops.add(a, b); });
       work += static_cast<double>(total);
       if (limits.progress && !limits.progress(work, order.work)) throw Cancelled();
@@ -417,7 +417,7 @@ struct Threshold {
 Threshold threshold_graph(const StateGraph& g, double t, const std::vector<double>& top) {
   Threshold th;
   StateGraph& h = th.graph;
-  h.combine = TermCombine::Max;
+  h.combine = Combine::Max;
   h.sense = Sense::Min;
   h.constant = g.constant <= t ? 0 : 1;
   const size_t n = g.domain.size();
@@ -505,7 +505,7 @@ StateDpResult bottleneck(const StateGraph& g, const StateDpLimits& limits) {
 }  // namespace
 
 StateDpResult solve_states(const StateGraph& g, const StateDpLimits& limits) {
-  if (g.combine == TermCombine::Max && g.sense == Sense::Min) return bottleneck(g, limits);
+  if (g.combine == Combine::Max && g.sense == Sense::Min) return bottleneck(g, limits);
   return eliminate(g, limits);
 }
 
@@ -557,7 +557,7 @@ std::vector<uint32_t> improve_by_windows(const StateGraph& g, std::vector<uint32
   // Min-max: a window whose worst term is below the whole's cannot lower the
   // whole's (its search would only rearrange terms that do not count).
   const Ops ops{g.combine, g.sense};
-  const bool max_only = g.combine == TermCombine::Max;
+  const bool max_only = g.combine == Combine::Max;
   double whole = max_only ? evaluate_states(g, x) : 0.0;
   for (int pass = 0;; ++pass) {
     bool improved = false;
@@ -645,7 +645,7 @@ namespace {
 // What a term we cannot read may contribute at best.
 double unknown(const StateGraph& g, uint64_t terms) {
   if (g.sense == Sense::Min) return 0.0;  // every term is >= 0
-  return g.combine == TermCombine::Sum ? g.term_max * static_cast<double>(terms) : g.term_max;
+  return g.combine == Combine::Sum ? g.term_max * static_cast<double>(terms) : g.term_max;
 }
 
 // Each factor at its best on its own.
@@ -701,7 +701,7 @@ double relaxation_bound(const StateGraph& g, StateDpLimits limits) {
 }
 
 bool none_below(const StateGraph& g, double t, const Progress& progress) {
-  if (g.combine != TermCombine::Max || g.sense != Sense::Min) return false;
+  if (g.combine != Combine::Max || g.sense != Sense::Min) return false;
   if (!(g.constant < t)) return true;
   const size_t n = g.domain.size();
   std::vector<std::vector<uint8_t>> alive(n);

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "hodt/objectives.hpp"
+#include "hodt/progress.hpp"
 #include "engines/factor_graph.hpp"
-#include "objectives/objective_terms.hpp"
 
 namespace hodt {
 
@@ -25,7 +25,7 @@ struct StateFactor {
 };
 
 struct StateGraph {
-  TermCombine combine = TermCombine::Sum;
+  Combine combine = Combine::Sum;
   Sense sense = Sense::Min;
   double term_max = INFINITY;  // a term's largest possible value (relaxations)
   double constant = 0;

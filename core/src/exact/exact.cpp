@@ -8,7 +8,8 @@
 #include "hodt/skeleton.hpp"
 #include "exact/bottleneck.hpp"
 #include "exact/extrema.hpp"
-#include "first_order/free_quads.hpp"
+#include "exact/free_quads.hpp"
+#include "objectives/objective_terms.hpp"
 #include "objectives/pair_measures.hpp"
 
 #include <algorithm>
@@ -131,33 +132,34 @@ BottleneckModel pair_model(const FirstOrder& fo, Objective o, const Progress& pr
     for (size_t i = 0; i < n; ++i)
       if (triangle_inside(m, t[i])) inside.push_back(t[i]);
   };
-  switch (o) {
-    case Objective::MinmaxEdgeAreaRatio: return edge_pair_model(fo, ratio, progress);
-    case Objective::MinmaxEdgeNormalAngle: return edge_pair_model(fo, angle, progress);
-    case Objective::MinmaxEdgeEnclosingCircle: return edge_pair_model(fo, circle, progress);
-    case Objective::MinmaxVertexAreaRatio:
-      return vertex_pair_model(fo, ratio, progress,
-                               [&](const Tri* t, size_t n, double cut) {
-                                 if (!domain) return star_area_ratio_below(m, t, n, cut);
-                                 inside_of(t, n);
-                                 return star_area_ratio_below(m, inside.data(), inside.size(), cut);
-                               });
-    case Objective::MinmaxVertexNormalAngle:
-      return vertex_pair_model(fo, angle, progress,
-                               [&](const Tri* t, size_t n, double cut) {
-                                 if (!domain) return star_normal_angle_below(m, t, n, cut);
-                                 inside_of(t, n);
-                                 return star_normal_angle_below(m, inside.data(), inside.size(), cut);
-                               });
-    default: throw std::logic_error("not a pair objective");
+  const ObjectiveTerms& d = objective_terms_inside(o);
+  const bool edge = d.site == TermSite::EdgePair;
+  switch (d.measure) {
+    case PairMeasure::AreaRatio:
+      if (edge) return edge_pair_model(fo, ratio, progress);
+      return vertex_pair_model(fo, ratio, progress, [&](const Tri* t, size_t n, double cut) {
+        if (!domain) return star_area_ratio_below(m, t, n, cut);
+        inside_of(t, n);
+        return star_area_ratio_below(m, inside.data(), inside.size(), cut);
+      });
+    case PairMeasure::NormalAngle:
+      if (edge) return edge_pair_model(fo, angle, progress);
+      return vertex_pair_model(fo, angle, progress, [&](const Tri* t, size_t n, double cut) {
+        if (!domain) return star_normal_angle_below(m, t, n, cut);
+        inside_of(t, n);
+        return star_normal_angle_below(m, inside.data(), inside.size(), cut);
+      });
+    case PairMeasure::EnclosingCircle:
+      if (edge) return edge_pair_model(fo, circle, progress);
+      break;
+    case PairMeasure::None: break;
   }
+  throw std::logic_error("not an objective over edge pairs or vertex pairs");
 }
 
 }  // namespace
 
-bool has_polynomial_exact(Objective o) {
-  return o != Objective::MaxConvexEdges && o != Objective::MinMixedVertices && o != Objective::MinmaxDegree;
-}
+bool has_polynomial_exact(Objective o) { return info(o).polynomial; }
 
 Solution solve_polynomial(const FirstOrder& fo, Objective o, const ExactOptions& options) {
   Solution s;
@@ -166,26 +168,22 @@ Solution solve_polynomial(const FirstOrder& fo, Objective o, const ExactOptions&
   s.optimal = true;
   const Progress& progress = options.limits.progress;
   double expected = -INFINITY;  // the search's optimum, for the critical pair
-  switch (o) {
-    case Objective::MaxConvexVertices: s.choice = reflex_diagonals(fo, options.limits); break;
-    case Objective::MinTotalEdgeLength: s.choice = shorter_diagonals(fo, options.limits); break;
-    case Objective::MinmaxTriangleArea: s.choice = smaller_largest_triangles(fo, progress); break;
-    case Objective::MinLocalMinima: s.choice = fewest_local_minima(fo, options.limits); break;
-    case Objective::MinLocalExtrema: s.choice = fewest_local_extrema(fo, options.limits); break;
-    case Objective::MinmaxEdgeAreaRatio:
-    case Objective::MinmaxEdgeNormalAngle:
-    case Objective::MinmaxEdgeEnclosingCircle:
-    case Objective::MinmaxVertexAreaRatio:
-    case Objective::MinmaxVertexNormalAngle: {
-      BottleneckResult r = solve_bottleneck(pair_model(fo, o, progress), progress,
-                                            options.explanation ? &options.explanation->search.emplace() : nullptr);
-      s.choice = std::move(r.choice);
-      expected = r.value;
-      if (options.trace) s.trace = std::move(r.trace);
-      break;
+  if (!info(o).polynomial) throw LimitError(std::string(info(o).id) + " is NP-hard: it has no polynomial exact algorithm");
+  if (is_pair_objective(o)) {  // the paper's bottleneck search over its measure's model
+    BottleneckResult r = solve_bottleneck(pair_model(fo, o, progress), progress,
+                                          options.explanation ? &options.explanation->search.emplace() : nullptr);
+    s.choice = std::move(r.choice);
+    expected = r.value;
+    if (options.trace) s.trace = std::move(r.trace);
+  } else {
+    switch (o) {
+      case Objective::MaxConvexVertices: s.choice = reflex_diagonals(fo, options.limits); break;
+      case Objective::MinTotalEdgeLength: s.choice = shorter_diagonals(fo, options.limits); break;
+      case Objective::MinmaxTriangleArea: s.choice = smaller_largest_triangles(fo, progress); break;
+      case Objective::MinLocalMinima: s.choice = fewest_local_minima(fo, options.limits); break;
+      case Objective::MinLocalExtrema: s.choice = fewest_local_extrema(fo, options.limits); break;
+      default: throw std::logic_error(std::string(info(o).id) + ": the table calls it polynomial, but no algorithm is given");
     }
-    default:
-      throw LimitError(std::string(info(o).id) + " is NP-hard: it has no polynomial exact algorithm");
   }
   const Mesh mesh = triangulate(fo, s.choice);
   s.critical = critical_pair(o, mesh, progress, expected);

@@ -43,6 +43,8 @@ double is_class(const Mesh& m, const Star& s, VertexClass c) {
 
 double convex_vertex(const Mesh& m, const Star& s) { return is_class(m, s, kConvex); }
 double mixed_vertex(const Mesh& m, const Star& s) { return is_class(m, s, kMixed); }
+double convex_of_class(VertexClass c) { return c == kConvex; }
+double mixed_of_class(VertexClass c) { return c == kMixed; }
 // The class depends on the planes through v with every neighbour below, and
 // with every neighbour above (star_cone.hpp): keep what defines them. A vertex
 // with no plane below is not convex, whatever comes: its mark is all it keeps.
@@ -99,45 +101,62 @@ double pair_normal_angle_above(const Mesh& m, const Tri& s, const Tri& t, double
 double pair_enclosing_circle_above(const Mesh& m, const Tri& s, const Tri& t, double cut) {
   return pair_enclosing_circle(m, s, t, cut);
 }
+using PairFunction = double (*)(const Mesh&, const Tri&, const Tri&, double);
+PairFunction pair_function(PairMeasure p) {
+  switch (p) {
+    case PairMeasure::AreaRatio: return pair_area_ratio_above;
+    case PairMeasure::NormalAngle: return pair_normal_angle_above;
+    case PairMeasure::EnclosingCircle: return pair_enclosing_circle_above;
+    case PairMeasure::None: break;
+  }
+  return nullptr;
+}
 
 std::array<ObjectiveTerms, kNumObjectives> make_table() {
   using S = TermSite;
-  using C = TermCombine;
   std::array<ObjectiveTerms, kNumObjectives> t{};
-  auto set = [&](Objective o, ObjectiveTerms d) { t[static_cast<size_t>(o)] = d; };
-  ObjectiveTerms convex{S::InteriorVertex, C::Sum, kCount, convex_vertex};
-  convex.drop_neighbors = convex_drop_neighbors;
+  auto set = [&](Objective o, ObjectiveTerms d) {
+    d.combine = info(o).combine;
+    d.pair = pair_function(d.measure);
+    t[static_cast<size_t>(o)] = d;
+  };
+  auto pairs = [](TermSite site, PairMeasure measure) {
+    ObjectiveTerms d{site, kUnbounded};
+    d.measure = measure;
+    return d;
+  };
+  ObjectiveTerms convex{S::InteriorVertex, kCount, convex_vertex};
+  convex.term_of_vertex_class = convex_of_class, convex.drop_neighbors = convex_drop_neighbors;
   set(Objective::MaxConvexVertices, convex);
-  ObjectiveTerms mixed{S::InteriorVertex, C::Sum, kCount, mixed_vertex};
-  mixed.drop_neighbors = mixed_drop_neighbors;
+  ObjectiveTerms mixed{S::InteriorVertex, kCount, mixed_vertex};
+  mixed.term_of_vertex_class = mixed_of_class, mixed.drop_neighbors = mixed_drop_neighbors;
   set(Objective::MinMixedVertices, mixed);
-  ObjectiveTerms minima{S::InteriorVertex, C::Sum, kCount, local_minimum};
+  ObjectiveTerms minima{S::InteriorVertex, kCount, local_minimum};
   minima.neighbor_class = height_class, minima.term_of_classes = minimum_of_classes, minima.classes = 3;
   set(Objective::MinLocalMinima, minima);
-  ObjectiveTerms extrema{S::InteriorVertex, C::Sum, kCount, local_extremum};
+  ObjectiveTerms extrema{S::InteriorVertex, kCount, local_extremum};
   extrema.neighbor_class = height_class, extrema.term_of_classes = extremum_of_classes, extrema.classes = 3;
   set(Objective::MinLocalExtrema, extrema);
-  ObjectiveTerms max_degree{S::Vertex, C::Max, kUnbounded, degree};
+  ObjectiveTerms max_degree{S::Vertex, kUnbounded, degree};
   max_degree.term_of_degree = degree_term, max_degree.global_bound = degree_bound;
   set(Objective::MinmaxDegree, max_degree);
-  set(Objective::MaxConvexEdges, {S::InteriorEdge, C::Sum, kCount, nullptr, convex_edge});
-  ObjectiveTerms total_length{S::Edge, C::Sum, kUnbounded, nullptr, length};
+  set(Objective::MaxConvexEdges, {S::InteriorEdge, kCount, nullptr, convex_edge});
+  ObjectiveTerms total_length{S::Edge, kUnbounded, nullptr, length};
   total_length.edge_reads_apexes = false;
   set(Objective::MinTotalEdgeLength, total_length);
-  ObjectiveTerms largest_area{S::Triangle, C::Max, kUnbounded, nullptr, nullptr, area};
+  ObjectiveTerms largest_area{S::Triangle, kUnbounded, nullptr, nullptr, area};
   largest_area.global_bound = area_bound;
   set(Objective::MinmaxTriangleArea, largest_area);
-  ObjectiveTerms edge_ratio{S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_area_ratio_above};
+  using P = PairMeasure;
+  ObjectiveTerms edge_ratio = pairs(S::EdgePair, P::AreaRatio);
   edge_ratio.global_bound = ratio_bound;
   set(Objective::MinmaxEdgeAreaRatio, edge_ratio);
-  set(Objective::MinmaxEdgeNormalAngle, {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_normal_angle_above});
-  set(Objective::MinmaxEdgeEnclosingCircle,
-      {S::EdgePair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_enclosing_circle_above});
-  ObjectiveTerms vertex_ratio{S::VertexPair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_area_ratio_above};
+  set(Objective::MinmaxEdgeNormalAngle, pairs(S::EdgePair, P::NormalAngle));
+  set(Objective::MinmaxEdgeEnclosingCircle, pairs(S::EdgePair, P::EnclosingCircle));
+  ObjectiveTerms vertex_ratio = pairs(S::VertexPair, P::AreaRatio);
   vertex_ratio.global_bound = ratio_bound;
   set(Objective::MinmaxVertexAreaRatio, vertex_ratio);
-  set(Objective::MinmaxVertexNormalAngle,
-      {S::VertexPair, C::Max, kUnbounded, nullptr, nullptr, nullptr, pair_normal_angle_above});
+  set(Objective::MinmaxVertexNormalAngle, pairs(S::VertexPair, P::NormalAngle));
   return t;
 }
 
@@ -146,6 +165,7 @@ std::array<ObjectiveTerms, kNumObjectives> make_table() {
 std::array<ObjectiveTerms, kNumObjectives> with_domain(std::array<ObjectiveTerms, kNumObjectives> t) {
   for (ObjectiveTerms& d : t) {
     d.neighbor_class = nullptr, d.term_of_classes = nullptr, d.drop_neighbors = nullptr, d.term_of_degree = nullptr;
+    d.term_of_vertex_class = nullptr;
     d.global_bound = nullptr;  // (counts over all triangles; a domain may leave no pair)
     d.edge_reads_apexes = true;
     d.domain = true;
@@ -260,7 +280,7 @@ double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
   };
   report(progress, 0, 1);  // (the phase begins, however few its terms)
   auto add = [&](double t) {
-    if (d.combine == TermCombine::Sum) sum.add(t);
+    if (d.combine == Combine::Sum) sum.add(t);
     else max = std::max(max, t);
   };
   // Within a domain each triangle is decided inside once; a term whose triangles
@@ -305,7 +325,7 @@ double evaluate_terms(Objective o, const Mesh& m, const Progress& progress) {
       if (!d.domain || inside[t]) add(triangle_term(plain, m, base_triangle(m, t)));
     }
   }
-  return d.combine == TermCombine::Sum ? sum.value() : max;
+  return d.combine == Combine::Sum ? sum.value() : max;
 }
 
 }  // namespace hodt

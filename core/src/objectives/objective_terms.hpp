@@ -8,10 +8,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "hodt/measures.hpp"
 #include "hodt/mesh.hpp"
 #include "hodt/objectives.hpp"
 #include "hodt/progress.hpp"
 #include "hodt/skeleton.hpp"
+#include "objectives/pair_measures.hpp"
 
 namespace hodt {
 
@@ -25,8 +27,6 @@ enum class TermSite : uint8_t {
   EdgePair,        // every pair of triangles sharing an edge (a max over pairs)
   VertexPair,      // every pair of triangles sharing a vertex (a max over pairs)
 };
-
-enum class TermCombine : uint8_t { Sum, Max };
 
 constexpr uint32_t kNoApex = UINT32_MAX;
 
@@ -50,7 +50,6 @@ void star_neighbors(uint32_t v, const std::vector<Tri>& triangles, std::vector<u
 
 struct ObjectiveTerms {
   TermSite site;
-  TermCombine combine;
   // Each term's value lies in [0, term_max] (INFINITY when unbounded): what a
   // relaxation may assume of a term it cannot tabulate.
   double term_max;
@@ -63,6 +62,8 @@ struct ObjectiveTerms {
   // when the measure is at most cut (a max that already holds cut loses nothing,
   // and most pairs then need no accurate measure). cut = -INFINITY: the measure.
   double (*pair)(const Mesh& points, const Tri& s, const Tri& t, double cut) = nullptr;
+  // Pair sites: which measure `pair` is (set from it by the table).
+  PairMeasure measure = PairMeasure::None;
   // Optional, for vertex terms that read only which classes the neighbours fall
   // in (above, below or level with the vertex): the class of neighbour w of v
   // (< 32), and the term from the set of classes present, as a bit mask. A fan is
@@ -70,6 +71,10 @@ struct ObjectiveTerms {
   uint32_t (*neighbor_class)(const Mesh& points, uint32_t v, uint32_t w) = nullptr;
   double (*term_of_classes)(uint32_t mask) = nullptr;
   uint32_t classes = 0;  // how many classes there are (neighbor_class < classes)
+  // Optional, for vertex terms that read only the vertex's class (convex,
+  // concave, flat, mixed): the term of the class. A star's class over the
+  // choices of its quads is then found once per vertex (neighbourhood_classes.hpp).
+  double (*term_of_vertex_class)(VertexClass c) = nullptr;
   // Optional, for vertex terms over neighbour sets: drops from nb (v's
   // neighbours so far, sorted) those that cannot change v's term, whatever
   // neighbours come next, as long as every vertex of `fixed` (the ends of v's
@@ -85,6 +90,8 @@ struct ObjectiveTerms {
   // Delaunay one; an area ratio is at least 1): a result that meets it is
   // optimal at every order.
   double (*global_bound)(const Mesh& delaunay) = nullptr;
+  // How the terms combine: the objective table's (info(o).combine).
+  Combine combine = Combine::Sum;
   // Edge terms: whether they read the apexes at all (a length does not).
   bool edge_reads_apexes = true;
   // Measured within a domain (domain.hpp): the terms below read only inside
@@ -134,8 +141,6 @@ double edge_term(const ObjectiveTerms& d, const Mesh& points, uint32_t u, uint32
 // One triangle term (0 for a triangle outside the domain).
 double triangle_term(const ObjectiveTerms& d, const Mesh& points, const Tri& t);
 
-// The identity of the combination (0: every term is >= 0, and a max over nothing is 0).
-inline double combine(TermCombine c, double a, double b) { return c == TermCombine::Sum ? a + b : (a > b ? a : b); }
 
 // The objective's value on a triangulation, from its terms alone (progress: now
 // and then, with the elements done; false cancels).

@@ -8,39 +8,54 @@
 
 namespace hodt {
 
-const std::array<ObjectiveInfo, kNumObjectives>& objectives() {
-  static const std::array<ObjectiveInfo, kNumObjectives> table = {{
-      {Objective::MaxConvexVertices, "max-convex-vertices", Sense::Max, true,
-       "Most convex interior vertices (all neighbours on or below a plane through the vertex)."},
-      {Objective::MinmaxEdgeAreaRatio, "minmax-edge-area-ratio", Sense::Min, false,
-       "Smallest worst area ratio (larger over smaller) of two triangles sharing an edge."},
-      {Objective::MinmaxEdgeNormalAngle, "minmax-edge-normal-angle", Sense::Min, false,
-       "Smallest worst angle between the normals of two triangles sharing an edge."},
-      {Objective::MinmaxEdgeEnclosingCircle, "minmax-edge-enclosing-circle", Sense::Min, false,
-       "Smallest worst radius of the smallest circle around two triangles sharing an edge."},
-      {Objective::MinmaxVertexAreaRatio, "minmax-vertex-area-ratio", Sense::Min, false,
-       "Smallest worst area ratio of two triangles sharing a vertex."},
-      {Objective::MinmaxVertexNormalAngle, "minmax-vertex-normal-angle", Sense::Min, false,
-       "Smallest worst angle between the normals of two triangles sharing a vertex."},
-      {Objective::MinLocalMinima, "min-local-minima", Sense::Min, true,
-       "Fewest local minima (interior vertices whose neighbours are all higher): pits that trap water."},
-      {Objective::MinLocalExtrema, "min-local-extrema", Sense::Min, true,
-       "Fewest local minima plus local maxima."},
-      {Objective::MinTotalEdgeLength, "min-total-edge-length", Sense::Min, false,
-       "Shortest total plane length of all edges."},
-      {Objective::MinmaxTriangleArea, "minmax-triangle-area", Sense::Min, false,
-       "Smallest largest triangle (plane area)."},
-      {Objective::MaxConvexEdges, "max-convex-edges", Sense::Max, true,
-       "Most convex (ridge) interior edges. NP-hard."},
-      {Objective::MinMixedVertices, "min-mixed-vertices", Sense::Min, true,
-       "Fewest mixed interior vertices (neither convex, concave nor flat). NP-hard."},
-      {Objective::MinmaxDegree, "minmax-degree", Sense::Min, true,
-       "Smallest maximum vertex degree. NP-hard."},
-  }};
-  return table;
-}
+namespace {
 
-const ObjectiveInfo& info(Objective o) { return objectives()[static_cast<size_t>(o)]; }
+// objective, id, sense, combine, integral, polynomial, unit, reference, summary
+using S = Sense;
+using C = Combine;
+using O = Objective;
+constexpr std::array<ObjectiveInfo, kNumObjectives> kTable = {{
+    {O::MaxConvexVertices, "max-convex-vertices", S::Max, C::Sum, true, true, "count", "Thm 1, O(n log n)",
+     "Most convex interior vertices (all neighbours on or below a plane through the vertex)."},
+    {O::MinmaxEdgeAreaRatio, "minmax-edge-area-ratio", S::Min, C::Max, false, true, "ratio, >= 1", "Thm 2, 2-SAT",
+     "Smallest worst area ratio (larger over smaller) of two triangles sharing an edge."},
+    {O::MinmaxEdgeNormalAngle, "minmax-edge-normal-angle", S::Min, C::Max, false, true, "radians, 0 to pi", "Thm 2, 2-SAT",
+     "Smallest worst angle between the normals of two triangles sharing an edge."},
+    {O::MinmaxEdgeEnclosingCircle, "minmax-edge-enclosing-circle", S::Min, C::Max, false, true, "plane units (a radius)", "Sec 1 remark, 2-SAT",
+     "Smallest worst radius of the smallest circle around two triangles sharing an edge."},
+    {O::MinmaxVertexAreaRatio, "minmax-vertex-area-ratio", S::Min, C::Max, false, true, "ratio, >= 1", "Thm 3, 2-SAT",
+     "Smallest worst area ratio of two triangles sharing a vertex."},
+    {O::MinmaxVertexNormalAngle, "minmax-vertex-normal-angle", S::Min, C::Max, false, true, "radians, 0 to pi", "Thm 3, 2-SAT",
+     "Smallest worst angle between the normals of two triangles sharing a vertex."},
+    {O::MinLocalMinima, "min-local-minima", S::Min, C::Sum, true, true, "count", "[10], O(n log n)",
+     "Fewest local minima (interior vertices whose neighbours are all higher): pits that trap water."},
+    {O::MinLocalExtrema, "min-local-extrema", S::Min, C::Sum, true, true, "count", "[10]",
+     "Fewest local minima plus local maxima."},
+    {O::MinTotalEdgeLength, "min-total-edge-length", S::Min, C::Sum, false, true, "plane units", "[10]",
+     "Shortest total plane length of all edges."},
+    {O::MinmaxTriangleArea, "minmax-triangle-area", S::Min, C::Max, false, true, "squared plane units", "[10]",
+     "Smallest largest triangle (plane area)."},
+    {O::MaxConvexEdges, "max-convex-edges", S::Max, C::Sum, true, false, "count", "NP-hard (Thm 6); PTAS Thm 7; k-OD Thm 10",
+     "Most convex (ridge) interior edges. NP-hard."},
+    {O::MinMixedVertices, "min-mixed-vertices", S::Min, C::Sum, true, false, "count", "NP-hard (Thm 4); PTAS Thm 8",
+     "Fewest mixed interior vertices (neither convex, concave nor flat). NP-hard."},
+    {O::MinmaxDegree, "minmax-degree", S::Min, C::Max, true, false, "count (neighbours)", "NP-hard (Thm 5); 3/2-approx [10]",
+     "Smallest maximum vertex degree. NP-hard."},
+}};
+
+// info(o) reads row o: the rows are in the enum's order.
+constexpr bool in_enum_order() {
+  for (size_t i = 0; i < kNumObjectives; ++i)
+    if (static_cast<size_t>(kTable[i].objective) != i) return false;
+  return true;
+}
+static_assert(in_enum_order(), "the objective table is out of order");
+
+}  // namespace
+
+const std::array<ObjectiveInfo, kNumObjectives>& objectives() { return kTable; }
+
+const ObjectiveInfo& info(Objective o) { return kTable[static_cast<size_t>(o)]; }
 
 std::optional<Objective> parse_objective(std::string_view id) {
   for (const auto& i : objectives())

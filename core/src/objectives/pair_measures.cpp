@@ -2,11 +2,13 @@
 
 #include <array>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "hodt/domain.hpp"
 #include "hodt/measures.hpp"
 #include "containers/recent_values.hpp"
+#include "objectives/objective_terms.hpp"
 
 namespace hodt {
 
@@ -196,18 +198,7 @@ double pair_enclosing_circle(const Mesh& m, const Tri& s, const Tri& t) {
   return enclosing_circle(m.point(s[0]), m.point(s[1]), m.point(s[2]), m.point(d));
 }
 
-bool is_pair_objective(Objective o) {
-  switch (o) {
-    case Objective::MinmaxEdgeAreaRatio:
-    case Objective::MinmaxEdgeNormalAngle:
-    case Objective::MinmaxEdgeEnclosingCircle:
-    case Objective::MinmaxVertexAreaRatio:
-    case Objective::MinmaxVertexNormalAngle:
-      return true;
-    default:
-      return false;
-  }
-}
+bool is_pair_objective(Objective o) { return objective_terms_inside(o).measure != PairMeasure::None; }
 
 namespace {
 
@@ -261,14 +252,21 @@ std::optional<CriticalPair> largest_pair(Objective o, const Mesh& m, double belo
   auto ratio_above = [&](const Tri& a, const Tri& b, double cut) { return pair_area_ratio(m, a, b, cut); };
   auto angle = [&](const Tri& a, const Tri& b, double cut) { return pair_normal_angle(m, a, b, cut); };
   auto circle = [&](const Tri& a, const Tri& b, double cut) { return pair_enclosing_circle(m, a, b, cut); };
-  switch (o) {
-    case Objective::MinmaxEdgeAreaRatio: return first_largest_pair(m, true, tri, ratio_above, below, progress);
-    case Objective::MinmaxEdgeNormalAngle: return first_largest_pair(m, true, tri, angle, below, progress);
-    case Objective::MinmaxEdgeEnclosingCircle: return first_largest_pair(m, true, tri, circle, below, progress);
-    case Objective::MinmaxVertexAreaRatio: return first_largest_pair(m, false, tri_area, ratio, below, progress);
-    case Objective::MinmaxVertexNormalAngle: return first_largest_pair(m, false, tri_normal, angle_above, below, progress);
-    default: return std::nullopt;
+  const ObjectiveTerms& d = objective_terms_inside(o);
+  const bool edge = d.site == TermSite::EdgePair;
+  switch (d.measure) {
+    case PairMeasure::AreaRatio:
+      return edge ? first_largest_pair(m, true, tri, ratio_above, below, progress)
+                  : first_largest_pair(m, false, tri_area, ratio, below, progress);
+    case PairMeasure::NormalAngle:
+      return edge ? first_largest_pair(m, true, tri, angle, below, progress)
+                  : first_largest_pair(m, false, tri_normal, angle_above, below, progress);
+    case PairMeasure::EnclosingCircle:
+      if (!edge) throw std::logic_error("an enclosing circle of two triangles sharing only a vertex");
+      return first_largest_pair(m, true, tri, circle, below, progress);
+    case PairMeasure::None: break;
   }
+  return std::nullopt;
 }
 
 }  // namespace

@@ -11,6 +11,11 @@
 
 namespace hodt {
 
+// The measures of the min-max pair objectives: the objective terms name one
+// per pair site (objective_terms.hpp), and each engine maps it to its own fast
+// form of the measure.
+enum class PairMeasure : uint8_t { None, AreaRatio, NormalAngle, EnclosingCircle };
+
 double pair_area_ratio(const Mesh& m, const Tri& s, const Tri& t);
 double pair_normal_angle(const Mesh& m, const Tri& s, const Tri& t);
 // The same when it exceeds `cut`, else some value <= cut (a max over pairs that

@@ -16,7 +16,7 @@
 #include "exact/min_max_degree.hpp"
 #include "higher_order/fills/fill_enumerator.hpp"
 #include "higher_order/k_order.hpp"
-#include "objectives/factor_models.hpp"
+#include "exact/factor_models.hpp"
 #include "objectives/pair_measures.hpp"
 
 namespace hodt {

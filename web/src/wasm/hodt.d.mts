@@ -99,7 +99,11 @@ export interface RawTerrain {
 export interface RawObjective {
   id: string;
   sense: 'min' | 'max';
+  combine: 'sum' | 'max';
   integral: boolean;
+  polynomial: boolean;
+  unit: string;
+  reference: string;
   summary: string;
 }
 /** A triangulation to write (hodt/export's MeshData, every attribute given). */

@@ -409,7 +409,7 @@ RegionDual region_dual(const Mesh& dt, const Regions& R, Objective o, const Cand
 std::optional<double> region_threshold_bound(const Mesh& dt, const Regions& R, Objective o, const Candidates& cand,
                                              const RegionTerms& terms, double known, double incumbent,
                                              const RegionDualLimits& limits) {
-  if (terms.terms().combine != TermCombine::Max || info(o).sense != Sense::Min || !(known < incumbent)) return std::nullopt;
+  if (terms.terms().combine != Combine::Max || info(o).sense != Sense::Min || !(known < incumbent)) return std::nullopt;
   const std::optional<GraphModel> built = graph_model(dt, R, o, cand, terms, limits);
   if (!built) return std::nullopt;
   const StateGraph h = relaxation(built->model.graph);  // (terms it cannot see: 0, never above t)
@@ -436,7 +436,7 @@ std::optional<double> region_threshold_bound(const Mesh& dt, const Regions& R, O
   // Is every triangulation above t somewhere?
   auto refuted = [&](double t) {
     StateGraph c = h;
-    c.combine = TermCombine::Sum;
+    c.combine = Combine::Sum;
     c.constant = fixed > t;
     for (auto& u : c.unary)
       for (double& v : u) v = v > t;

@@ -35,7 +35,7 @@ std::optional<StarBound> star_bound(const Mesh& dt, Objective o, const Candidate
   const bool lengths = d.site == TermSite::Edge && !d.edge_reads_apexes && sign < 0;
   // (Within a domain a fan's terms are the domain's, fan_terms; lengths are not
   // read there: a hull edge counts only beside a triangle inside.)
-  if (d.combine != TermCombine::Sum || !std::isfinite(incumbent) ||
+  if (d.combine != Combine::Sum || !std::isfinite(incumbent) ||
       !(integral ? at_vertices || d.site == TermSite::InteriorEdge : lengths))
     return std::nullopt;
   const uint32_t n = dt.num_vertices();
@@ -353,7 +353,7 @@ std::optional<double> star_floor(const Mesh& dt, Objective o, const Candidates& 
   const ObjectiveTerms& d = objective_terms(o, dt);
   // (Within a domain too: a fan decides which of its triangles are inside, and
   // the terms below read them.)
-  if (d.combine != TermCombine::Max || info(o).sense != Sense::Min) return std::nullopt;
+  if (d.combine != Combine::Max || info(o).sense != Sense::Min) return std::nullopt;
   const uint32_t n = dt.num_vertices();
   double floor = 0;
   std::vector<uint32_t> ring, nb;

@@ -49,7 +49,7 @@ KOrderRun::KOrderRun(const KOrderShared& s, uint32_t k, const SolveOptions& opti
 std::string KOrderRun::min_max_proof(double value) {
   // (A value tried in vain is not tried again: listing more states of the
   // regions not listed whole leaves the relaxation as it was.)
-  if (!bounded || description.combine != TermCombine::Max || value == not_shown) return "";
+  if (!bounded || description.combine != Combine::Max || value == not_shown) return "";
   if (!better(sense, engine->terms.floor(), value)) return "its worst term is one that every k-OD triangulation has";
   if (none_below(relaxation(engine->model.graph), value, proving))
     return "no k-OD triangulation has every term below it (arc consistency over the regions' states)";

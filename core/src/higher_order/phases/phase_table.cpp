@@ -11,7 +11,7 @@ namespace hodt {
 namespace {
 
 bool always(const KOrderRun&) { return true; }
-bool max_terms(const KOrderRun& run) { return run.description.combine == TermCombine::Max; }
+bool max_terms(const KOrderRun& run) { return run.description.combine == Combine::Max; }
 bool incomplete(const KOrderRun& run) { return run.engine->R.incomplete; }
 // A small input and a min-max objective: the branch and bound's.
 bool small_min_max(const KOrderRun& r) {

@@ -77,7 +77,7 @@ ListedBest RegionEngine::best_listed(const std::vector<uint32_t>& start_regions,
   // improves past 2^18 entries. Min-max smaller still: its search is a DP per
   // threshold probed, each paying the tables' size. (Counts over smaller
   // tables start their local search further off and end slower.)
-  mini.max_table = model.graph.combine == TermCombine::Max ? 1 << 14 : 1 << 18;
+  mini.max_table = model.graph.combine == Combine::Max ? 1 << 14 : 1 << 18;
   const StateDpResult listed = solve_states(model.graph, mini);
   ListedBest out;
   out.bound_only = listed.bound_only;

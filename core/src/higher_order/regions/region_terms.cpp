@@ -88,7 +88,7 @@ RegionTerms::RegionTerms(const Mesh& dt, const Regions& R, Objective o, const Ca
         canonical_[f * masks + a] = static_cast<uint8_t>(b);
       }
   }
-  if (d_.combine == TermCombine::Max) {
+  if (d_.combine == Combine::Max) {
     floor_ = fixed_edges_least(fixed_terms_max());
     if (d_.global_bound) floor_ = std::max(floor_, d_.global_bound(dt));
   }

@@ -155,7 +155,7 @@ class RegionTerms {
   std::vector<Tri> items(uint32_t r) const;
 
  private:
-  double clip(double term) const { return d_.combine == TermCombine::Max && term < floor_ ? floor_ : term; }
+  double clip(double term) const { return d_.combine == Combine::Max && term < floor_ ? floor_ : term; }
   double fixed_terms_max() const;
   // Edge terms: every fixed edge is in every triangulation, with one candidate
   // triangle on each side: the largest over fixed edges of the smallest term its

@@ -12,7 +12,7 @@ namespace hodt {
 bool branch_and_bound_applies(Objective o, const Mesh& dt) {
   if (has_domain(dt) || info(o).sense != Sense::Min) return false;
   const ObjectiveTerms& d = objective_terms(o, dt);
-  if (d.combine != TermCombine::Max) return false;
+  if (d.combine != Combine::Max) return false;
   return d.site == TermSite::Triangle || d.site == TermSite::EdgePair || d.site == TermSite::VertexPair ||
          (d.site == TermSite::Vertex && d.term_of_degree);
 }

@@ -103,7 +103,7 @@ std::optional<std::vector<Tri>> improve_by_windows(const Mesh& dt, Objective o, 
   const ObjectiveTerms& d = objective_terms(o, dt);
   // (Within a domain fan_terms reads the domain's terms, but a hull edge's
   // length counts there only beside a triangle inside, which no fan holds.)
-  if (d.combine != TermCombine::Sum || !fan_holds_terms(d) || (d.domain && d.site == TermSite::Edge)) return std::nullopt;
+  if (d.combine != Combine::Sum || !fan_holds_terms(d) || (d.domain && d.site == TermSite::Edge)) return std::nullopt;
   const double sign = info(o).sense == Sense::Max ? 1 : -1;  // (windows maximise sign * value)
   const bool integral = d.term_max < 1e6 && d.term_max == std::floor(d.term_max);  // (counts)
   const uint32_t n = dt.num_vertices();

@@ -130,7 +130,7 @@ uint32_t improve_by_flips(Mesh& m, const Mesh& delaunay, uint32_t k, Objective o
       flip_edge(m, e);
       const double after = local.around(e);
       // Strictly better, beyond rounding (sums of lengths are not exact).
-      const double margin = d.combine == TermCombine::Sum ? 1e-12 * std::abs(before) : 0;
+      const double margin = d.combine == Combine::Sum ? 1e-12 * std::abs(before) : 0;
       if (sense == Sense::Min ? after < before - margin : after > before + margin) {
         changed = true, ++flips;
         // (The quad's corners: the new diagonal's ends and its two apexes.)

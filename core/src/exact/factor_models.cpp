@@ -1,7 +1,8 @@
-#include "objectives/factor_models.hpp"
+#include "exact/factor_models.hpp"
 
 #include <algorithm>
 #include <optional>
+#include <stdexcept>
 
 #include "hodt/domain.hpp"
 #include "hodt/format.hpp"
@@ -10,6 +11,7 @@
 #include "exact/bottleneck.hpp"
 #include "geometry/exact_sum.hpp"
 #include "objectives/neighbourhood_classes.hpp"
+#include "objectives/objective_terms.hpp"
 #include "objectives/pair_measures.hpp"
 
 namespace hodt {
@@ -27,6 +29,7 @@ struct StarChoices {
   uint32_t vertex;
   const double* centre;
   std::vector<const double*> fixed, optional;
+  std::vector<uint32_t> fixed_ids, optional_ids;  // the same neighbours, as vertex indices
   uint32_t present;
   // The neighbours of the present choice (in a buffer of its own).
   const std::vector<const double*>& neighbours() const {
@@ -117,13 +120,16 @@ void vertex_terms(const FirstOrder& fo, bool interior_only, bool constants, Fact
     star.vertex = v, star.centre = m.point(v);
     star.fixed.clear();
     star.optional.clear();
+    star.fixed_ids = fixed;
+    star.optional_ids.clear();
     for (uint32_t w : fixed) star.fixed.push_back(m.point(w));
     uint32_t when_flipped = 0;  // bit i: quad i's corner comes with its flipped diagonal
     uint32_t outside_when[2] = {0, 0};  // bit i: quad i's choice puts a triangle at v outside
     for (uint32_t i = 0; i < nq; ++i) {
       const Quad& q = fo.quads[qs[i]];
       const bool on_base = v == q.a || v == q.b;
-      star.optional.push_back(m.point(on_base ? (v == q.a ? q.b : q.a) : (v == q.c ? q.d : q.c)));
+      star.optional_ids.push_back(on_base ? (v == q.a ? q.b : q.a) : (v == q.c ? q.d : q.c));
+      star.optional.push_back(m.point(star.optional_ids.back()));
       if (!on_base) when_flipped |= 1u << i;
       for (int x = 0; x < 2 && domain; ++x) {
         Tri t[2];
@@ -166,15 +172,16 @@ void add_edge_factor(FactorGraph& g, const Side& L, const Side& R, Value value) 
                {value(0, 0), value(1, 0), value(0, 1), value(1, 1)});
 }
 
-// Convex edges: a term per edge of the skeleton and per quad diagonal.
-void convex_edge_terms(const FirstOrder& fo, FactorGraph& g, const Progress& progress) {
+// Interior edge sums (convex edges): a term per edge of the skeleton and per
+// quad diagonal, read from the objective's edge term.
+void interior_edge_terms(const FirstOrder& fo, const ObjectiveTerms& d, FactorGraph& g, const Progress& progress) {
   WorkCounter work;  // a unit: about one predicate
   const double total = static_cast<double>(fo.num_quads() + fo.base.halfedges.size());
   const Mesh& m = fo.base;
   // Within a domain an interior edge counts with an inside triangle on each side.
-  auto convex = [&](const Tri& left, uint32_t x) {  // edge left[0] -> left[1], x across it
+  auto term = [&](const Tri& left, uint32_t x) {  // edge left[0] -> left[1], x across it
     if (has_domain(m) && (!triangle_inside(m, left) || !triangle_inside(m, {left[1], left[0], x}))) return 0.0;
-    return edge_shape(m.point(left[0]), m.point(left[1]), m.point(left[2]), m.point(x)) == kConvexEdge ? 1.0 : 0.0;
+    return d.edge(m, left[0], left[1], left[2], x);
   };
   auto across = [](const Tri& t, uint32_t u, uint32_t v) {  // the vertex of t other than u, v
     for (uint32_t w : t)
@@ -185,7 +192,7 @@ void convex_edge_terms(const FirstOrder& fo, FactorGraph& g, const Progress& pro
   g.factors.reserve(fo.num_quads() + m.halfedges.size() / 2);
   for (uint32_t q = 0; q < fo.num_quads(); ++q) {
     const Quad& k = fo.quads[q];
-    add_factor(g, {q}, {convex({k.a, k.b, k.c}, k.d), convex({k.d, k.c, k.a}, k.b)});
+    add_factor(g, {q}, {term({k.a, k.b, k.c}, k.d), term({k.d, k.c, k.a}, k.b)});
     if (work.tick(16)) report(progress, q, total);
   }
   for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
@@ -198,36 +205,64 @@ void convex_edge_terms(const FirstOrder& fo, FactorGraph& g, const Progress& pro
       const Tri& l = L.tri[x];
       // Rotate l to start at u (it holds u -> v).
       const Tri lu = l[0] == u ? l : l[1] == u ? Tri{l[1], l[2], l[0]} : Tri{l[2], l[0], l[1]};
-      return convex(lu, across(R.tri[y], u, v));
+      return term(lu, across(R.tri[y], u, v));
     };
     add_edge_factor(g, L, R, value);
   }
 }
 
-// Total edge length within a domain: an edge counts with an inside triangle on
-// either side, so an edge of a quad's boundary depends on the quads on both sides.
-// (The constant is a plain sum: the solvers report the value they evaluate on
-// the triangulation, never this one.)
-void domain_length_terms(const FirstOrder& fo, bool constants, FactorGraph& g) {
+// Edge sums whose terms read no apex (total length): a term per quad diagonal
+// and per skeleton edge. Within a domain an edge counts with an inside triangle
+// on either side, so an edge of a quad's boundary depends on the quads on both
+// sides. Without one the fixed edges are one constant (summed as evaluate sums).
+// (Within a domain the constant is a plain sum: the solvers report the value
+// they evaluate on the triangulation, never this one.)
+void apex_free_edge_terms(const FirstOrder& fo, const ObjectiveTerms& d, bool constants, FactorGraph& g) {
   const Mesh& m = fo.base;
-  auto in = [&](const Tri& t) { return triangle_inside(m, t); };
+  auto term = [&](uint32_t u, uint32_t v) { return d.edge(m, u, v, kNoApex, kNoApex); };
+  const bool domain = has_domain(m);
+  auto in = [&](const Tri& t) { return !domain || triangle_inside(m, t); };
   for (uint32_t q = 0; q < fo.num_quads(); ++q) {
     const Quad& k = fo.quads[q];
     const bool base = in({k.a, k.b, k.c}) || in({k.b, k.a, k.d}), flipped = in({k.d, k.c, k.a}) || in({k.c, k.d, k.b});
-    add_factor(g, {q}, {base ? edge_length(m.point(k.a), m.point(k.b)) : 0, flipped ? edge_length(m.point(k.c), m.point(k.d)) : 0});
+    add_factor(g, {q}, {base ? term(k.a, k.b) : 0, flipped ? term(k.c, k.d) : 0});
   }
   const std::vector<uint8_t> diagonal = fo.diagonal_mask();
+  ExactSum fixed;
   for (uint32_t e = 0; e < m.halfedges.size(); ++e) {
     const int32_t f = m.halfedges[e];
     if (diagonal[e] || f > static_cast<int32_t>(e)) continue;
+    if (!domain) {
+      fixed.add(term(m.origin(e), m.target(e)));
+      continue;
+    }
     if (!constants && fo.quad_of_triangle[e / 3] < 0 && (f < 0 || fo.quad_of_triangle[static_cast<uint32_t>(f) / 3] < 0)) continue;
     const Side L = side_of(fo, e);
     const Side R = f >= 0 ? side_of(fo, static_cast<uint32_t>(f)) : Side{-1, {}};
     if (!constants && L.quad < 0 && R.quad < 0) continue;
-    const double len = edge_length(m.point(m.origin(e)), m.point(m.target(e)));
+    const double len = term(m.origin(e), m.target(e));
     auto value = [&](int x, int y) { return in(L.tri[x]) || (f >= 0 && in(R.tri[y])) ? len : 0.0; };
     add_edge_factor(g, L, R, value);
   }
+  if (!domain) g.constant = fixed.value();
+}
+
+// Triangle terms: the fixed triangles' as the constant, each quad's two
+// triangles for either diagonal as its factor.
+void triangle_terms(const FirstOrder& fo, const ObjectiveTerms& d, FactorGraph& g) {
+  const Mesh& m = fo.base;
+  // (Within a domain a triangle outside is not measured.)
+  auto triangle_term = [&](const ObjectiveTerms& terms, const Mesh& mesh, const Tri& t) {
+    return has_domain(mesh) && !triangle_inside(mesh, t) ? 0.0 : terms.triangle(mesh, t);
+  };
+  for (uint32_t t = 0; t < m.num_triangles(); ++t)
+    if (fo.quad_of_triangle[t] < 0) g.constant = combine(g.combine, g.constant, triangle_term(d, m, base_triangle(m, t)));
+  auto choice = [&](uint32_t q, bool flipped) {
+    uint32_t t[6];
+    fo.triangles_of(q, flipped, t);
+    return combine(g.combine, triangle_term(d, m, {t[0], t[1], t[2]}), triangle_term(d, m, {t[3], t[4], t[5]}));
+  };
+  for (uint32_t q = 0; q < fo.num_quads(); ++q) add_factor(g, {q}, {choice(q, false), choice(q, true)});
 }
 
 void pair_terms(const BottleneckModel& bm, FactorGraph& g) {
@@ -242,13 +277,16 @@ void pair_terms(const BottleneckModel& bm, FactorGraph& g) {
 
 FactorGraph factor_model(const FirstOrder& fo, Objective o, const DpLimits& limits, OverBudget over, bool constants) {
   const Mesh& m = fo.base;
+  // The objective's terms (objective_terms.hpp) with every summary: the model
+  // follows their site and the summary they offer, and handles the domain itself.
+  const ObjectiveTerms& d = objective_terms_inside(o);
   FactorGraph g;
   g.num_vars = fo.num_quads();
   g.sense = info(o).sense;
-  auto count = [](bool b) { return b ? 1.0 : 0.0; };
+  g.combine = info(o).combine;
   // Steps per entry: a vertex class tests triples of neighbours, the others scan them.
-  auto triples = [](uint32_t d) { return d * (d - 1.0) * (d - 2.0) / 6 + d * (d - 1.0) / 2; };
-  auto scan = [](uint32_t d) { return static_cast<double>(d); };
+  auto triples = [](uint32_t n) { return n * (n - 1.0) * (n - 2.0) / 6 + n * (n - 1.0) / 2; };
+  auto scan = [](uint32_t n) { return static_cast<double>(n); };
   // The classes of a vertex over the choices of its quads, from one look at its
   // candidate neighbours (the choices come one vertex after another).
   std::optional<NeighbourhoodClasses> classes;
@@ -257,71 +295,51 @@ FactorGraph factor_model(const FirstOrder& fo, Objective o, const DpLimits& limi
     if (star.vertex != classes_of) classes.emplace(star.centre, star.fixed, star.optional), classes_of = star.vertex;
     return classes->of(star.present);
   };
-  auto extremum_of = [](const StarChoices& star) {
-    const std::vector<const double*>& nb = star.neighbours();
-    return extremum(star.centre, nb.data(), static_cast<uint32_t>(nb.size()));
+  auto neighbour_classes = [&](const StarChoices& star) {
+    uint32_t mask = 0;
+    for (uint32_t w : star.fixed_ids) mask |= 1u << d.neighbor_class(m, star.vertex, w);
+    for (uint32_t i = 0; i < star.optional_ids.size(); ++i)
+      if ((star.present >> i) & 1) mask |= 1u << d.neighbor_class(m, star.vertex, star.optional_ids[i]);
+    return mask;
   };
-  auto ratio = [&](const Tri& s, const Tri& t) { return pair_area_ratio(m, s, t); };
-  auto angle = [&](const Tri& s, const Tri& t) { return pair_normal_angle(m, s, t); };
-  auto circle = [&](const Tri& s, const Tri& t) { return pair_enclosing_circle(m, s, t); };
-  switch (o) {
-    case Objective::MaxConvexVertices:
-      vertex_terms(fo, true, constants, g, limits, over, triples,
-                   [&](const StarChoices& star) { return count(class_of(star) == kConvex); });
-      break;
-    case Objective::MinMixedVertices:
-      vertex_terms(fo, true, constants, g, limits, over, triples,
-                   [&](const StarChoices& star) { return count(class_of(star) == kMixed); });
-      break;
-    case Objective::MinLocalMinima:
-      vertex_terms(fo, true, constants, g, limits, over, scan,
-                   [&](const StarChoices& star) { return count(extremum_of(star) == kLocalMinimum); });
-      break;
-    case Objective::MinLocalExtrema:
-      vertex_terms(fo, true, constants, g, limits, over, scan,
-                   [&](const StarChoices& star) { return count(extremum_of(star) != kNotExtremum); });
-      break;
-    case Objective::MinmaxDegree:
-      g.combine = Combine::Max;
-      vertex_terms(fo, false, constants, g, limits, over, scan,
-                   [](const StarChoices& star) { return static_cast<double>(star.fixed.size() + __builtin_popcount(star.present)); });
-      break;
-    case Objective::MaxConvexEdges:
-      convex_edge_terms(fo, g, limits.progress);
-      break;
-    case Objective::MinTotalEdgeLength: {
-      if (has_domain(m)) {
-        domain_length_terms(fo, constants, g);
-        break;
-      }
-      // Fixed edges as one constant (summed as evaluate sums), each quad its diagonal's length.
-      ExactSum fixed;
-      const std::vector<uint8_t> diagonal = fo.diagonal_mask();
-      for (uint32_t q = 0; q < fo.num_quads(); ++q) {
-        const Quad& k = fo.quads[q];
-        add_factor(g, {q}, {edge_length(m.point(k.a), m.point(k.b)), edge_length(m.point(k.c), m.point(k.d))});
-      }
-      for (uint32_t e = 0; e < m.halfedges.size(); ++e)
-        if (!diagonal[e] && m.halfedges[e] < static_cast<int32_t>(e))
-          fixed.add(edge_length(m.point(m.origin(e)), m.point(m.target(e))));
-      g.constant = fixed.value();
+  switch (d.site) {
+    case TermSite::InteriorVertex:
+    case TermSite::Vertex: {
+      const bool interior = d.site == TermSite::InteriorVertex;
+      if (d.term_of_vertex_class)
+        vertex_terms(fo, interior, constants, g, limits, over, triples,
+                     [&](const StarChoices& star) { return d.term_of_vertex_class(class_of(star)); });
+      else if (d.term_of_classes)
+        vertex_terms(fo, interior, constants, g, limits, over, scan,
+                     [&](const StarChoices& star) { return d.term_of_classes(neighbour_classes(star)); });
+      else if (d.term_of_degree)
+        vertex_terms(fo, interior, constants, g, limits, over, scan, [&](const StarChoices& star) {
+          return d.term_of_degree(static_cast<uint32_t>(star.fixed.size()) + static_cast<uint32_t>(__builtin_popcount(star.present)));
+        });
+      else
+        throw std::logic_error("factor model: a vertex term without a summary of its star");
       break;
     }
-    case Objective::MinmaxTriangleArea: {
-      g.combine = Combine::Max;
-      for (uint32_t t = 0; t < m.num_triangles(); ++t)
-        if (fo.quad_of_triangle[t] < 0)
-          g.constant = std::max(g.constant, triangle_area(m.point(m.triangles[3 * t]), m.point(m.triangles[3 * t + 1]),
-                                                          m.point(m.triangles[3 * t + 2])));
-      for (uint32_t q = 0; q < fo.num_quads(); ++q)
-        add_factor(g, {q}, {largest_triangle(fo, q, false), largest_triangle(fo, q, true)});
+    case TermSite::InteriorEdge: interior_edge_terms(fo, d, g, limits.progress); break;
+    case TermSite::Edge:
+      if (d.edge_reads_apexes) throw std::logic_error("factor model: an edge term over every edge that reads its apexes");
+      apex_free_edge_terms(fo, d, constants, g);
+      break;
+    case TermSite::Triangle: triangle_terms(fo, d, g); break;
+    case TermSite::EdgePair:
+    case TermSite::VertexPair: {
+      const bool edge = d.site == TermSite::EdgePair;
+      auto model = [&](auto measure) { return edge ? edge_pair_model(fo, measure) : vertex_pair_model(fo, measure); };
+      switch (d.measure) {
+        case PairMeasure::AreaRatio: pair_terms(model([&](const Tri& s, const Tri& t) { return pair_area_ratio(m, s, t); }), g); break;
+        case PairMeasure::NormalAngle: pair_terms(model([&](const Tri& s, const Tri& t) { return pair_normal_angle(m, s, t); }), g); break;
+        case PairMeasure::EnclosingCircle:
+          pair_terms(model([&](const Tri& s, const Tri& t) { return pair_enclosing_circle(m, s, t); }), g);
+          break;
+        case PairMeasure::None: throw std::logic_error("factor model: a pair term without a measure");
+      }
       break;
     }
-    case Objective::MinmaxEdgeAreaRatio: g.combine = Combine::Max; pair_terms(edge_pair_model(fo, ratio), g); break;
-    case Objective::MinmaxEdgeNormalAngle: g.combine = Combine::Max; pair_terms(edge_pair_model(fo, angle), g); break;
-    case Objective::MinmaxEdgeEnclosingCircle: g.combine = Combine::Max; pair_terms(edge_pair_model(fo, circle), g); break;
-    case Objective::MinmaxVertexAreaRatio: g.combine = Combine::Max; pair_terms(vertex_pair_model(fo, ratio), g); break;
-    case Objective::MinmaxVertexNormalAngle: g.combine = Combine::Max; pair_terms(vertex_pair_model(fo, angle), g); break;
   }
   g.simplify(limits.progress);
   return g;

@@ -1,8 +1,8 @@
-#include "first_order/free_quads.hpp"
+#include "exact/free_quads.hpp"
 
 #include <stdexcept>
 
-#include "objectives/factor_models.hpp"
+#include "exact/factor_models.hpp"
 
 namespace hodt {
 
