@@ -125,30 +125,26 @@ BottleneckModel pair_model(const FirstOrder& fo, Objective o, const Progress& pr
   auto circle = [&](const Tri& s, const Tri& t, double cut) {
     return measured(s, t, cut, pair_enclosing_circle(m, s, t, cut));
   };
-  // A star's filter sees its inside triangles only.
+  // A star's filter (pair_measures.hpp) sees its inside triangles only.
   std::vector<Tri> inside;
-  auto inside_of = [&](const Tri* t, size_t n) {
-    inside.clear();
-    for (size_t i = 0; i < n; ++i)
-      if (triangle_inside(m, t[i])) inside.push_back(t[i]);
+  auto star_filter = [&](bool (*below)(const Mesh&, const Tri*, size_t, double)) {
+    return [&, below](const Tri* t, size_t n, double cut) {
+      if (!domain) return below(m, t, n, cut);
+      inside.clear();
+      for (size_t i = 0; i < n; ++i)
+        if (triangle_inside(m, t[i])) inside.push_back(t[i]);
+      return below(m, inside.data(), inside.size(), cut);
+    };
   };
   const ObjectiveTerms& d = objective_terms_inside(o);
   const bool edge = d.site == TermSite::EdgePair;
   switch (d.measure) {
     case PairMeasure::AreaRatio:
       if (edge) return edge_pair_model(fo, ratio, progress);
-      return vertex_pair_model(fo, ratio, progress, [&](const Tri* t, size_t n, double cut) {
-        if (!domain) return star_area_ratio_below(m, t, n, cut);
-        inside_of(t, n);
-        return star_area_ratio_below(m, inside.data(), inside.size(), cut);
-      });
+      return vertex_pair_model(fo, ratio, progress, star_filter(star_area_ratio_below));
     case PairMeasure::NormalAngle:
       if (edge) return edge_pair_model(fo, angle, progress);
-      return vertex_pair_model(fo, angle, progress, [&](const Tri* t, size_t n, double cut) {
-        if (!domain) return star_normal_angle_below(m, t, n, cut);
-        inside_of(t, n);
-        return star_normal_angle_below(m, inside.data(), inside.size(), cut);
-      });
+      return vertex_pair_model(fo, angle, progress, star_filter(star_normal_angle_below));
     case PairMeasure::EnclosingCircle:
       if (edge) return edge_pair_model(fo, circle, progress);
       break;
