@@ -12,11 +12,21 @@
 export const FLOW_COLOR = '#0b4f8a';
 export const PIT_COLOR = '#c62828';
 export const OUTLET_COLOR = '#1565c0';
+/** The opacity of a basin's fill over white. */
+export const BASIN_OPACITY = 0.4;
 /** A triangle whose three corners drain to three different places. */
 export const NO_BASIN_COLOR = '#f1f3f2';
 
 /** Basin fills: categorical, without red (pits are red) or grey (no basin). */
 export const BASIN_COLORS = /** @type {const} */ (['#1f77b4', '#2ca02c', '#ff7f0e', '#9467bd', '#17becf', '#bcbd22', '#8c564b', '#e377c2']);
+
+/**
+ * a[i], for an index the caller knows is in range.
+ * @param {ArrayLike<number>} a
+ * @param {number} i
+ * @returns {number}
+ */
+const at = (a, i) => /** @type {number} */ (a[i]);
 
 /**
  * The basin (the pit or outlet) that at least two of triangle t's corners drain
@@ -27,7 +37,7 @@ export const BASIN_COLORS = /** @type {const} */ (['#1f77b4', '#2ca02c', '#ff7f0
  * @returns {number}
  */
 export function majorityBasin(triangles, basin, t) {
-  const a = basin[triangles[3 * t]], b = basin[triangles[3 * t + 1]], c = basin[triangles[3 * t + 2]];
+  const a = at(basin, at(triangles, 3 * t)), b = at(basin, at(triangles, 3 * t + 1)), c = at(basin, at(triangles, 3 * t + 2));
   return a === b || a === c ? a : b === c ? b : -1;
 }
 
@@ -52,13 +62,13 @@ export function basinSlots(triangles, basin, count) {
   /** @type {Map<number, number>} */
   const size = new Map();
   for (let v = 0; v < basin.length; v++) {
-    const r = basin[v];
+    const r = at(basin, v);
     if (r < 0) continue;
     size.set(r, (size.get(r) ?? 0) + 1);
     if (!next.has(r)) next.set(r, new Set());
   }
   for (let k = 0; k < triangles.length; k++) {
-    const r = basin[triangles[k]], s = basin[triangles[k - (k % 3) + ((k % 3) + 1) % 3]];
+    const r = at(basin, at(triangles, k)), s = at(basin, at(triangles, k - (k % 3) + ((k % 3) + 1) % 3));
     if (r >= 0 && s >= 0 && r !== s) next.get(r)?.add(s), next.get(s)?.add(r);
   }
   const order = [...size.keys()].sort((r, s) => (size.get(s) ?? 0) - (size.get(r) ?? 0) || r - s);
