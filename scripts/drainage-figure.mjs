@@ -18,6 +18,7 @@ import { loadHodt } from 'hodt';
 import { readPointFile } from 'hodt/loaders';
 import {
   BASIN_COLORS,
+  BASIN_OPACITY,
   basinSlots,
   FLOW_COLOR,
   flowWidth,
@@ -118,7 +119,7 @@ function pane(xyz, row, slots, X, Y) {
     fills.set(color, (fills.get(color) ?? '') + tri(t));
   }
   for (const [color, path] of [...fills].sort(([a], [b]) => (a < b ? -1 : a > b ? 1 : 0))) {
-    out.push(`<path fill="${color}"${color === NO_BASIN_COLOR ? '' : ' fill-opacity="0.4"'} d="${path}"/>`);
+    out.push(`<path fill="${color}"${color === NO_BASIN_COLOR ? '' : ` fill-opacity="${BASIN_OPACITY}"`} d="${path}"/>`);
   }
   const edges = new Set();
   let mesh = '';
