@@ -62,7 +62,8 @@ test('water: Delaunay and the optimum side by side, their pits and basins the li
     expect([v.optimum.pits, v.optimum.basins]).toEqual(counts.optimum);
     // Each pane is captioned with its triangulation and shows the library's counts.
     expect(await page.locator('#water-delaunay-caption').textContent()).toBe(`Delaunay ${words(...(counts.delaunay as [number, number]))}`);
-    expect(await page.locator('#water-optimum-caption').textContent()).toBe(`Optimum (fewest pits, order ${k}) ${words(...(counts.optimum as [number, number]))}`);
+    expect(await page.locator('#water-optimum-caption').textContent()).toBe(`Optimum (order ${k}) ${words(...(counts.optimum as [number, number]))}`);
+    expect(await page.locator('#water-pane-optimum canvas').getAttribute('aria-label')).toBe(`Drainage of the optimal triangulation (fewest pits, order ${k})`);
     expect(await page.locator('#water-counts').textContent()).toBe(`Delaunay: ${words(...(counts.delaunay as [number, number]))}; optimum (order ${k}): ${words(...(counts.optimum as [number, number]))}`);
     // Both panes painted, side by side.
     const [left, right] = [await painted(page, 'delaunay'), await painted(page, 'optimum')];

@@ -85,7 +85,9 @@ export const waterView = teachView({
       if (!state) return;
       counts.textContent = countsText(state);
       for (const p of panes) {
-        p.name.textContent = p.which === 'delaunay' ? 'Delaunay' : `Optimum (${OBJECTIVE_HELP[state.objective].name.toLowerCase()}, order ${state.order})`;
+        // Short, so that the counts fit beside it: the objective is the select's, and the canvas's label.
+        p.name.textContent = p.which === 'delaunay' ? 'Delaunay' : `Optimum (order ${state.order})`;
+        if (p.which === 'optimum') p.canvas.canvas.setAttribute('aria-label', `Drainage of the optimal triangulation (${OBJECTIVE_HELP[state.objective].name.toLowerCase()}, order ${state.order})`);
         p.counts.textContent = sideCounts(state, p.which);
       }
     }
