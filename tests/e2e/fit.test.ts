@@ -5,6 +5,7 @@
 // come from render.test.ts, teach.test.ts and the gadgets' own tests).
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
+import { LESSON_STEPS } from '../../web/demo/src/teach/lessonSteps.ts';
 import { hooks, openPage, screenshot, settled, startDemo, type Demo } from './harness.ts';
 
 let demo: Demo;
@@ -75,7 +76,7 @@ describe.each(SIZES)('at $width x $height', (size) => {
   test('every Teach tab, after its lesson step', async () => {
     const { page, context, errors } = await openPage(demo, '', size);
     await page.click('.segmented button[data-view="teach"]');
-    for (const tab of ['brute', 'sat', 'baker', 'gadget', 'order']) {
+    for (const tab of LESSON_STEPS.map((s) => s.tab)) {
       const solves = (await hooks(page)).solves;
       await page.click('#teach-lesson summary');
       await page.click(`#lesson-${tab}`);
@@ -114,7 +115,7 @@ test('tooltips say what the buttons load', async () => {
   expect((await hooks(page)).points).toBe(said);
   // The lesson's steps name the points they load.
   await page.click('#teach-lesson summary');
-  for (const tab of ['brute', 'baker', 'order']) {
+  for (const tab of ['brute', 'baker', 'order', 'water']) {
     const t = (await page.locator(`#lesson-${tab}`).getAttribute('title'))!;
     const n = Number(/with (\d+) points/.exec(t)![1]);
     solves = (await hooks(page)).solves;

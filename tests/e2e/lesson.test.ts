@@ -6,6 +6,7 @@ import { OBJECTIVE_IDS, type ObjectiveId } from 'hodt';
 import type { Page } from 'playwright-core';
 import { describe, expect, test } from 'vitest';
 import { decodeState } from '../../web/demo/src/share/urlState.ts';
+import { fractalPoints } from '../../web/demo/src/terrains/fractal.ts';
 import { jitteredGridPoints } from '../../web/demo/src/terrains/jitteredGrid.ts';
 import { uniformPoints } from '../../web/demo/src/terrains/uniform.ts';
 import { LESSON_STEPS, type LessonTab } from '../../web/demo/src/teach/lessonSteps.ts';
@@ -15,7 +16,7 @@ const env = setUpDemo();
 
 const step = (tab: LessonTab) => LESSON_STEPS.find((s) => s.tab === tab)!;
 // The generators the steps use (the catalog's volcano needs Vite's aliases).
-const MAKE: Record<string, (n: number, seed: number) => Float64Array> = { uniform: uniformPoints, grid: jitteredGridPoints };
+const MAKE: Record<string, (n: number, seed: number) => Float64Array> = { uniform: uniformPoints, grid: jitteredGridPoints, fractal: fractalPoints };
 
 /** Opens the page, clicks the step's Go, and returns the points the page then holds. */
 async function go(tab: LessonTab): Promise<{ page: Page; close: () => Promise<void>; errors: string[]; points: Float64Array }> {
@@ -122,6 +123,54 @@ describe('the first lesson', () => {
     for (const s of pits) expect(s.optimal).toBe(true);
     expect(pits[1]!.value).toBeLessThan(pits[0]!.value);
     expect(pits[2]!.value).toBeLessThan(pits[1]!.value);
+    expect(errors).toEqual([]);
+    await close();
+  });
+
+  test('step 6: the fewest pits at order 1 and 2 leaves fewer pits, none new, and each removed pit’s whole basin joins one neighbour', async () => {
+    const { page, errors, points, close } = await go('water');
+    using terrain = env.hodt.terrain(points);
+    const delaunay = terrain.drainage();
+    const pits = [delaunay.pits.length];
+    for (const k of [1, 2]) {
+      const solution = terrain.solve('min-local-minima', { order: k });
+      expect(solution.optimal).toBe(true);
+      const optimum = terrain.drainage(solution.triangles);
+      pits.push(optimum.pits.length);
+      expect([...optimum.outlets]).toEqual([...delaunay.outlets]);
+      // No new pit: the optimum's pits are some of Delaunay's.
+      for (const p of optimum.pits) expect(delaunay.pits).toContain(p);
+      // Each pit that went: every point of its Delaunay basin ends at one other pit or outlet.
+      for (const gone of [...delaunay.pits].filter((p) => !optimum.pits.includes(p))) {
+        const ends = new Set<number>();
+        delaunay.basin.forEach((b, v) => b === gone && ends.add(optimum.basin[v]!));
+        expect(ends.size, `the basin of pit ${gone}`).toBe(1);
+        expect(ends.has(gone)).toBe(false);
+      }
+      // The view shows these, side by side (the step starts it at order 1; then the order select).
+      if (k > 1) await page.selectOption('#water-order', String(k));
+      await page.waitForFunction((o) => {
+        const v = window.__hodtTeach!.view('water')!;
+        return v.order === o && v.optimum !== null;
+      }, k);
+      const v = (await page.evaluate(() => window.__hodtTeach!.view('water'))) as Record<string, any>;
+      expect(v.layout).toBe('both');
+      expect(v.objective).toBe('min-local-minima');
+      expect(v.delaunay.pits).toBe(delaunay.pits.length);
+      expect(v.optimum.pits).toBe(optimum.pits.length);
+      expect(v.optimum.basins).toBe(optimum.pits.length + optimum.outlets.length);
+    }
+    // Fewer than Delaunay at order 1, fewer still at order 2.
+    expect(pits[1]!).toBeLessThan(pits[0]!);
+    expect(pits[2]!).toBeLessThan(pits[1]!);
+    // The step starts the view where its claim is: order 1, both panes, whatever was chosen before.
+    await page.selectOption('#water-order', '4');
+    await page.click('#water-show-delaunay');
+    await page.click('#lesson-water');
+    await page.waitForFunction(() => {
+      const v = window.__hodtTeach!.view('water')!;
+      return v.order === 1 && v.layout === 'both' && v.optimum !== null;
+    });
     expect(errors).toEqual([]);
     await close();
   });

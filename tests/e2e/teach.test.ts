@@ -6,6 +6,8 @@ import { loadHodt, type Hodt, type ObjectiveId } from 'hodt';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { decodeState } from '../../web/demo/src/share/urlState.ts';
+import { LESSON_STEPS } from '../../web/demo/src/teach/lessonSteps.ts';
+import { fractalPoints } from '../../web/demo/src/terrains/fractal.ts';
 import { hooks, keepScreenshots, openPage, pagePoints, screenshot, settled, startDemo, type Demo } from './harness.ts';
 
 let demo: Demo;
@@ -263,13 +265,18 @@ describe('teaching views', () => {
     const { page, context, errors } = await openPage(demo);
     await page.click('.segmented button[data-view="teach"]');
     await page.click('#teach-lesson summary');
-    for (const tab of ['brute', 'sat', 'baker', 'gadget', 'order']) {
+    const tabs = LESSON_STEPS.map((s) => s.tab);
+    expect(tabs).toEqual(['brute', 'sat', 'baker', 'gadget', 'order', 'water']);
+    expect(await page.locator('#teach-lesson summary').textContent()).toBe(`A first lesson in ${tabs.length} steps`);
+    for (const tab of tabs) {
       await page.click(`#lesson-${tab}`);
       await page.waitForFunction((t) => window.__hodtTeach?.visible && window.__hodtTeach.tab === t, tab);
       expect(await page.locator(`#teach-${tab} .teach-legend li`).count(), tab).toBeGreaterThan(2);
     }
-    // The last step loaded its terrain (30 random points) into the page.
-    await expect.poll(async () => (await hooks(page)).points).toBe(30);
+    // The last step loaded its terrain (a fractal relief) into the page.
+    const last = LESSON_STEPS.at(-1)!.terrain!;
+    expect(last.kind).toBe('fractal');
+    await expect.poll(async () => (await hooks(page)).points).toBe(fractalPoints(last.count, last.seed).length / 3);
     await screenshot(page, 'teach-lesson.png');
     expect(errors).toEqual([]);
     await context.close();

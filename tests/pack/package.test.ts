@@ -48,7 +48,7 @@ describe('the tarball', () => {
     for (const f of ['package.json', 'README.md', 'CHANGELOG.md', 'LICENSE', 'THIRD_PARTY_NOTICES', 'dist/index.js', 'dist/index.d.ts', 'dist/three.js', 'dist/three.d.ts', 'dist/export.js', 'dist/export.d.ts', 'dist/cli.js', 'dist/wasm/hodt.mjs', 'dist/wasm/hodt.d.mts', 'dist/wasm/hodt.wasm']) {
       expect(paths).toContain(f);
     }
-    for (const p of paths) expect(p).toMatch(/^(package\.json|README\.md|CHANGELOG\.md|LICENSE|THIRD_PARTY_NOTICES|docs\/(api|objectives|higher-order)\.md|dist\/.+\.(js|d\.ts|mjs|d\.mts|wasm)|dist\/demo\/(index\.html|assets\/[\w-]+\.(js|css|wasm)))$/);
+    for (const p of paths) expect(p).toMatch(/^(package\.json|README\.md|CHANGELOG\.md|LICENSE|THIRD_PARTY_NOTICES|docs\/(api|objectives|higher-order)\.md|docs\/drainage-lidar\.svg|dist\/.+\.(js|d\.ts|mjs|d\.mts|wasm)|dist\/demo\/(index\.html|assets\/[\w-]+\.(js|css|wasm)))$/);
     expect(paths).toContain('dist/demo/index.html');
     const cli = project.files.find((f) => f.path === 'dist/cli.js')!;
     expect(cli.mode & 0o111).not.toBe(0);

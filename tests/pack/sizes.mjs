@@ -11,6 +11,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { brotliCompressSync, constants, gzipSync } from 'node:zlib';
+import { updateBlocks } from '../../scripts/docBlocks.mjs';
 
 const repo = fileURLToPath(new URL('../../', import.meta.url));
 const dist = join(repo, 'dist');
@@ -84,22 +85,7 @@ function kBOf(text) {
 
 const mode = process.argv[2];
 if (mode === '--write' || mode === '--check') {
-  const stale = [];
-  for (const [file, blocks] of Object.entries(generated)) {
-    const path = join(repo, file);
-    const text = readFileSync(path, 'utf8');
-    let next = text;
-    for (const [name, body] of Object.entries(blocks)) {
-      const re = new RegExp(`(<!-- ${name}: written by tests/pack/sizes\\.mjs -->)[\\s\\S]*?(<!-- /${name} -->)`);
-      if (!re.test(next)) throw new Error(`${file}: no <!-- ${name}: written by tests/pack/sizes.mjs --> ... <!-- /${name} --> markers`);
-      const inline = !/\n/.test(body);
-      next = next.replace(re, (_, open, close) => (inline ? `${open}${body}${close}` : `${open}\n${body}\n${close}`));
-    }
-    if (next !== text) {
-      stale.push(file);
-      if (mode === '--write') writeFileSync(path, next);
-    }
-  }
+  const stale = updateBlocks(repo, 'tests/pack/sizes.mjs', generated, { write: mode === '--write' });
   if (mode === '--check' && stale.length) {
     console.error(`${stale.join(', ')}: sizes differ from what the build measures; run \`node tests/pack/sizes.mjs --write\``);
     process.exit(1);

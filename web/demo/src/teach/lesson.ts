@@ -26,6 +26,12 @@ export function createLesson(ctx: TeachContext, select: (tab: TeachTab) => void)
         ctx.load(TERRAINS[t.kind].make(t.count, t.seed), `load the lesson's ${s.title.toLowerCase()} terrain`, s.objective, t);
       }
       if (s.epsilon !== undefined) ctx.choose({ epsilon: s.epsilon });
+      for (const [id, value] of Object.entries(s.controls ?? {})) {
+        const select = document.getElementById(id);
+        if (!(select instanceof HTMLSelectElement) || select.value === value) continue;
+        select.value = value;
+        select.dispatchEvent(new Event('change'));
+      }
       if (s.build) document.getElementById(s.build)?.click();
     });
     return h('li', {}, h('b', {}, `${i + 1}. ${s.title}. `), go, h('br', {}), h('span', {}, s.doThis, ' '), h('span', { class: 'muted' }, `Notice: ${s.notice}`));

@@ -6,7 +6,7 @@
 import type { ObjectiveId } from 'hodt';
 import type { TerrainSource } from '../ui/terrainPanel.ts';
 
-export type LessonTab = 'brute' | 'sat' | 'baker' | 'gadget' | 'order';
+export type LessonTab = 'brute' | 'sat' | 'baker' | 'gadget' | 'order' | 'water';
 
 export interface LessonStep {
   tab: LessonTab;
@@ -16,7 +16,9 @@ export interface LessonStep {
   /** The sidebar's objective for the step (and epsilon, for the approximation). */
   objective?: ObjectiveId;
   epsilon?: number;
-  /** The view's button that builds its instance, if any. */
+  /** The view's selects the step sets (by id, to an option's value), as if chosen. */
+  controls?: Readonly<Record<string, string>>;
+  /** The view's button the step presses, if any (one that builds its instance, or shows its layout). */
   build?: string;
   doThis: string;
   notice: string;
@@ -63,5 +65,17 @@ export const LESSON_STEPS: readonly LessonStep[] = [
     objective: 'min-local-minima',
     doThis: 'Press Play to step k from 1 to 8.',
     notice: 'Regions cut by the fixed edges merge as k grows, each with more triangulations. On this terrain the fewest pits (red dots) falls from k = 1 to k = 2 and again to k = 3: pits that no first order triangulation removes go once a circumcircle may hold two points, then three.',
+  },
+  {
+    tab: 'water',
+    title: 'Why pits matter (Section 1)',
+    // A fractal relief of 144 points whose Delaunay triangulation has pits that the
+    // first and second order optima remove.
+    terrain: { kind: 'fractal', count: 144, seed: 38 },
+    objective: 'min-local-minima',
+    controls: { 'water-objective': 'min-local-minima', 'water-order': '1' },
+    build: 'water-show-both',
+    doThis: 'Compare the two panes, then choose order 2.',
+    notice: 'Water stops at every pit, so a pit the triangulation made up cuts its basin off from the stream it belongs to, and runoff and erosion models built on the terrain break there. On this terrain the fewest local minima at order 1 leaves fewer pits than Delaunay, and order 2 fewer still, with no new pit: the whole basin of each pit that went drains into one neighbour and takes its colour.',
   },
 ];

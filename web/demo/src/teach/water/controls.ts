@@ -1,14 +1,16 @@
 // The Water view (issue 60): where water runs on the Delaunay triangulation and
-// on an optimum, so that basins visibly merge when the optimum removes pits.
+// on an optimum, side by side, so that basins visibly merge when the optimum
+// removes pits; or one of them alone, for narrow screens.
 import { OBJECTIVE_IDS, type ObjectiveId } from 'hodt';
 import { h } from '../../ui/dom.ts';
 import { OBJECTIVE_HELP } from '../../ui/objectiveHelp.ts';
 import { orderOptions } from '../../ui/orderOptions.ts';
-import { createShownState } from '../canvas.ts';
-import { button, COMPONENT_COLORS, createPane, legend, objectiveOptions, paperLink } from '../common.ts';
+import { createFittedCanvas } from '../canvas.ts';
+import { button, createPane, legend, objectiveOptions, paperLink } from '../common.ts';
 import { latestSolve, pageView, teachView } from '../view.ts';
-import { drawWater, FLOW_COLOR, OUTLET_COLOR, PIT_COLOR } from './draw.ts';
-import { countsText, shownNetwork, startWater, waterHooks, withSolution, type WaterShown, type WaterState } from './model.ts';
+import { drawWater } from './draw.ts';
+import { countsText, networkFor, sideCounts, sidesOf, startWater, waterHooks, withSolution, type WaterLayout, type WaterSide, type WaterState } from './model.ts';
+import { BASIN_COLORS, FLOW_COLOR, OUTLET_COLOR, PIT_COLOR } from './waterStyle.js';
 
 /** Removing pits is what the paper optimises for water: the view starts there. */
 const DEFAULT_OBJECTIVE: ObjectiveId = 'min-local-minima';
@@ -31,14 +33,37 @@ export const waterView = teachView({
     order.replaceChildren(...orderOptions());
     for (const select of [objective, order]) select.addEventListener('change', () => view.invalidate());
 
-    let showing: WaterShown = 'optimum';
-    const show = (which: WaterShown) => {
-      showing = which;
-      for (const [b, w] of [[delaunayButton, 'delaunay'], [optimumButton, 'optimum']] as const) b.setAttribute('aria-pressed', String(w === which));
-      shown.render();
+    let state: WaterState | null = null;
+    // One pane per side, each with its caption (name and counts) and canvas;
+    // each pane captions itself, so the view's own caption goes.
+    caption.remove();
+    const panes = (['delaunay', 'optimum'] as const).map((which) => {
+      const name = h('b', { class: 'water-name' });
+      const counts = h('span', { id: `water-${which}-counts` });
+      const el = h('div', { class: 'water-pane', id: `water-pane-${which}` }, h('span', { class: 'view-label', id: `water-${which}-caption` }, name, ' ', counts));
+      const label = which === 'delaunay' ? 'Drainage of the Delaunay triangulation' : 'Drainage of the optimal triangulation';
+      const canvas = createFittedCanvas(el, (c, f) => {
+        const w = state && networkFor(state, which);
+        if (w && state) drawWater(c, f, w, ctx.points(), state.slots);
+      }, label);
+      return { which, el, name, counts, canvas };
+    });
+    const split = h('div', { class: 'water-panes' }, ...panes.map((p) => p.el));
+    main.append(split);
+
+    let layout: WaterLayout = 'both';
+    const layoutButtons = ([
+      ['both', 'Side by side', 'Show the drainage of Delaunay and of the optimum side by side'],
+      ['delaunay', 'Delaunay', 'Show the drainage of the Delaunay triangulation alone'],
+      ['optimum', 'Optimum', 'Show the drainage of the optimal triangulation alone'],
+    ] as const).map(([which, text, title]) => button(`water-show-${which}`, text, title, () => show(which)));
+    const show = (which: WaterLayout) => {
+      layout = which;
+      layoutButtons.forEach((b, i) => b.setAttribute('aria-pressed', String((['both', 'delaunay', 'optimum'] as const)[i] === which)));
+      split.dataset.layout = which;
+      for (const p of panes) p.el.hidden = !sidesOf(which).includes(p.which);
+      render();
     };
-    const delaunayButton = button('water-show-delaunay', 'Delaunay', 'Show the drainage of the Delaunay triangulation', () => show('delaunay'));
-    const optimumButton = button('water-show-optimum', 'Optimum', 'Show the drainage of the optimal triangulation', () => show('optimum'));
 
     const counts = h('p', { class: 'teach-status', id: 'water-counts', 'aria-live': 'polite' });
     const why = h(
@@ -48,13 +73,28 @@ export const waterView = teachView({
     );
     const key = legend([
       ['line', FLOW_COLOR, 'flow: each point to its steepest lower neighbour; wider with log(points draining through it)'],
-      ['fill', COMPONENT_COLORS[0]!, 'a basin (the points that end at one pit or outlet); a triangle takes the basin of two of its corners, pale if none'],
+      ['fill', BASIN_COLORS[0], 'a basin (the points that end at one pit or outlet), in the colour of its Delaunay basin: a merged basin takes the colour of the one it joined; a triangle takes the basin of two of its corners, pale if none'],
       ['dot', PIT_COLOR, 'pit: an interior point where water stops'],
       ['dot', OUTLET_COLOR, 'outlet (a square): a boundary point where water leaves'],
     ]);
-    side.append(h('div', { class: 'row' }, objective, order), h('div', { class: 'segmented' }, delaunayButton, optimumButton), counts, why, key);
+    side.append(h('div', { class: 'row' }, objective, order), h('div', { class: 'segmented' }, ...layoutButtons), counts, why, key);
 
-    const shown = createShownState<WaterState | null>(main, 'Drainage: flow lines, basins, pits and outlets', (c, f, s) => drawWater(c, f, shownNetwork(s, showing), ctx.points()), fill, null);
+    /** The panes' captions and the counts, from the state; the canvases redrawn. */
+    function render(): void {
+      for (const p of panes) p.canvas.redraw();
+      if (!state) return;
+      counts.textContent = countsText(state);
+      for (const p of panes) {
+        // Short, so that the counts fit beside it: the objective is the select's, and the canvas's label.
+        p.name.textContent = p.which === 'delaunay' ? 'Delaunay' : `Optimum (order ${state.order})`;
+        if (p.which === 'optimum') p.canvas.canvas.setAttribute('aria-label', `Drainage of the optimal triangulation (${OBJECTIVE_HELP[state.objective].name.toLowerCase()}, order ${state.order})`);
+        p.counts.textContent = sideCounts(state, p.which);
+      }
+    }
+    const set = (s: WaterState) => {
+      state = s;
+      render();
+    };
     const solver = latestSolve(ctx.solver);
 
     function refresh(): void {
@@ -62,26 +102,21 @@ export const waterView = teachView({
       const { method, epsilon, maxEdge } = ctx.settings();
       const terrain = ctx.terrain();
       const solving = startWater(terrain, k, id);
-      shown.canvas.fit(ctx.points());
-      shown.set(solving);
+      for (const p of panes) p.canvas.fit(ctx.points());
+      set(solving);
       solver.solve({ points: ctx.points(), objective: id, method, epsilon, order: k, maxEdge }, (o) => {
-        if (!terrain.disposed) shown.set(withSolution(solving, o, terrain));
+        if (!terrain.disposed) set(withSolution(solving, o, terrain));
       });
     }
 
-    function fill(s: WaterState): void {
-      counts.textContent = countsText(s);
-      const which = showing === 'optimum' && s.optimum ? `the optimum (${OBJECTIVE_HELP[s.objective].name.toLowerCase()}, order ${s.order})` : 'Delaunay';
-      caption.textContent = `Drainage of ${which}`;
-    }
-
-    show(showing);
+    show(layout);
+    const paneText = () => Object.fromEntries(panes.map((p) => [p.which, p.el.querySelector('.view-label')!.textContent ?? ''])) as Record<WaterSide, string>;
     const view = pageView({
       root,
       refresh,
       changed: () => solver.drop(),
-      canvas: shown.canvas,
-      hooks: () => waterHooks(shown.state, showing, counts.textContent ?? ''),
+      canvas: { redraw: () => panes.forEach((p) => p.canvas.redraw()) },
+      hooks: () => waterHooks(state, layout, counts.textContent ?? '', paneText()),
     });
     return view;
   },

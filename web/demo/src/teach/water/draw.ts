@@ -1,36 +1,28 @@
-// Drawing of the Water view: the triangulation faint, each triangle in the
-// colour of the basin most of its corners drain to, the flow lines wider with
-// log(accumulation), pits (red) and outlets (blue).
+// Drawing of one pane of the Water view: the triangulation faint, each triangle
+// in the colour of the basin most of its corners drain to, the flow lines wider
+// with log(accumulation), pits (red) and outlets (blue squares). The colours and
+// widths are waterStyle.js, which the README's drainage figure draws with too.
 import { withAlpha } from '../../views/plan/planRenderer.ts';
 import { screenPoints, trianglePath, type FittedCanvas } from '../canvas.ts';
-import { COMPONENT_COLORS } from '../common.ts';
-import { basinSlot, flowWidth, type WaterNetwork } from './model.ts';
+import type { WaterNetwork } from './model.ts';
+import { BASIN_COLORS, BASIN_OPACITY, FLOW_COLOR, flowWidth, majorityBasin, NO_BASIN_COLOR, OUTLET_COLOR, PIT_COLOR } from './waterStyle.js';
 
-export const FLOW_COLOR = '#0b4f8a';
-export const PIT_COLOR = '#c62828';
-export const OUTLET_COLOR = '#1565c0';
-
-/** The basin of at least two of the triangle's corners, or -1. */
-function majorityBasin(w: WaterNetwork, t: number): number {
-  const [a, b, c] = [w.basin[w.triangles[3 * t]!]!, w.basin[w.triangles[3 * t + 1]!]!, w.basin[w.triangles[3 * t + 2]!]!];
-  return a === b || a === c ? a : b === c ? b : -1;
-}
-
-export function drawWater(c: CanvasRenderingContext2D, f: FittedCanvas, w: WaterNetwork, p: Float64Array): void {
+/** Draws network w of points p; `slots` colour a basin by its pit or outlet. */
+export function drawWater(c: CanvasRenderingContext2D, f: FittedCanvas, w: WaterNetwork, p: Float64Array, slots: Int32Array): void {
   const { X, Y } = screenPoints(f, p);
-  const slots = COMPONENT_COLORS.length;
   // Basins: one path per colour slot.
-  const fills = Array.from({ length: slots }, () => [] as number[]);
+  const fills = BASIN_COLORS.map(() => [] as number[]);
   const mixed: number[] = [];
   for (let t = 0; t < w.triangles.length / 3; t++) {
-    const slot = basinSlot(majorityBasin(w, t), slots);
+    const root = majorityBasin(w.triangles, w.basin, t);
+    const slot = root < 0 ? -1 : slots[root]!;
     (slot < 0 ? mixed : fills[slot]!).push(t);
   }
   fills.forEach((ts, slot) => {
-    c.fillStyle = withAlpha(COMPONENT_COLORS[slot]!, 0.3);
+    c.fillStyle = withAlpha(BASIN_COLORS[slot]!, BASIN_OPACITY);
     c.fill(trianglePath(f, p, w.triangles, ts));
   });
-  c.fillStyle = '#f1f3f2';
+  c.fillStyle = NO_BASIN_COLOR;
   c.fill(trianglePath(f, p, w.triangles, mixed));
   c.strokeStyle = 'rgba(60, 72, 68, 0.22)';
   c.lineWidth = 0.6;

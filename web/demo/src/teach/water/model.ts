@@ -5,6 +5,7 @@
 // point drains where is the library's answer.
 import type { ObjectiveId, Terrain } from 'hodt';
 import type { SolveOutcome } from '../../solver/solverClient.ts';
+import { BASIN_COLORS, basinSlots } from './waterStyle.js';
 
 /** One triangulation's drainage network, as the view draws it. */
 export interface WaterNetwork {
@@ -45,8 +46,13 @@ export function networkOf(terrain: Terrain, triangles?: Uint32Array): WaterNetwo
   return { triangles: tris, segments, accumulation, basin: d.basin, pits: d.pits, outlets: d.outlets, basins: d.pits.length + d.outlets.length, maxAccumulation };
 }
 
-/** Which network the canvas shows. */
-export type WaterShown = 'delaunay' | 'optimum';
+/** The two triangulations the view compares. */
+export type WaterSide = 'delaunay' | 'optimum';
+/** What the view shows: both side by side, or one of them (for narrow screens). */
+export type WaterLayout = 'both' | WaterSide;
+
+/** The panes a layout shows, left to right. */
+export const sidesOf = (layout: WaterLayout): readonly WaterSide[] => (layout === 'both' ? ['delaunay', 'optimum'] : [layout]);
 
 export interface WaterState {
   order: number;
@@ -55,10 +61,17 @@ export interface WaterState {
   /** The optimum's network, once the solver answered. */
   optimum: WaterNetwork | null;
   failure: string | null;
+  /** Per point: the colour slot of its Delaunay basin (waterStyle.js). A basin of
+   * either network is drawn in the slot of its pit or outlet, so a basin keeps
+   * its colour in the optimum and a merged one takes its neighbour's. */
+  slots: Int32Array;
 }
 
 /** The state while the optimum is being solved (Delaunay's network is at hand). */
-export const startWater = (terrain: Terrain, order: number, objective: ObjectiveId): WaterState => ({ order, objective, delaunay: networkOf(terrain), optimum: null, failure: null });
+export function startWater(terrain: Terrain, order: number, objective: ObjectiveId): WaterState {
+  const delaunay = networkOf(terrain);
+  return { order, objective, delaunay, optimum: null, failure: null, slots: basinSlots(delaunay.triangles, delaunay.basin, BASIN_COLORS.length) };
+}
 
 /** The state with the solver's answer: the drainage of the returned triangles. */
 export function withSolution(s: WaterState, o: SolveOutcome, terrain: Terrain): WaterState {
@@ -66,31 +79,24 @@ export function withSolution(s: WaterState, o: SolveOutcome, terrain: Terrain): 
   return { ...s, optimum: networkOf(terrain, o.solution.triangles) };
 }
 
-/** The network to draw: the optimum falls back to Delaunay until it is solved. */
-export const shownNetwork = (s: WaterState, shown: WaterShown): WaterNetwork => (shown === 'optimum' && s.optimum) || s.delaunay;
+/** A side's network: the optimum's, once solved. */
+export const networkFor = (s: WaterState, side: WaterSide): WaterNetwork | null => (side === 'delaunay' ? s.delaunay : s.optimum);
 
 const plural = (n: number, word: string) => `${n} ${word}${n === 1 ? '' : 's'}`;
 const describe = (w: WaterNetwork) => `${plural(w.pits.length, 'pit')}, ${plural(w.basins, 'basin')}`;
 
 /** "Delaunay: P pits, B basins; optimum (order k): P' pits, B' basins". */
 export function countsText(s: WaterState): string {
-  const optimum = s.optimum ? describe(s.optimum) : s.failure ? `not solved (${s.failure})` : 'solving…';
-  return `Delaunay: ${describe(s.delaunay)}; optimum (order ${s.order}): ${optimum}`;
+  return `Delaunay: ${sideCounts(s, 'delaunay')}; optimum (order ${s.order}): ${sideCounts(s, 'optimum')}`;
 }
 
-/** Line width of a flow segment: grows with log(accumulation), 1 for a point
- * that drains only itself, `widest` for the largest flow. */
-export function flowWidth(accumulation: number, maxAccumulation: number, widest = 6): number {
-  if (maxAccumulation <= 1) return 1;
-  return 1 + ((widest - 1) * Math.log(accumulation)) / Math.log(maxAccumulation);
+/** A pane's counts: "P pits, B basins", or why there are none yet. */
+export function sideCounts(s: WaterState, side: WaterSide): string {
+  const w = networkFor(s, side);
+  return w ? describe(w) : s.failure ? `not solved (${s.failure})` : 'solving…';
 }
 
-/** A basin's colour slot: by its pit or outlet, so that a basin keeps its colour
- * between Delaunay and the optimum and a merged basin takes the colour of the
- * one it joined. */
-export const basinSlot = (root: number, slots: number) => (root < 0 ? -1 : (root * 7919) % slots);
-
-export function waterHooks(s: WaterState | null, shown: WaterShown, counts: string): Record<string, unknown> {
+export function waterHooks(s: WaterState | null, layout: WaterLayout, counts: string, panes: Record<WaterSide, string>): Record<string, unknown> {
   const net = (w: WaterNetwork | null | undefined) => (w ? { pits: w.pits.length, outlets: w.outlets.length, basins: w.basins, segments: w.segments.length / 2 } : null);
-  return { order: s?.order ?? null, objective: s?.objective ?? null, shown, delaunay: net(s?.delaunay), optimum: net(s?.optimum), failure: s?.failure ?? null, counts };
+  return { order: s?.order ?? null, objective: s?.objective ?? null, layout, delaunay: net(s?.delaunay), optimum: net(s?.optimum), failure: s?.failure ?? null, counts, panes };
 }
