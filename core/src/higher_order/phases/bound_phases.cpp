@@ -37,7 +37,7 @@ void prove_by_dual(KOrderRun& run) {
   }
   DualLimits dual;
   dual.progress = run.proving;
-  dual.max_rounds = 2;
+  dual.max_rounds = run.budgets.dual_proof_rounds;
   StateDpLimits dl;
   dl.progress = run.proving;
   for (const double clusters : run.budgets.dual_clusters) {
@@ -46,15 +46,14 @@ void prove_by_dual(KOrderRun& run) {
     if (!proof.applies()) return;
     answer.tighten(*proof.bound(), "the dual bound");
     StateDpLimits window = dl;
-    window.max_table = 1 << 16;
-    const std::vector<uint32_t> x =
-        improve_by_windows(model.graph, improve_states(model.graph, proof.decoded(), run.proving), window, 24);
+    window.max_table = run.budgets.dual_window_table;
+    const std::vector<uint32_t> x = improve_by_windows(
+        model.graph, improve_states(model.graph, proof.decoded(), run.proving), window, run.budgets.dual_window_variables);
     Mesh m = R.triangulation(run.dt, model.region_states(x));
     const double v = evaluate(run.o, m);
     answer.offer(std::move(m), v, "local search from the dual");
-    // (What is left after pruning is far smaller: its DP may use a larger table.)
     StateDpLimits pruned = dl;
-    pruned.max_table = 1 << 24;
+    pruned.max_table = run.budgets.pruned_dp_table;
     const DualProof::Proof p = proof.prove(answer.value(), pruned);
     if (!p.proven) continue;
     const std::string why = "the dual bound (clusters of " + std::to_string(static_cast<int>(clusters)) + " entries) kept " +

@@ -22,7 +22,7 @@ std::optional<double> read_fill_graphs(KOrderRun& run, Incumbent& answer, const 
   RegionDualLimits limits;
   limits.dual.progress = limits.dp.progress = progress;
   limits.model = engine.model_limits;
-  limits.dp.max_table = 1 << 24;
+  limits.dp.max_table = run.budgets.pruned_dp_table;
   limits.dual.max_sweeps = max_sweeps;
   std::optional<double> bound;
   // One reading of R: its descents' best is offered, its bound tightens

@@ -1,6 +1,7 @@
 // The budgets of the order-k solve's phases, each with its default and why.
 // (The regions' listing budgets are RegionLimits, regions.hpp; the exact DP's,
-// the duals' and the views' are their engines' limits.)
+// the duals' and the views' own defaults are their engines' limits, which the
+// phases override only through the fields below.)
 #pragma once
 #include <cstdint>
 
@@ -57,6 +58,24 @@ struct PhaseBudgets {
   // built (one order's regions in memory at a time), and the quick fill-graph
   // reading is skipped: the exact engine rarely answers there on large inputs.
   uint32_t early_rung_order = 5;
+  // The dual proof's rounds per clustering (each prunes by the bound, tries the
+  // DP over what is left, else raises the bound and prunes again): the next
+  // clustering is a tighter relaxation, worth more than a third round.
+  uint32_t dual_proof_rounds = 2;
+  // Local search from the dual's decoded states: windows of this many
+  // variables, each solved by a DP within this table (many small windows move
+  // further than a few large ones in the same time).
+  uint32_t dual_window_variables = 24;
+  double dual_window_table = 1 << 16;
+  // What a proof's pruning leaves is far smaller than the model: its DP (and
+  // the DP over the fill graphs' listed states) may use a table this large.
+  double pruned_dp_table = 1 << 24;
+  // Descents by windows of fans around the stars' decoding: at most this many
+  // placements of the tiles in all, and these window sizes in turn after the
+  // decoding (a move that no window of one size holds may fit one of the next;
+  // the first size is also the one tried before and after the stars).
+  uint32_t fan_window_placements = 16;
+  uint32_t fan_window_sizes[4] = {25, 40, 64, 102};
 };
 
 }  // namespace hodt

@@ -55,7 +55,7 @@ void search_stars(KOrderRun& run) {
     }
   };
   // Descent from s by windows of `size` vertices while they improve it, at
-  // most `passes` passes (and 16 in all), each with its tiles placed anew (a
+  // most `passes` passes (and the budget's placements in all), each with its tiles placed anew (a
   // move across one pass's tile borders may lie inside the next's); true if it
   // improved s.
   WindowLimits windows;
@@ -64,7 +64,7 @@ void search_stars(KOrderRun& run) {
   auto descend = [&](Start& s, uint32_t size, uint32_t passes) {
     windows.per_window = size;
     bool improved = false;
-    for (uint32_t pass = 0; pass < passes && placement < 16 && better(sense, bound, s.value); ++pass) {
+    for (uint32_t pass = 0; pass < passes && placement < run.budgets.fan_window_placements && better(sense, bound, s.value); ++pass) {
       windows.enough = std::fabs(bound - s.value);  // (then the value meets the bound)
       windows.placement = placement++;
       const auto w = improve_by_windows(dt, o, cand, s.triangulation, windows);
@@ -75,7 +75,8 @@ void search_stars(KOrderRun& run) {
     }
     return improved;
   };
-  if (value_side) windowed = descend(best, 25, 2);
+  const uint32_t first_size = run.budgets.fan_window_sizes[0];
+  if (value_side) windowed = descend(best, first_size, 2);
   if (better(sense, bound, best.value)) {
     StarBoundLimits stars;
     stars.progress = progress;
@@ -90,11 +91,11 @@ void search_stars(KOrderRun& run) {
       run.answer.tighten(bound, "the vertices' stars");
     }
     if (b && b->decoder) decode(*b->decoder);
-    if (value_side && second && descend(*second, 25, 2) && better(sense, second->value, best.value))
+    if (value_side && second && descend(*second, first_size, 2) && better(sense, second->value, best.value))
       best = std::move(*second), decoded = windowed = true;
-    // Then windows of 25 vertices while they improve it, then of 40, 64 and
-    // 102: a move that no window of one size holds may fit one of the next.
-    for (const uint32_t size : {25u, 40u, 64u, 102u}) windowed = descend(best, size, 16) || windowed;
+    // Then windows of each size in turn while they improve it.
+    for (const uint32_t size : run.budgets.fan_window_sizes)
+      windowed = descend(best, size, run.budgets.fan_window_placements) || windowed;
   }
   if (decoded || windowed) {
     const std::string by = decoded && windowed ? "a triangulation read off the stars, then descent by windows of fans"
