@@ -83,7 +83,6 @@ void view_regions(KOrderRun& run) {
   auto vb = view_bound(run.dt, engine.R, run.o, engine.cand, engine.terms, engine.limits.max_region_triangles,
                              run.answer.value(), bound, vl);
   if (!vb) return;
-  run.views_moved = better(run.sense, bound, vb->bound);
   run.answer.tighten(vb->bound, "the regions' views");
   if (vb->realised && !better(run.sense, run.answer.value(), vb->bound))
     run.answer.offer(std::move(*vb->realised), vb->bound,  // (its value, evaluated)

@@ -90,7 +90,6 @@ struct KOrderRun {
   std::vector<uint8_t> changed;  // the regions given a triangulation since the model was built
   bool added = false;
   std::optional<RegionDual> unglued;  // the fill graphs' first reading, when glue might tighten it
-  bool views_moved = false;           // the regions' views tightened the bound
 
   Incumbent answer;
   // The answer is another solver's, final as it is (its method and details).

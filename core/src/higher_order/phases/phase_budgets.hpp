@@ -72,8 +72,7 @@ struct PhaseBudgets {
   double pruned_dp_table = 1 << 24;
   // Descents by windows of fans around the stars' decoding: at most this many
   // placements of the tiles in all, and these window sizes in turn after the
-  // decoding (a move that no window of one size holds may fit one of the next;
-  // the first size is also the one tried before and after the stars).
+  // decoding (a move that no window of one size holds may fit one of the next).
   uint32_t fan_window_placements = 16;
   uint32_t fan_window_sizes[4] = {25, 40, 64, 102};
 };

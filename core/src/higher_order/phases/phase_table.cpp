@@ -22,10 +22,10 @@ bool small_min_max(const KOrderRun& r) {
 }  // namespace
 
 // Cheap proofs first, then the exact engine, then the search and its starts,
-// then the bounds from the cheapest up. Counts read the dual before the views
-// (the dual proves most of them on its own); the stars come after the views,
-// which tell them whether the gap is more likely the value's or the bound's;
-// the glued fill graphs last, where all else left a gap.
+// then the bounds from the cheapest up. Counts read the dual first (it proves
+// most of them on its own); the regions' views, which cost the most and which
+// the other bounds almost always make redundant, come after the fans and the
+// stars; the glued fill graphs last, where all else left a gap.
 const std::vector<KOrderPhase>& k_order_phases() {
   static const std::vector<KOrderPhase> rows = {
       {"the first order optimum meets the global bound",
@@ -62,11 +62,11 @@ const std::vector<KOrderPhase>& k_order_phases() {
       {"the terms' floor", [](const KOrderRun& r) { return r.bounded && max_terms(r); }, floor_terms},
       {"the dual proof", [](const KOrderRun& r) { return r.provable; }, prove_by_dual},
       {"the relaxation, after the dual", [](const KOrderRun& r) { return r.dual_first; }, relax},
-      {"the regions' views", [](const KOrderRun& r) { return r.bounded; }, view_regions},
       {"thresholds over the fill graphs", [](const KOrderRun& r) { return r.bounded && max_terms(r) && incomplete(r); },
        refute_thresholds},
       {"the vertices' fans", [](const KOrderRun& r) { return r.bounded && max_terms(r); }, floor_fans},
       {"the vertices' stars", [](const KOrderRun& r) { return r.bounded && !max_terms(r); }, search_stars},
+      {"the regions' views", [](const KOrderRun& r) { return r.bounded; }, view_regions},
       {"the fill graphs glued", [](const KOrderRun& r) { return r.bounded && r.unglued.has_value(); }, glue_fill_graphs},
   };
   return rows;

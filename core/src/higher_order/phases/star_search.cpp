@@ -14,17 +14,12 @@ namespace hodt {
 // do. Sweeps four ways, then repairs of the best at hand while they improve it;
 // then windows of 25 vertices, each at its best with the rest kept
 // (fan_windows.hpp), while they improve it, then larger ones.
-// When the regions' views moved the bound, the gap is more likely the value's:
-// two passes of windows come first, and the stars only if a gap is left; the
-// stars' best reading is then a second start when it does not beat the best at
-// hand (windows from it can reach what they do not from there).
 void search_stars(KOrderRun& run) {
   const Mesh& dt = run.dt;
   const Objective o = run.o;
   const Sense sense = run.sense;
   const Candidates& cand = run.engine->cand;
   const Progress& progress = run.proving;
-  const bool value_side = run.views_moved;
   double bound = run.bound();
   struct Start {
     Mesh triangulation;
@@ -37,14 +32,12 @@ void search_stars(KOrderRun& run) {
     return Start{std::move(m), v};
   };
   Start best{run.answer.triangulation(), run.answer.value()};
-  std::optional<Start> second;
   bool decoded = false, windowed = false;
   auto adopt = [&](Start s) {
     if (better(sense, s.value, best.value)) {
       best = std::move(s), decoded = true;
       return true;
     }
-    if (value_side && (!second || better(sense, s.value, second->value))) second = std::move(s);
     return false;
   };
   auto decode = [&](const StarDecoder& d) {
@@ -75,8 +68,6 @@ void search_stars(KOrderRun& run) {
     }
     return improved;
   };
-  const uint32_t first_size = run.budgets.fan_window_sizes[0];
-  if (value_side) windowed = descend(best, first_size, 2);
   if (better(sense, bound, best.value)) {
     StarBoundLimits stars;
     stars.progress = progress;
@@ -91,8 +82,6 @@ void search_stars(KOrderRun& run) {
       run.answer.tighten(bound, "the vertices' stars");
     }
     if (b && b->decoder) decode(*b->decoder);
-    if (value_side && second && descend(*second, first_size, 2) && better(sense, second->value, best.value))
-      best = std::move(*second), decoded = windowed = true;
     // Then windows of each size in turn while they improve it.
     for (const uint32_t size : run.budgets.fan_window_sizes)
       windowed = descend(best, size, run.budgets.fan_window_placements) || windowed;
