@@ -13,6 +13,7 @@ import { loadModule } from '../dist/load.js';
 import { measureEditsInChromium } from '../bench/edit_chromium.mjs';
 import { runCliEndToEnd } from '../bench/cli_end_to_end.mjs';
 import { runOrderK } from '../bench/order_k.mjs';
+import { runSmallInputs } from '../bench/small_inputs.mjs';
 import { runUsersFiles } from '../bench/users_files.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
@@ -215,6 +216,8 @@ for (const [kind, make] of [['grid', (w) => KINDS.grid(w * w)], ['saddle', saddl
 }
 // Order k: every objective, orders 1..8 (bench/order_k.mjs).
 summary.orderK = await runOrderK({ root, tmp, hodt: await loadHodt(), log, quick });
+// Small terrains at orders 2..8: the slowest case per order (bench/small_inputs.mjs).
+summary.smallInputs = await runSmallInputs({ root, tmp, hodt: await loadHodt(), log, quick });
 // The CLI end to end, wasm against native (bench/cli_end_to_end.mjs).
 if (!onlyKinds) summary.cliEndToEnd = runCliEndToEnd({ root, tmp, log, quick });
 // Users' files end to end: a NODATA raster with and without its domain, 17-digit

@@ -51,6 +51,12 @@ struct PhaseBudgets {
   double dual_clusters[2] = {4096, 1024};
   // Min-max thresholds refuted over the regions' fill graphs: sweeps per threshold.
   uint32_t threshold_sweeps = 100;
+  // Sums on inputs of at most this many points take no start from the order
+  // below: there this order's own searches (for counts, the dual proof's local
+  // search from its decoded states) start as well, and the ladder's rungs
+  // would cost more than the rest of the solve. (Min-max objectives keep the ladder: the start's value
+  // is what prunes their branch and bound and their thresholds.)
+  uint32_t sum_ladder_points = 200;
   // The last order whose ladder rung is k - 1; above, the rung is k / 2 (each
   // rung costs about as much as its order, and halving keeps the ladder short).
   uint32_t rung_step_max_order = 8;

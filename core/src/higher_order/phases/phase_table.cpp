@@ -18,6 +18,10 @@ bool small_min_max(const KOrderRun& r) {
   return r.bounded && r.k >= 2 && r.dt.num_vertices() <= r.budgets.branch_and_bound_points &&
          branch_and_bound_applies(r.o, r.dt);
 }
+// Whether a rung of the ladder (the order below) gives this order its start.
+bool ladder(const KOrderRun& r) {
+  return r.k >= 3 && (max_terms(r) || r.dt.num_vertices() > r.budgets.sum_ladder_points);
+}
 
 }  // namespace
 
@@ -35,7 +39,7 @@ const std::vector<KOrderPhase>& k_order_phases() {
       {"a diagonal per quad", [](const KOrderRun& r) { return r.k >= 2; }, solve_as_quads},
       // (One order's regions in memory at a time.)
       // (Not before the branch and bound, which needs no rung.)
-      {"the lower order, first", [](const KOrderRun& r) { return r.k >= 3 && r.k >= r.budgets.early_rung_order && !small_min_max(r); },
+      {"the lower order, first", [](const KOrderRun& r) { return ladder(r) && r.k >= r.budgets.early_rung_order && !small_min_max(r); },
        solve_lower_order},
       {"listing the regions", always, build_engine},
       {"listing the regions whole", [](const KOrderRun& r) { return r.provable && incomplete(r); }, list_whole},
@@ -49,7 +53,7 @@ const std::vector<KOrderPhase>& k_order_phases() {
          return r.provable && r.k < r.budgets.early_rung_order && incomplete(r) && r.options.method != Method::Approx;
        },
        quick_fill_graph_proof},
-      {"the lower order", [](const KOrderRun& r) { return r.k >= 3 && !r.lower; }, solve_lower_order},
+      {"the lower order", [](const KOrderRun& r) { return ladder(r) && !r.lower; }, solve_lower_order},
       {"the lower order's answer as a start", [](const KOrderRun& r) { return r.lower.has_value(); }, start_from_lower_order},
       {"the best listed combination", always, best_listed},
       {"Baker's shifting at order k",
