@@ -14,6 +14,7 @@
 #include "higher_order/k_order.hpp"
 #include "higher_order/regions/region_engine.hpp"
 #include "higher_order/search/k_order_baker.hpp"
+#include "tuning/budgets.hpp"
 
 using namespace hodt;
 using namespace hodt::test;
@@ -64,7 +65,7 @@ TEST_CASE("forced edges: the engine's optimum equals brute force over the k-OD t
   for (uint64_t seed = 1; seed <= 40; ++seed) {
     const auto pts = seed % 4 == 0 ? grid_points(5, 5, seed, true) : mixed_instance(seed, 1);
     const Mesh dt = delaunay(validate_points(pts).xyz);
-    if (dt.num_vertices() > kKOrderBruteForceMaxPoints) continue;
+    if (dt.num_vertices() > kBudgets.brute_force_max_points) continue;
     const std::vector<uint32_t> depth = hull_depth(dt);
     for (uint32_t k : {2u, 3u}) {
       const KOrderStructure structure(dt, k, {});

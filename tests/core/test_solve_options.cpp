@@ -12,7 +12,10 @@
 #include "hodt/solve.hpp"
 #include "hodt/solve_options.hpp"
 #include "generators.hpp"
+#include "engines/factor_graph.hpp"
 #include "higher_order/k_order.hpp"
+#include "higher_order/regions/regions.hpp"
+#include "tuning/budgets.hpp"
 
 using namespace hodt;
 using namespace hodt::test;
@@ -132,4 +135,14 @@ TEST_CASE("every method at order k: brute force enumerates or refuses, exact run
   const Solution h = solve(large, Objective::MinLocalMinima, options);
   CHECK(h.method == (h.optimal ? "exact" : "heuristic"));
   CHECK(h.value >= e.value);
+}
+
+// The public options' default width is the engine's budget, and the engines'
+// limits start from the budgets (tuning/budgets.hpp): one place to change them.
+TEST_CASE("the options and the engines' limits take their defaults from the budgets") {
+  CHECK(SolveOptions{}.max_width == kBudgets.dp_max_width);
+  CHECK(DpLimits{}.max_width == kBudgets.dp_max_width);
+  CHECK(DpLimits{}.max_term_scope == kBudgets.dp_max_term_scope);
+  CHECK(RegionLimits{}.max_nodes_per_region == kBudgets.region_max_nodes);
+  CHECK(RegionLimits{}.first_pass_states == kBudgets.region_first_pass_states);
 }

@@ -9,11 +9,9 @@
 
 namespace hodt {
 
-constexpr uint32_t kBruteForceMaxQuads = 24;
-
 // Optimum over all 2^m choices (Gray code order: one flip per step). Among optimal
 // choices it returns one with the fewest flips, the first in Gray code order.
-// Throws LimitError if m > kBruteForceMaxQuads.
+// Throws LimitError if m is over the brute force's budget (24 quads).
 // progress (if given) is called for every triangulation (pace it: phased(), progress.hpp);
 // returning false cancels.
 Solution brute_force(const FirstOrder& fo, Objective objective, const Progress& progress = {});

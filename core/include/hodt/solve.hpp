@@ -16,7 +16,7 @@ struct SolveOptions {
   Method method = Method::Auto;
   double epsilon = 0.25;  // approximation schemes: value within (1 - epsilon) of optimal
   bool trace = false;     // record the bottleneck search (min-max pair objectives)
-  uint32_t max_width = 20;  // exact engine: widest tree decomposition allowed (memory cap)
+  uint32_t max_width = 20;  // exact engine: widest tree decomposition allowed (memory cap; Budgets::dp_max_width)
   // Long runs: phased(callback) to receive each phase by name, its fraction and
   // the time left (progress.hpp); a plain (done, total) function receives each
   // phase's fraction as (fraction, 1). false cancels.

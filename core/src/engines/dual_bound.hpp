@@ -20,19 +20,16 @@
 #include <vector>
 
 #include "engines/state_graph.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
+// (Defaults and reasons: tuning/budgets.hpp.)
 struct DualLimits {
-  // Factors sharing variables are joined into clusters of up to this many table
-  // entries first (a tighter relaxation; 1: none).
-  double cluster_entries = 4096;
-  uint32_t max_sweeps = 400;  // passes over every factor
-  // Rounds of proving: each prunes by the bound, tries the DP over what is
-  // left, else raises the bound over what is left (higher) and prunes again.
-  uint32_t max_rounds = 4;
-  // Stop when a pass raises the bound by less than this (in the objective's units).
-  double min_gain = 1e-3;
+  double cluster_entries = kBudgets.dual_cluster_entries;  // table entries per cluster of factors (1: none)
+  uint32_t max_sweeps = kBudgets.dual_max_sweeps;          // passes over every factor
+  uint32_t max_rounds = kBudgets.dual_max_rounds;          // rounds of proving
+  double min_gain = kBudgets.dual_min_gain;                // a pass raising the bound by less stops
   Progress progress;
 };
 

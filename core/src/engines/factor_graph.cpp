@@ -9,6 +9,7 @@
 
 #include "hodt/error.hpp"
 #include "hodt/progress.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
@@ -218,15 +219,15 @@ Decomposition decompose(const FactorGraph& g, uint32_t max_width, const Progress
     return d;
   }
   // Too wide, min-degree may leave min-fill to try, on graphs small enough to
-  // count fill-ins (2^28 pair tests: about a second): only then is the graph
+  // count fill-ins (within kBudgets.min_fill_work pair tests): only then is the graph
   // kept for it (a copy per solve of a million quads would cost more than the
   // elimination).
-  const bool fallback = elimination == Elimination::Auto && n <= kMinFillVariables;
+  const bool fallback = elimination == Elimination::Auto && n <= kBudgets.min_fill_variables;
   const Decomposition start = fallback ? d : Decomposition{};
   eliminate_min_degree(fallback ? adj : std::move(adj), d, max_width, progress);
   if (!fallback || d.complete) return d;
   Decomposition fill = start;
-  if (eliminate_min_fill(std::move(adj), fill, max_width, progress, 268435456.0) && fill.complete) return fill;
+  if (eliminate_min_fill(std::move(adj), fill, max_width, progress, kBudgets.min_fill_work) && fill.complete) return fill;
   return d;
 }
 

@@ -12,6 +12,7 @@
 #include "hodt/first_order.hpp"
 #include "hodt/objectives.hpp"
 #include "hodt/progress.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
@@ -37,15 +38,12 @@ struct FactorGraph {
 };
 
 // The exact engine's budgets, all checked before the memory or time is spent.
+// (Defaults and reasons: tuning/budgets.hpp.)
 struct DpLimits {
-  uint32_t max_width = 20;  // largest bag minus one; a bag's table has 2^(width+1) entries
-  // All tables of one run together (messages and back-pointers): 512 MiB.
-  double max_table_bytes = 512.0 * 1024 * 1024;
-  // A local term (factor) is tabulated over at most this many quads: 2^20 entries.
-  uint32_t max_term_scope = 20;
-  // Tabulating one term: at most about this many elementary steps (predicate
-  // tests), 2^28: a second or two.
-  double max_term_work = 268435456.0;
+  uint32_t max_width = kBudgets.dp_max_width;  // largest bag minus one
+  double max_table_bytes = kBudgets.dp_max_table_bytes;
+  uint32_t max_term_scope = kBudgets.dp_max_term_scope;  // quads a term is tabulated over
+  double max_term_work = kBudgets.dp_max_term_work;      // predicate tests per term
   Progress progress;
 };
 
@@ -60,10 +58,10 @@ struct Decomposition {
   bool complete = true;                      // false: stopped at a bag wider than asked
 };
 // Elimination orders: min-degree, min-fill, or (Auto) min-degree and, when that
-// is wider than max_width, min-fill on graphs of at most kMinFillVariables
-// variables (min-fill counts fill-ins: slower, often narrower).
+// is wider than max_width, min-fill on graphs of at most
+// kBudgets.min_fill_variables variables (min-fill counts fill-ins: slower, often
+// narrower).
 enum class Elimination : uint8_t { Auto, MinDegree, MinFill };
-constexpr uint32_t kMinFillVariables = 50000;
 // Stops early (complete = false) once a bag is wider than max_width: the fill-in
 // of a wide component would cost far more memory and time than the answer needs.
 Decomposition decompose(const FactorGraph& g, uint32_t max_width = UINT32_MAX, const Progress& progress = {},

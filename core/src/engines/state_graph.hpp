@@ -13,6 +13,7 @@
 #include "hodt/objectives.hpp"
 #include "hodt/progress.hpp"
 #include "engines/factor_graph.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
@@ -41,7 +42,7 @@ struct StateGraph {
 };
 
 struct StateDpLimits {
-  double max_table = 1 << 22;  // entries of the largest table the DP may build
+  double max_table = kBudgets.state_dp_max_table;  // entries of the largest table (tuning/budgets.hpp)
   // A bag over max_table is split into mini-buckets, each optimising the
   // eliminated variable on its own: the value is then a bound on the optimum
   // (StateDpResult::bound_only), not the value of the state returned.

@@ -5,15 +5,16 @@
 
 #include "hodt/error.hpp"
 #include "hodt/progress.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 namespace {
 
 void check_size(const FirstOrder& fo) {
-  if (fo.num_quads() > kBruteForceMaxQuads)
+  if (fo.num_quads() > kBudgets.brute_force_max_quads)
     throw LimitError("brute force enumerates 2^m triangulations and refuses m = " +
                      std::to_string(fo.num_quads()) + " flippable quads (at most " +
-                     std::to_string(kBruteForceMaxQuads) + "); use --method exact or auto");
+                     std::to_string(kBudgets.brute_force_max_quads) + "); use --method exact or auto");
 }
 
 // Visits every choice in Gray code order, flipping one quad per step.

@@ -11,6 +11,7 @@
 #include "higher_order/fills/fill_enumerator.hpp"
 #include "higher_order/phases/phase_table.hpp"
 #include "objectives/pair_measures.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
@@ -33,10 +34,10 @@ bool enumerate_k_order(const Mesh& dt, uint32_t k, uint64_t max_nodes,
 namespace {
 
 KOrderResult brute_force_k_order(const Mesh& dt, Objective o, uint32_t k, uint64_t max_nodes, const Progress& progress) {
-  if (dt.num_vertices() > kKOrderBruteForceMaxPoints)
+  if (dt.num_vertices() > kBudgets.brute_force_max_points)
     throw LimitError("brute force at order " + std::to_string(k) + " enumerates every k-OD triangulation and refuses " +
                      std::to_string(dt.num_vertices()) + " points (at most " +
-                     std::to_string(kKOrderBruteForceMaxPoints) + "); use --method exact or auto");
+                     std::to_string(kBudgets.brute_force_max_points) + "); use --method exact or auto");
   KOrderResult r;
   const Sense sense = info(o).sense;
   bool have = false;

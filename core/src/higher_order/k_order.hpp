@@ -19,6 +19,7 @@
 #include "hodt/solution.hpp"
 #include "hodt/solve.hpp"
 #include "higher_order/regions/regions.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
@@ -34,8 +35,8 @@ struct KOrderResult {
   std::vector<PhaseStep> phases;  // the phases that ran (the top order's)
 };
 
-// Brute force at order k enumerates the whole instance: at most this many points.
-constexpr uint32_t kKOrderBruteForceMaxPoints = 30;
+// Brute force at order k enumerates the whole instance: at most
+// kBudgets.brute_force_max_points points.
 
 // Calls visit for every k-OD triangulation of the points of `delaunay` (as a list
 // of triangles); returns false if it stopped because `max_nodes` was reached.
@@ -45,7 +46,7 @@ bool enumerate_k_order(const Mesh& delaunay, uint32_t k, uint64_t max_nodes,
 
 // max_nodes: the enumeration budget of one region (brute force: of the instance).
 KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options,
-                           uint64_t max_nodes = 300'000);
+                           uint64_t max_nodes = kBudgets.region_max_nodes);
 // The same with every budget of the regions' listing given (brute force:
 // max_nodes_per_region for the instance). Tests shrink them so that small
 // instances take the paths of large terrains, where regions stay incomplete.

@@ -10,6 +10,7 @@
 #include "geometry/kernel.hpp"
 #include "geometry/portable_math.hpp"
 #include "objectives/objective_terms.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
@@ -128,9 +129,7 @@ double enclosing_circle(const double* a, const double* b, const double* c, const
   std::sort(p, p + 4, xy_less);
   std::array<double, 6> key;
   if (!shape_key(p, key.data())) return sorted_enclosing_circle(p);
-  // (8192 shapes, 512 KB: a reprojected raster's rounding makes a few thousand
-  // distinct ones, and a cache with room for fewer misses them in turn.)
-  static thread_local RecentValues<6, double, 8192> recent;
+  static thread_local RecentValues<6, double, kBudgets.recent_circles> recent;
   return recent.get(key, [&] { return sorted_enclosing_circle(p); });
 }
 

@@ -196,7 +196,6 @@ void prove(const Mesh& dt, const Regions& R, Objective o, const std::vector<Regi
            const std::vector<uint32_t>& region_of_factor, const DualProof& proof, double best,
            const RegionDualLimits& limits, const RegionModel* model_of_R, RegionDual& out) {
   const Sense sense = info(o).sense;
-  constexpr int kShortRounds = 3;
   Regions listed = R;
   std::optional<RegionModel> model;
   if (model_of_R) model = *model_of_R;
@@ -204,7 +203,7 @@ void prove(const Mesh& dt, const Regions& R, Objective o, const std::vector<Regi
   for (uint32_t r : region_of_factor) changed[r] = 1;
   for (int round = 0;; ++round) {
     const double short_of_bound = sense == Sense::Min ? *out.bound + 1 : *out.bound - 1;
-    const bool last = round >= kShortRounds || !better(sense, short_of_bound, best);
+    const bool last = round >= static_cast<int>(limits.short_rounds) || !better(sense, short_of_bound, best);
     const double target = last ? best : short_of_bound;
     Probe p = probe(dt, listed, o, factors, region_of_factor, changed, proof, target, limits, model);
     out.listed = p.listed;

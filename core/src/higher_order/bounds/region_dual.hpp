@@ -22,27 +22,28 @@
 #include "higher_order/regions/region_model.hpp"
 #include "higher_order/regions/region_terms.hpp"
 #include "higher_order/regions/regions.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
+// (Defaults and reasons: tuning/budgets.hpp, fill_graph_*.)
 struct RegionDualLimits {
   // Partial fills of one region's graph: every region first gets first_states,
   // then those left max_states each (smallest first; when more than max_second
   // are left, until max_second_failures in a row do not fit); max_total over
-  // all, those that did not fit included.
-  uint64_t first_states = 20'000;
-  uint64_t max_states = 200'000;
-  uint32_t max_second = 256;
-  uint32_t max_second_failures = 8;
-  uint64_t max_total = 2'000'000;
-  // ... or this many per point when that is more (a large terrain at high
-  // order is many strips of thousands of partial fills each, and a total fixed
-  // for all sizes would leave most of them unread).
-  uint64_t max_total_per_point = 32;
-  uint32_t restarts = 6;               // descents from the dual's states with the regions shuffled
+  // all, those that did not fit included, or max_total_per_point per point
+  // when that is more.
+  uint64_t first_states = kBudgets.fill_graph_first_states;
+  uint64_t max_states = kBudgets.fill_graph_max_states;
+  uint32_t max_second = kBudgets.fill_graph_max_second;
+  uint32_t max_second_failures = kBudgets.fill_graph_max_second_failures;
+  uint64_t max_total = kBudgets.fill_graph_max_total;
+  uint64_t max_total_per_point = kBudgets.fill_graph_max_total_per_point;
+  uint32_t restarts = kBudgets.fill_graph_restarts;  // descents from the dual's states, regions shuffled
   // The proof lists, per region, the fills that could beat the incumbent.
-  uint64_t max_listed = 20'000;        // per region
-  uint64_t max_listed_total = 200'000;
+  uint64_t max_listed = kBudgets.fill_graph_max_listed;  // per region
+  uint64_t max_listed_total = kBudgets.fill_graph_max_listed_total;
+  uint32_t short_rounds = kBudgets.fill_graph_short_rounds;  // proving rounds before the last
   DualLimits dual;
   StateDpLimits dp;                    // for the DP over what the proof lists
   RegionModelLimits model;             // the models over the regions listed whole

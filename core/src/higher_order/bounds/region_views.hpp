@@ -16,6 +16,7 @@
 
 #include "higher_order/fills/fill_enumerator.hpp"
 #include "higher_order/regions/region_terms.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
@@ -25,8 +26,8 @@ struct RegionView {
 };
 
 struct RegionViewLimits {
-  uint64_t max_states = 100'000;  // partial fills of one view's DP
-  uint64_t max_listed = 2'000;   // triangulations kept per view
+  uint64_t max_states = kBudgets.view_max_states;  // partial fills of one view's DP (tuning/budgets.hpp)
+  uint64_t max_listed = kBudgets.view_max_listed;  // triangulations kept per view
   uint64_t max_items = UINT64_MAX;  // items per group (tests force small groups)
   uint64_t* states_used = nullptr;  // adds the partial fills of every DP tried
   Progress progress;

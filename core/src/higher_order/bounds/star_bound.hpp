@@ -32,36 +32,29 @@
 #include "hodt/objectives.hpp"
 #include "hodt/progress.hpp"
 #include "higher_order/fills/fill_enumerator.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
 class StarDecoder;  // (star_decode.hpp)
 
+// (Defaults and reasons: tuning/budgets.hpp, star_*.)
 struct StarBoundLimits {
-  // Fans as prefix trees (a node per triangle, 24 bytes with its diamond end
-  // and the interval of fans under it; 28 more per fan, 24 per end, and with
-  // decode 37 more per fan): per vertex
-  // (vertices beyond are left out, their terms at their best; when more than
-  // max_left_out of them are, the bound is not worth its steps), and per tile
-  // (more in all: tiles taken in turn, each border's vertices carried into the
-  // next, a bound a little weaker in the memory of one).
-  uint64_t max_nodes_per_vertex = 50'000;
-  uint64_t max_nodes = 16'000'000;
-  double max_left_out = 0.05;
-  // Sweeps over every diamond: at most this many, and none once the last
-  // sweep's gain, kept up for every sweep left, would not prove a better value.
-  uint32_t iterations = 50;
+  // Fans' tree nodes per vertex (vertices beyond are left out, their terms at
+  // their best; when more than max_left_out of them are, no bound) and per tile.
+  uint64_t max_nodes_per_vertex = kBudgets.star_max_nodes_per_vertex;
+  uint64_t max_nodes = kBudgets.star_max_nodes;
+  double max_left_out = kBudgets.star_max_left_out;
+  uint32_t iterations = kBudgets.star_iterations;  // sweeps over every diamond, at most
   // A bound proven already (as the objective's, not the relaxation's sign; NAN
   // for none): for counts, sweeps also stop once they cannot pass it.
   double known_bound = NAN;
-  // Fans the sweeps read, in all (each end's update reads the values of its
-  // vertex's fans: about 6e8 a second natively), shared among the tiles by
-  // their vertices: the bound's time.
-  uint64_t max_visits = 120'000'000'000;
+  // Fans the sweeps read, in all, shared among the tiles by their vertices.
+  uint64_t max_visits = kBudgets.star_max_visits;
   // A gap left: keep the fans and their values under the multipliers, to read
   // triangulations off them (StarDecoder), within this many fans tried per vertex.
   bool decode = false;
-  uint64_t decode_steps_per_vertex = 64;
+  uint64_t decode_steps_per_vertex = kBudgets.star_decode_steps_per_vertex;
   // Decoding over tiles of many (their trees are not all in memory at once):
   // after each tile's sweeps, a decoder over its vertices' fans with every
   // other vertex held at its fan in *start (a k-OD triangulation of the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 #include <unordered_set>
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
@@ -134,16 +135,15 @@ std::optional<std::vector<Tri>> StarDecoder::search(const std::vector<int64_t>& 
     }
     return true;
   };
-  // v's fans in the order tried: the first kLookahead alive ones by their
+  // v's fans in the order tried: the first few alive ones by their
   // value plus, per undecided neighbour, the best value it keeps with them (a
   // fan that leaves its neighbours poor choices goes later: the search keeps
   // the first fans that agree, so a greedy first choice costs its neighbours),
   // then the rest by value.
-  constexpr size_t kLookahead = 4;
   std::vector<std::vector<uint64_t>> ranked(n);
   auto rank = [&](uint32_t v) {
     std::vector<std::pair<int64_t, uint64_t>> top;
-    for (size_t j = 0; j < domain[v].size() && top.size() < kLookahead; ++j) {
+    for (size_t j = 0; j < domain[v].size() && top.size() < kBudgets.star_decode_lookahead; ++j) {
       const uint64_t f = domain[v][j];
       if (!alive[f]) continue;
       int64_t score = value[f];

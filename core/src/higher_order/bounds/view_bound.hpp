@@ -13,6 +13,7 @@
 
 #include "higher_order/bounds/region_views.hpp"
 #include "higher_order/regions/region_model.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
@@ -25,8 +26,8 @@ struct ViewBound {
 
 struct ViewBoundLimits {
   RegionViewLimits views;
-  uint32_t max_rounds = 4;
-  uint64_t max_total_states = 3'000'000;  // partial fills over all views' DPs (about 5 us each)
+  uint32_t max_rounds = kBudgets.view_max_rounds;  // (tuning/budgets.hpp)
+  uint64_t max_total_states = kBudgets.view_max_total_states;  // partial fills over all views' DPs
   StateDpLimits dp;
   RegionModelLimits model;  // the models over the views
 };

@@ -10,6 +10,7 @@
 #include "containers/flat_index.hpp"
 #include "containers/words_hash.hpp"
 #include "higher_order/fills/fill_graph.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
@@ -140,9 +141,6 @@ struct Node {
   Tri triangle;
 };
 
-// Open edges scanned per kept state, on average at most (frontiers are rarely
-// longer than a few dozen edges).
-constexpr uint64_t kWorkPerState = 64;
 
 uint32_t from(uint64_t e) { return static_cast<uint32_t>(e >> 32); }
 uint32_t to(uint64_t e) { return static_cast<uint32_t>(e); }
@@ -196,7 +194,7 @@ class FillDp {
         // each. An expansion costs its frontier's length: a region of thousands
         // of triangles must not take the time of millions of states.)
         work += p.open.size();
-        if ((states + generated / 4) > max_states || work > kWorkPerState * max_states) return std::nullopt;
+        if ((states + generated / 4) > max_states || work > kBudgets.fill_dp_work_per_state * max_states) return std::nullopt;
         expand(p, [&](const Partial& child) {
           ++generated;
           const uint32_t at = next->offer(child, [&](double a, double b) { return T_.better(a, b); });

@@ -46,9 +46,9 @@ void prove_by_dual(KOrderRun& run) {
     if (!proof.applies()) return;
     answer.tighten(*proof.bound(), "the dual bound");
     StateDpLimits window = dl;
-    window.max_table = run.budgets.dual_window_table;
+    window.max_table = run.budgets.window_table;
     const std::vector<uint32_t> x = improve_by_windows(
-        model.graph, improve_states(model.graph, proof.decoded(), run.proving), window, run.budgets.dual_window_variables);
+        model.graph, improve_states(model.graph, proof.decoded(), run.proving), window, run.budgets.window_variables);
     Mesh m = R.triangulation(run.dt, model.region_states(x));
     const double v = evaluate(run.o, m);
     answer.offer(std::move(m), v, "local search from the dual");

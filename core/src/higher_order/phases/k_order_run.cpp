@@ -31,7 +31,7 @@ KOrderRun::KOrderRun(const KOrderShared& s, uint32_t k, const SolveOptions& opti
       k(k),
       bounded(bounded),
       options(options),
-      budgets(s.phase_budgets),
+      budgets(s.budgets),
       description(objective_terms(s.o, s.fo.base)),
       sense(info(s.o).sense),
       finding(in_phase(options.progress, Phase::FindingRegions)),

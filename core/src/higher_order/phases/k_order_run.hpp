@@ -15,10 +15,10 @@
 #include "higher_order/bounds/region_dual.hpp"
 #include "higher_order/incumbent.hpp"
 #include "higher_order/k_order.hpp"
-#include "higher_order/phases/phase_budgets.hpp"
 #include "higher_order/regions/region_engine.hpp"
 #include "higher_order/regions/vertex_term_memo.hpp"
 #include "objectives/objective_terms.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
@@ -39,10 +39,10 @@ struct KOrderShared {
   const FirstOrder& fo;
   Objective o;
   const SolveOptions& options;
-  const RegionLimits& budgets;
+  const RegionLimits& region_limits;
   FirstOrderStart& first_order;
   VertexTermMemo* memo;  // (the ladder's orders meet the same stars too)
-  PhaseBudgets phase_budgets;
+  Budgets budgets;
 };
 
 struct KOrderRun {
@@ -59,7 +59,7 @@ struct KOrderRun {
   const uint32_t k;
   const bool bounded;
   const SolveOptions options;
-  const PhaseBudgets& budgets;
+  const Budgets& budgets;
   const ObjectiveTerms& description;
   const Sense sense;
   // The progress of each kind of step (progress.hpp).

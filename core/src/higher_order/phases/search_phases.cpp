@@ -35,7 +35,7 @@ void best_listed(KOrderRun& run) {
 // large for the engine (about lambda runs of it, so only when asked).
 void shift_bands(KOrderRun& run) {
   KOrderBaker b = k_order_baker(run.dt, run.o, *run.structure, run.k, run.options.epsilon,
-                                run.shared.budgets.max_nodes_per_region, in_phase(run.options.progress, Phase::Approximating));
+                                run.shared.region_limits.max_nodes_per_region, in_phase(run.options.progress, Phase::Approximating));
   if (b.triangulation && better(run.sense, b.value, run.answer.value()))
     run.answer.restart(std::move(*b.triangulation), b.value, b.summary());
   else if (b.shifts)

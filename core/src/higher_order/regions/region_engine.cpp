@@ -2,6 +2,7 @@
 
 #include "hodt/error.hpp"
 #include "hodt/higher_order.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
@@ -94,8 +95,8 @@ ListedBest RegionEngine::best_listed(const std::vector<uint32_t>& start_regions,
         x = y, out.how = "local search from the first order optimum";
     }
     StateDpLimits window = dl;
-    window.max_table = 1 << 16;
-    x = improve_by_windows(model.graph, x, window, 24);
+    window.max_table = kBudgets.window_table;
+    x = improve_by_windows(model.graph, x, window, kBudgets.window_variables);
     out.how += ", then windows solved exactly";
   }
   out.regions = model.region_states(x);

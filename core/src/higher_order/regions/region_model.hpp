@@ -15,6 +15,7 @@
 #include "higher_order/bounds/region_views.hpp"
 #include "higher_order/regions/regions.hpp"
 #include "higher_order/regions/vertex_term_memo.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
@@ -30,7 +31,7 @@ struct RegionModel {
 };
 
 struct RegionModelLimits {
-  double max_factor = 1 << 20;  // entries of one vertex factor; larger ones are relaxed
+  double max_factor = kBudgets.region_model_max_factor;  // entries of one vertex factor (larger: relaxed)
   // Vertex terms remembered across the models of one solve (one objective, one
   // Delaunay triangulation; none within a domain: vertex_term_memo.hpp).
   VertexTermMemo* memo = nullptr;

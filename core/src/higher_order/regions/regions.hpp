@@ -16,6 +16,7 @@
 #include "hodt/skeleton.hpp"
 #include "engines/factor_graph.hpp"
 #include "higher_order/fills/fill_enumerator.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
@@ -56,23 +57,21 @@ struct RegionLimits {
   // enumerated instead, within the node budgets below.
   const RegionTerms* terms = nullptr;
   const Candidates* candidates = nullptr;  // k_order_candidates (computed when not given)
-  // (A kept partial fill costs about 1 to 10 microseconds and 100 to 500 bytes.)
-  uint64_t first_pass_states = 20'000;
-  uint64_t max_states_per_region_dp = 200'000;
-  uint64_t max_total_states = 500'000;
+  // (Defaults and reasons: tuning/budgets.hpp, region_*.)
+  uint64_t first_pass_states = kBudgets.region_first_pass_states;
+  uint64_t max_states_per_region_dp = kBudgets.region_max_states_dp;
+  uint64_t max_total_states = kBudgets.region_max_total_states;
   // Enumeration search nodes: every region first gets a small budget, then the
   // regions that need more get up to max_nodes_per_region each while the total
-  // stays within max_total_nodes (time is about a microsecond per node).
-  uint64_t first_pass_nodes = 5'000;
-  uint64_t max_nodes_per_region = 300'000;
-  uint64_t max_total_nodes = 1'500'000;
-  uint64_t max_states_per_region = 2'000;  // triangulations kept per region
-  // Regions of more Delaunay triangles are not enumerated at all (each fill
-  // costs its size, and their triangulations are astronomically many); with
-  // terms, the DP still tries them, within large_region_states kept fills each
-  // (a long strip with few signatures needs a few hundred; most others fail fast).
-  uint32_t max_region_triangles = 64;
-  uint64_t large_region_states = 5'000;
+  // stays within max_total_nodes.
+  uint64_t first_pass_nodes = kBudgets.region_first_pass_nodes;
+  uint64_t max_nodes_per_region = kBudgets.region_max_nodes;
+  uint64_t max_total_nodes = kBudgets.region_max_total_nodes;
+  uint64_t max_states_per_region = kBudgets.region_max_listed;  // triangulations kept per region
+  // Regions of more Delaunay triangles are not enumerated; with terms the DP
+  // still tries them, within large_region_states kept fills each.
+  uint32_t max_region_triangles = kBudgets.region_max_triangles;
+  uint64_t large_region_states = kBudgets.large_region_states;
   // A second pass with larger budgets, of use only if it lists every region
   // whole (with terms): the regions already whole are kept, the others get the
   // DP, the largest first, until one does not fit.

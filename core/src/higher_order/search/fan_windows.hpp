@@ -17,21 +17,18 @@
 #include "hodt/objectives.hpp"
 #include "hodt/progress.hpp"
 #include "higher_order/fills/fill_enumerator.hpp"
+#include "tuning/budgets.hpp"
 
 namespace hodt {
 
+// (Defaults and reasons: tuning/budgets.hpp, fan_window_*.)
 struct WindowLimits {
-  uint32_t per_window = 25;
-  uint64_t max_steps = 2'000;               // fans tried per window (the best found by then is kept)
-  uint64_t max_nodes_per_vertex = 50'000;  // a vertex with more fans keeps its star
-  // Fans' tree nodes listed in all (a window's members listed anew at each of
-  // the four offsets), the larger of the two: no window starts past it. The
-  // windows run in rows from one side, so a budget short of the whole leaves
-  // the far side as it was: per point, enough for the four offsets at k = 8 on
-  // DEMs (a few thousand nodes per point at that order), so that a large
-  // terrain is searched whole; max_nodes is the floor for small inputs.
-  uint64_t max_nodes = 16'000'000;
-  uint64_t max_nodes_per_point = 8'192;
+  uint32_t per_window = kBudgets.fan_window_vertices;
+  uint64_t max_steps = kBudgets.fan_window_steps;  // fans tried per window (the best found by then is kept)
+  uint64_t max_nodes_per_vertex = kBudgets.fan_window_nodes_per_vertex;  // a vertex with more keeps its star
+  // Fans' tree nodes listed in all, the larger of the two: no window starts past it.
+  uint64_t max_nodes = kBudgets.fan_window_max_nodes;
+  uint64_t max_nodes_per_point = kBudgets.fan_window_nodes_per_point;
   // Stop once the windows improved the start by this much (the objective's
   // units; a gap to a proven bound: nothing more to gain).
   double enough = INFINITY;
