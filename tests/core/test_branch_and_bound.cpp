@@ -37,25 +37,28 @@ TEST_CASE("branch and bound over every fill equals exhaustive enumeration (min-m
         REQUIRE(enumerate_k_order(dt, k, 5'000'000, [&](const std::vector<Tri>& tris) {
           best = std::min(best, evaluate(o, mesh_of(dt.coords, tris)));
         }));
-        // From the Delaunay value, and from the optimum itself (nothing better to find).
-        for (const double known : {evaluate(o, dt), best}) {
-          const BranchAndBound b = branch_and_bound(dt, o, structure.candidates, known, 5'000'000);
-          REQUIRE(b.complete);
-          CHECK(b.value == best);
-          CHECK(b.found.has_value() == (best < known));
-          if (b.found) {
-            CHECK(is_k_order(*b.found, dt, k));
-            CHECK(evaluate(o, *b.found) == b.value);
+        // From the Delaunay value, and from the optimum itself (nothing better
+        // to find); without the memo of searched partial fills and with it.
+        for (const double known : {evaluate(o, dt), best})
+          for (const uint64_t memo : {uint64_t{0}, uint64_t{1} << 20}) {
+            CAPTURE(memo);
+            const BranchAndBound b = branch_and_bound(dt, o, structure.candidates, known, 5'000'000, memo);
+            REQUIRE(b.complete);
+            CHECK(b.value == best);
+            CHECK(b.found.has_value() == (best < known));
+            if (b.found) {
+              CHECK(is_k_order(*b.found, dt, k));
+              CHECK(evaluate(o, *b.found) == b.value);
+            }
+            ++proven;
           }
-          ++proven;
-        }
       }
     }
   }
-  CHECK(proven == 12 * 3 * 7 * 2);
+  CHECK(proven == 12 * 3 * 7 * 4);
   // Out of budget: nothing proven.
   const Mesh dt = delaunay(validate_points(uniform_points(40, 7)).xyz);
   const KOrderStructure structure(dt, 6, {});
-  const BranchAndBound b = branch_and_bound(dt, Objective::MinmaxVertexNormalAngle, structure.candidates, INFINITY, 50);
+  const BranchAndBound b = branch_and_bound(dt, Objective::MinmaxVertexNormalAngle, structure.candidates, INFINITY, 50, 1 << 20);
   CHECK(!b.complete);
 }

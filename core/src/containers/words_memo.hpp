@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "containers/words_hash.hpp"
@@ -30,6 +31,13 @@ class WordsMemo {
       }
     }
   }
+  // The same, the answer writable in place (its size stays).
+  std::span<uint32_t> find(std::span<const uint32_t> key, bool& found) {
+    const std::span<const uint32_t> at = std::as_const(*this).find(key, found);
+    return {const_cast<uint32_t*>(at.data()), at.size()};
+  }
+  // The words held: keys, answers and their sizes.
+  size_t words() const { return arena_.size(); }
   // Stores value for key (not already stored).
   void insert(std::span<const uint32_t> key, std::span<const uint32_t> value) {
     if (2 * (used_ + 1) > slots_.size()) grow();
