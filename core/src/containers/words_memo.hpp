@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <span>
-#include <utility>
 #include <vector>
 
 #include "containers/words_hash.hpp"
@@ -30,11 +29,6 @@ class WordsMemo {
         return {e + 2 + e[0], e[1 + e[0]]};
       }
     }
-  }
-  // The same, the answer writable in place (its size stays).
-  std::span<uint32_t> find(std::span<const uint32_t> key, bool& found) {
-    const std::span<const uint32_t> at = std::as_const(*this).find(key, found);
-    return {const_cast<uint32_t*>(at.data()), at.size()};
   }
   // The words held: keys, answers and their sizes.
   size_t words() const { return arena_.size(); }

@@ -1,8 +1,6 @@
 #include "higher_order/fills/fill_search.hpp"
 
 #include <algorithm>
-#include <cstring>
-#include <span>
 
 #include "hodt/error.hpp"
 #include "containers/flat_index.hpp"
@@ -247,6 +245,7 @@ class FillSearch {
       const uint32_t c = pruning_.dead();
       return prefix(out, c ? c : depth);
     }
+    // The memo's key: the frontier, then the pruning's context.
     std::vector<uint32_t> key;
     if (memo_on_) {
       sorted_.clear();
@@ -258,12 +257,8 @@ class FillSearch {
       for (uint64_t e : sorted_) key.push_back(static_cast<uint32_t>(e >> 32) << 16 | static_cast<uint32_t>(e));
       pruning_.context(sorted_, key);
       bool found = false;
-      const std::span<uint32_t> proved = memo_.find(key, found);
-      if (found) {
-        double x;
-        std::memcpy(&x, proved.data(), sizeof x);
-        if (pruning_.settled(x)) return prefix(out, depth);
-      }
+      memo_.find(key, found);
+      if (found) return prefix(out, depth);  // a twin failed: so does this (fill_search.hpp)
     }
     uint64_t edge = 0;
     std::vector<Option> options;
@@ -295,16 +290,14 @@ class FillSearch {
     remember(key);
   }
 
+  // Keeps a failed partial fill's key, when the pruning says its failure is
+  // its completions' (explored) and the memo has room. (A key found here was
+  // not in the memo at the node's start, where it was looked up, and partial
+  // fills below have smaller uncovered parts: it is new.)
   void remember(const std::vector<uint32_t>& key) {
-    if (!memo_on_) return;
-    const std::optional<double> proved = pruning_.explored();
-    if (!proved) return;
-    uint32_t words[2];
-    std::memcpy(words, &*proved, sizeof words);
-    bool found = false;
-    const std::span<uint32_t> at = memo_.find(key, found);
-    if (found) std::copy(words, words + 2, at.begin());
-    else if (memo_.words() + key.size() + 4 <= pruning_.memo_words) memo_.insert(key, words);
+    if (!memo_on_ || !pruning_.explored()) return;
+    if (memo_.words() + key.size() + 2 > pruning_.memo_words) return;
+    memo_.insert(key, {});
   }
 };
 

@@ -3,22 +3,41 @@
 // fewest triangles that fit and that the pruning accepts, so that a dead end
 // anywhere on the frontier ends a branch at once.
 //
-// Two devices keep it from searching the same failure twice:
-// - Backjumping. A branch that fails has a reason: the placed triangles that
-//   refuse every triangle of some open edge (they overlap it, or make a term
-//   no better than the best known with it), that opened that edge, and those
-//   that failed each branch below it. Every triangulation that keeps them all
-//   fails too, so where the last triangle placed is not among them, its
-//   siblings fail the same way: the search returns to the latest one that is.
-// - A memo of partial fills searched to the end. Which triangles can complete
-//   a partial fill depends on its frontier alone (the covered part is what the
-//   frontier bounds), and what their terms read of the placed ones is the
-//   pruning's context: two partial fills that agree on both have the same
-//   completions, with the same terms.
+// A branch fails when none of its fills is better than the best known. Two
+// devices keep the search from proving the same failure twice:
+//
+// - Backjumping. Each failed branch leaves a reason: placed triangles such that
+//   every fill holding all of them fails. The reason of a node whose open edge
+//   u -> v was chosen is the union of
+//     the triangle that opened u -> v (every fill holding it has the edge u v,
+//     and something on its open side: a candidate u v w, the candidates being
+//     every triangle a fill may have);
+//     for each w tried: its child's reason, less w itself;
+//     for each w not tried: why it was not. It overlaps a placed triangle
+//     (named by the placed edge it meets, or the triangle already behind one
+//     of its sides), or the pruning refused it and names the placed triangles
+//     it makes a term no better than the best known with (reasons()).
+//   A fill holding the union and the opener holds some u v w and the rest of
+//   that w's reason, so it fails. When a child's reason does not hold the
+//   triangle just tried, it is already a reason for this node: its siblings
+//   are not tried, and the search returns to the latest triangle the reason
+//   holds. The best known only improves, so a reason found against an older
+//   best still holds.
+//
+// - A memo of partial fills searched to the end. The fills that complete a
+//   partial fill are the triangulations of the uncovered part by candidates,
+//   and that part is what the frontier (the open edges) bounds. The terms a
+//   completion adds are its own and those it makes with the placed triangles,
+//   which the pruning's context tells (context()). When a partial fill's
+//   search ended, its placed triangles' own terms below the best known
+//   (explored()), every completion added a term at least the best known then:
+//   a later partial fill with the same frontier and context has the same
+//   completions adding the same terms, each at least the best then, so no
+//   less than the best now (it only improves). That fill fails, with every
+//   placed triangle as its reason.
 #pragma once
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <utility>
 #include <vector>
 
@@ -37,21 +56,22 @@ struct FillPruning {
   virtual bool accept(const Tri& t) = 0;
   virtual void place(const Tri& t) = 0;
   virtual void remove(const Tri& t) = 0;
-  // 0, or c when the first c placed triangles alone make every completion no
-  // better than the best known (after a better fill was found).
+  // 0, or c when the first c placed triangles alone make every fill holding
+  // them no better than the best known (after a better fill was found).
   virtual uint32_t dead() const { return 0; }
   // For a triangle accept() refuses: appends the positions of the placed
-  // triangles that make it refuse (none: it fails alone). false: not known
-  // (every placed triangle is taken as a reason).
+  // triangles that make it refuse, so that every fill holding them and t is no
+  // better than the best known (none: t alone is). false: not known (every
+  // placed triangle is taken as the reason).
   virtual bool reasons(const Tri& /*t*/, std::vector<uint32_t>& /*positions*/) const { return false; }
-  // The memo (memo_words > 0): appends to key what accept() and the value of a
-  // completion read of the placed triangles beyond the frontier (open, sorted);
-  // explored(): once a partial fill's search ended, what it proved of its
-  // completions (nothing: not kept); settled(x): whether a partial fill whose
-  // twin proved x needs no search now.
+  // The memo (memo_words > 0). context: appends to key what a completion's
+  // terms read of the placed triangles, given the frontier (open, sorted
+  // directed edges), so that equal frontiers and keys mean equal terms for
+  // every completion. explored: whether the placed triangles' own terms are
+  // below the best known (then a search of their completions that failed
+  // proved every completion adds a term at least the best known).
   virtual void context(const std::vector<uint64_t>& /*open*/, std::vector<uint32_t>& /*key*/) const {}
-  virtual std::optional<double> explored() const { return std::nullopt; }
-  virtual bool settled(double /*proved*/) const { return false; }
+  virtual bool explored() const { return false; }
   // The memo's size in 32-bit words (0: no memo; once full, the partial fills
   // after are searched without it).
   uint64_t memo_words = 0;

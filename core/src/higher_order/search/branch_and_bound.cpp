@@ -34,7 +34,7 @@ class TermPruning final : public FillPruning {
   // A term is no better than the best known when it is >= it: pair measures
   // answer exactly above `below_` (the largest double under the best), and
   // anything <= below_ when they are at most that.
-  void set_best(double value) { best_ = value, below_ = std::nextafter(value, -INFINITY); }
+  void set_best(double value) { below_ = std::nextafter(value, -INFINITY); }
 
   bool accept(const Tri& t) override { return !(largest_term(t, below_, nullptr) > below_); }
   // The largest term placed so far, exact: place() measures with that as the cut.
@@ -59,10 +59,23 @@ class TermPruning final : public FillPruning {
     return largest_term(t, below_, &positions) > below_;
   }
 
-  // What the terms of the triangles still to place read of those placed: the
-  // triangle behind each open edge (edge pairs), every placed triangle at a
-  // frontier vertex (vertex pairs), each frontier vertex's degree so far (a new
-  // neighbour joins across an edge not yet placed, which the frontier tells).
+  // What a completion's terms read of the placed triangles, the frontier
+  // given (fill_search.hpp). A completion's triangles lie in the uncovered
+  // part, so a term they share with placed ones sits on the frontier:
+  // - a triangle's own term reads nothing placed;
+  // - an edge pair across a placed triangle and a completion's shares an open
+  //   edge: the key names the triangle behind each open edge (the apex, none
+  //   on the hull), the whole of what such pairs read;
+  // - a vertex pair shares a corner in both parts, a vertex of the frontier:
+  //   the key holds every placed triangle at a frontier vertex;
+  // - a vertex's degree at the end counts its neighbours placed and those the
+  //   completion adds, less those in both: the edges in both parts, which are
+  //   the open edges at the vertex that a placed triangle opened (those not on
+  //   the hull, which the frontier tells). The key holds each frontier vertex's
+  //   degree so far; the other vertices touched by a completion are inside the
+  //   uncovered part and have no placed neighbour.
+  // So two partial fills with the same frontier and key give each completion
+  // the same terms beyond those among their placed triangles alone.
   void context(const std::vector<uint64_t>& open, std::vector<uint32_t>& key) const override {
     if (d_.site == TermSite::Triangle) return;
     if (d_.site == TermSite::EdgePair) {
@@ -94,13 +107,9 @@ class TermPruning final : public FillPruning {
     }
     for (uint32_t v : frontier_) key.push_back(degree(v, nullptr));
   }
-  // A search that ended with the placed terms below the best found no
-  // completion below it: every completion has a term at least that.
-  std::optional<double> explored() const override {
-    if (dead()) return std::nullopt;
-    return best_;
-  }
-  bool settled(double proved) const override { return !(proved < best_); }
+  // The placed triangles' own terms (a degree's floor among them) are below the
+  // best known: a failed search of their completions is the completions'.
+  bool explored() const override { return dead() == 0; }
 
  private:
   struct Placed {
@@ -162,7 +171,7 @@ class TermPruning final : public FillPruning {
   std::vector<std::vector<Placed>> around_;  // per vertex, its placed triangles
   std::vector<double> largest_;              // per placed triangle, the largest term so far
   mutable std::vector<uint32_t> neighbours_, frontier_, packed_;
-  double best_ = 0, below_ = 0;
+  double below_ = 0;
 };
 
 }  // namespace
