@@ -56,7 +56,7 @@ class FillSearch {
     int32_t placed_by = -1, closed_by = -1;  // positions of the triangles that placed it and closed it
     uint8_t open = 0;  // 0, or 1 + the direction open (0: lo -> hi)
     uint32_t at = 0;   // while open, its place in open_
-    uint64_t weight = 1;
+    uint64_t weight = 1;  // 1 + the dead ends met at it (nothing could cover it)
   };
   struct Option {
     uint32_t apex;
@@ -165,9 +165,10 @@ class FillSearch {
     if (n % 64) c[n / 64] = (uint64_t{1} << (n % 64)) - 1;
   }
 
-  // The open edge with the fewest triangles that fit and are accepted (ties:
-  // smallest key) and those triangles; false when some edge has none (then
-  // `best` is that edge).
+  // The open edge with the fewest triangles that fit and are accepted per unit
+  // of its weight (ties: smallest key), and those triangles; false when some
+  // edge has none (then `best` is that edge). An edge that was a dead end
+  // before is likely one again, and choosing it early finds that at once.
   bool choose(uint64_t& best, std::vector<Option>& fewest) {
     std::vector<Option> here;
     bool first = true;

@@ -17,10 +17,11 @@ struct PhaseBudgets {
   // input: the budget keeps a search that cannot finish short beside the rest.)
   uint32_t branch_and_bound_points = 80;
   uint64_t branch_and_bound_nodes = 60'000;
-  // Its memo of partial fills searched to the end, in 32-bit words (a key is
-  // a frontier and what the terms read beyond it, tens to hundreds of words):
-  // large enough for every node of the budget.
-  uint64_t branch_and_bound_memo_words = uint64_t{1} << 24;
+  // Its memo of partial fills searched to the end (fill_search.hpp), in 32-bit
+  // words: a key is a frontier and what the terms read of the triangles
+  // behind it, a few dozen words, so this holds one for most of the nodes.
+  // (Once full, the search goes on without storing more.)
+  uint64_t branch_and_bound_memo_words = uint64_t{1} << 22;
   // The dual over the regions' fill graphs: sweeps of its ascent. Strips side by
   // side couple along whole boundaries and the ascent climbs slowly, so the
   // bound keeps tightening long after the first hundred sweeps.
