@@ -30,6 +30,8 @@ class WordsMemo {
       }
     }
   }
+  // The words held: keys, answers and their sizes.
+  size_t words() const { return arena_.size(); }
   // Stores value for key (not already stored).
   void insert(std::span<const uint32_t> key, std::span<const uint32_t> value) {
     if (2 * (used_ + 1) > slots_.size()) grow();

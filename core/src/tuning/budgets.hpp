@@ -157,11 +157,17 @@ struct Budgets {
   // most this many points, within this many search nodes. Small inputs at high
   // order have one region of astronomically many triangulations, which the
   // regions' engine can only bound, while the terms' pruning proves them. It
-  // runs where the exact DP refused.
+  // runs before the regions are listed: on such inputs it ends in far less
+  // time than the listing takes.
   // (A node tests every candidate of the frontier, so its cost grows with the
   // input: the budget keeps a search that cannot finish short beside the rest.)
   uint32_t branch_and_bound_points = 80;
   uint64_t branch_and_bound_nodes = 60'000;
+  // Its memo of partial fills searched to the end (fill_search.hpp), in 32-bit
+  // words: a key is a frontier and what the terms read of the triangles
+  // behind it, a few dozen words, so this holds one for most of the nodes.
+  // (Once full, the search goes on without storing more.)
+  uint64_t branch_and_bound_memo_words = uint64_t{1} << 22;
   // The dual over the regions' fill graphs: sweeps of its ascent. Strips side by
   // side couple along whole boundaries and the ascent climbs slowly, so the
   // bound keeps tightening long after the first hundred sweeps.

@@ -64,7 +64,6 @@ struct Enumerator {
   uint64_t budget;
   const std::function<void(const std::vector<Tri>&)>& visit;
   const Progress& progress;
-  FillPruning* pruning;
   std::unordered_set<uint64_t> open;  // directed edges with the uncovered side on their left
   std::vector<std::pair<uint32_t, uint32_t>> edges;
   std::vector<Tri> tris;
@@ -103,9 +102,7 @@ struct Enumerator {
       else open.insert(edge_key(b, a)), edges.push_back({a, b}), ++added;
     }
     tris.push_back({u, v, w});
-    if (pruning) pruning->place(tris.back());
     run();
-    if (pruning) pruning->remove(tris.back());
     tris.pop_back();
     for (int s = 1; s >= 0; --s) {
       const uint32_t a = side[s][0], b = side[s][1];
@@ -127,7 +124,6 @@ struct Enumerator {
       visit(tris);
       return;
     }
-    if (pruning) return run_pruned();
     // The open edge with the fewest candidate triangles (ties: smallest key).
     uint64_t best = 0;
     size_t fewest = SIZE_MAX;
@@ -144,42 +140,14 @@ struct Enumerator {
       if (fits(u, v, w, close)) place(best, w, close);
     }
   }
-
-  // With a pruning test: the open edge with the fewest triangles that fit and
-  // are accepted (ties: smallest key), so that a dead end anywhere on the
-  // frontier ends the branch at once.
-  void run_pruned() {
-    uint64_t best = 0;
-    std::vector<std::pair<uint32_t, uint8_t>> fewest, here;  // (apex, closes) per fitting triangle
-    bool first = true;
-    for (uint64_t e : open) {
-      here.clear();
-      const uint32_t u = static_cast<uint32_t>(e >> 32), v = static_cast<uint32_t>(e);
-      if (const auto* o = options(e))
-        for (uint32_t w : *o) {
-          if (!first && here.size() > fewest.size()) break;  // (then it is not chosen)
-          bool close[2];
-          if (fits(u, v, w, close) && pruning->accept(Tri{u, v, w}))
-            here.push_back({w, static_cast<uint8_t>(close[0] | close[1] << 1)});
-        }
-      if (first || here.size() < fewest.size() || (here.size() == fewest.size() && e < best))
-        fewest.swap(here), best = e, first = false;
-      if (fewest.empty()) return;  // a dead end: nothing can cover this edge
-    }
-    for (const auto& [w, closes] : fewest) {
-      if (!complete) return;
-      const bool close[2] = {(closes & 1) != 0, (closes & 2) != 0};
-      place(best, w, close);
-    }
-  }
 };
 
 }  // namespace
 
 bool enumerate_fills(const Mesh& dt, const Candidates& candidates, const std::vector<std::pair<uint32_t, uint32_t>>& boundary,
                      uint64_t max_nodes, const std::function<void(const std::vector<Tri>&)>& visit,
-                     const Progress& progress, uint64_t* nodes_used, FillPruning* pruning) {
-  Enumerator en{dt, candidates, max_nodes, visit, progress, pruning, {}, {}, {}};
+                     const Progress& progress, uint64_t* nodes_used) {
+  Enumerator en{dt, candidates, max_nodes, visit, progress, {}, {}, {}};
   for (auto [a, b] : boundary) en.open.insert(edge_key(a, b));
   try {
     en.run();

@@ -36,19 +36,9 @@ bool segments_cross(const Mesh& m, uint32_t a, uint32_t b, uint32_t c, uint32_t 
 // (directed edges with the inside on their left) by candidate triangles. Returns
 // false if it stopped because `max_nodes` search nodes were used. progress (if
 // given) is called every few thousand nodes; returning false throws Cancelled.
-// A branch and bound's part in the search (when given): whether a triangle may
-// join those placed (the search then visits only fills whose every triangle was
-// accepted), and each placement and its undoing, in stack order, so that it can
-// keep what it reads of the placed triangles up to date.
-struct FillPruning {
-  virtual ~FillPruning() = default;
-  virtual bool accept(const Tri& t) = 0;
-  virtual void place(const Tri& t) = 0;
-  virtual void remove(const Tri& t) = 0;
-};
 bool enumerate_fills(const Mesh& delaunay, const Candidates& candidates,
                      const std::vector<std::pair<uint32_t, uint32_t>>& boundary, uint64_t max_nodes,
                      const std::function<void(const std::vector<Tri>&)>& visit, const Progress& progress = {},
-                     uint64_t* nodes_used = nullptr, FillPruning* pruning = nullptr);
+                     uint64_t* nodes_used = nullptr);
 
 }  // namespace hodt

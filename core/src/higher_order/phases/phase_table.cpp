@@ -37,6 +37,9 @@ const std::vector<KOrderPhase>& k_order_phases() {
       {"finding the regions", always, find_regions},
       // (Order 1 stays on the region engine: solve() takes the first order paths itself.)
       {"a diagonal per quad", [](const KOrderRun& r) { return r.k >= 2; }, solve_as_quads},
+      // (Before the regions are listed: on a small input its search ends in far
+      // less time than the listing takes.)
+      {"branch and bound over every fill", small_min_max, branch_and_bound_small},
       // (One order's regions in memory at a time.)
       // (Not before the branch and bound, which needs no rung.)
       {"the lower order, first", [](const KOrderRun& r) { return ladder(r) && r.k >= r.budgets.early_rung_order && !small_min_max(r); },
@@ -46,7 +49,6 @@ const std::vector<KOrderPhase>& k_order_phases() {
       {"the exact DP", always, solve_exactly},
       {"the start", always, take_start},
       {"a min-max proof of the start", always, prove_start},
-      {"branch and bound over every fill", small_min_max, branch_and_bound_small},
       {"the start listed", always, list_start},
       {"a quick reading of the fill graphs",
        [](const KOrderRun& r) {

@@ -62,7 +62,8 @@ void branch_and_bound_small(KOrderRun& run) {
   const Mesh& start = run.shared.first_order.get();
   const double known = run.shared.first_order.value;
   const BranchAndBound b = branch_and_bound(run.dt, run.o, run.structure->candidates, known,
-                                            run.budgets.branch_and_bound_nodes, run.exactly);
+                                            run.budgets.branch_and_bound_nodes, run.budgets.branch_and_bound_memo_words,
+                                            run.exactly);
   if (b.found) run.answer.offer(*b.found, b.value, "branch and bound over every fill");
   else run.answer.offer(start, known, "the first order optimum");
   if (b.complete)
