@@ -23,6 +23,13 @@ struct Reader {
   [[noreturn]] void fail(int line, const std::string& what) const {
     throw InputError(name + ": line " + std::to_string(line) + ": " + what);
   }
+  // The same with the message made by `message()`, out of line: the checks on
+  // every number and line then stay small (the wasm build's baseline code runs
+  // a function until its optimising compile, whose time grows with its size, is done).
+  template <class Message>
+  [[noreturn, gnu::noinline, gnu::cold]] void fail_with(int line, Message message) const {
+    fail(line, message());
+  }
 };
 
 std::string lower(std::string_view s) {
@@ -83,6 +90,12 @@ std::vector<std::string_view> split_fields(std::string_view line, char delimiter
 }
 
 // Lines end with LF (Unix), CR LF (Windows) or a lone CR (classic Mac, some exports).
+// `f` is called per line through a function pointer that the optimisers cannot
+// see through, so that it stays a function of its own in the wasm (Binaryen
+// inlines any function called from one place): V8 runs a wasm function in the
+// tier it was entered with, so the loop of a function called once stays in
+// baseline code, while a function called per line moves to the optimising tier
+// after its first lines.
 template <class F>
 void for_each_line(std::string_view text, F f) {
   // Without a CR anywhere every line ends at the next LF, which memchr finds
@@ -92,6 +105,7 @@ void for_each_line(std::string_view text, F f) {
   const char* const begin = text.data();
   const char* const end = begin + text.size();
   int line = 0;
+  void (*volatile const each)(F&, int, std::string_view) = [](F& g, int n, std::string_view s) { g(n, s); };
   for (const char* i = begin;;) {
     const char* j;
     if (!cr) {
@@ -101,7 +115,7 @@ void for_each_line(std::string_view text, F f) {
       j = i;
       while (j != end && *j != '\n' && *j != '\r') ++j;
     }
-    f(++line, std::string_view(i, static_cast<size_t>(j - i)));
+    each(f, ++line, std::string_view(i, static_cast<size_t>(j - i)));
     if (j == end) break;
     i = j + (*j == '\r' && j + 1 != end && j[1] == '\n' ? 2 : 1);
   }
@@ -114,7 +128,7 @@ bool blank_or_comment(std::string_view s) {
 
 void check_finite(const Reader& r, int line, const char* axis, double v, std::string_view tok) {
   if (!std::isfinite(v))
-    r.fail(line, std::string(axis) + " is " + shorten(tok) + ", expected a finite number");
+    r.fail_with(line, [&] { return std::string(axis) + " is " + shorten(tok) + ", expected a finite number"; });
 }
 
 // How a text file separates its fields and writes its decimals: decided once, from
@@ -175,9 +189,11 @@ double text_number(const Reader& r, TextLayout& layout, int line, const char* ax
   if (comma != point) {
     mark = comma ? ',' : '.';
     if (layout.decimal_mark && layout.decimal_mark != mark)
-      r.fail(line, std::string(axis) + " is " + shorten(tok) + " with a decimal " + (comma ? "comma" : "point") +
-                       ", but line " + std::to_string(layout.decimal_line) + " has decimal " +
-                       (comma ? "points" : "commas") + ": one decimal mark per file");
+      r.fail_with(line, [&] {
+        return std::string(axis) + " is " + shorten(tok) + " with a decimal " + (comma ? "comma" : "point") +
+               ", but line " + std::to_string(layout.decimal_line) + " has decimal " + (comma ? "points" : "commas") +
+               ": one decimal mark per file";
+      });
   }
   double v;
   // A decimal comma sits between digits: "1," or ",5" next to a blank is a delimiter misplaced.
@@ -186,8 +202,10 @@ double text_number(const Reader& r, TextLayout& layout, int line, const char* ax
       !comma || (c > 0 && c + 1 < tok.size() && std::isdigit(static_cast<unsigned char>(tok[c - 1])) &&
                  std::isdigit(static_cast<unsigned char>(tok[c + 1])));
   if (!digits_around || !parse_double(tok, v, mark))
-    r.fail(line, std::string(axis) + " is " + shorten(tok) + ", not a number" +
-                     (comma || tok.find(';') != std::string_view::npos ? " (fields " + layout.as_on_first_line() + ")" : ""));
+    r.fail_with(line, [&] {
+      return std::string(axis) + " is " + shorten(tok) + ", not a number" +
+             (comma || tok.find(';') != std::string_view::npos ? " (fields " + layout.as_on_first_line() + ")" : "");
+    });
   if (comma != point && !layout.decimal_mark) {
     layout.decimal_mark = mark;
     layout.decimal_line = line;
@@ -225,7 +243,7 @@ ParsedPoints read_text(std::string_view text, const Reader& r) {
       }
     }
     split_fields(s, layout.delimiter, fields);
-    if (fields.size() < want) {
+    if (fields.size() < want) r.fail_with(line, [&] {
       std::string what = want == 3 ? "expected 3 numbers x y z"
                                    : "expected " + std::to_string(want) + " fields, up to the columns named x, y and z";
       // (a line written with another delimiter than the file's, or without the file's)
@@ -234,16 +252,16 @@ ParsedPoints read_text(std::string_view text, const Reader& r) {
       if (other || (layout.delimiter != ' ' && s.find(layout.delimiter) == std::string_view::npos))
         what += ' ' + layout.as_on_first_line();
       what += ", got " + std::to_string(fields.size()) + (fields.size() == 1 ? " field " : " fields ");
-      r.fail(line, what + shorten(s));
-    }
+      return what + shorten(s);
+    });
     // More columns than x, y and z, and no header to say which they are: an id
     // column first or intensities after are equally likely, so none is guessed.
-    if (!named && fields.size() > 3) {
+    if (!named && fields.size() > 3) r.fail_with(line, [&] {
       const std::string d = layout.delimiter == ' ' ? " " : std::string(1, layout.delimiter);
-      r.fail(line, std::to_string(fields.size()) + " columns (" + layout.delimiter_name() +
-                       ") and no header naming x, y and z; add a first line naming the columns, such as 'id" + d + "x" + d +
-                       "y" + d + "z' (or easting, northing, elevation)");
-    }
+      return std::to_string(fields.size()) + " columns (" + layout.delimiter_name() +
+             ") and no header naming x, y and z; add a first line naming the columns, such as 'id" + d + "x" + d + "y" +
+             d + "z' (or easting, northing, elevation)";
+    });
     static const char* axis[3] = {"x", "y", "z"};
     for (int a = 0; a < 3; ++a) out.xyz.push_back(text_number(r, layout, line, axis[a], fields[cols[a]]));
     out.lines.push_back(line);
