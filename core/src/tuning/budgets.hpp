@@ -156,9 +156,10 @@ struct Budgets {
   // Branch and bound over every fill of the instance (min-max): on inputs of at
   // most this many points, within this many search nodes. Small inputs at high
   // order have one region of astronomically many triangulations, which the
-  // regions' engine can only bound, while the terms' pruning proves them. It
-  // runs before the regions are listed: on such inputs it ends in far less
-  // time than the listing takes.
+  // regions' engine can only bound, while the terms' pruning proves them.
+  // From early_rung_order on it runs before the regions are listed (the
+  // listing takes far longer than the search there); below, where the exact
+  // DP refused.
   // (A node tests every candidate of the frontier, so its cost grows with the
   // input: the budget keeps a search that cannot finish short beside the rest.)
   uint32_t branch_and_bound_points = 80;

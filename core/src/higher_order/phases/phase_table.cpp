@@ -37,9 +37,11 @@ const std::vector<KOrderPhase>& k_order_phases() {
       {"finding the regions", always, find_regions},
       // (Order 1 stays on the region engine: solve() takes the first order paths itself.)
       {"a diagonal per quad", [](const KOrderRun& r) { return r.k >= 2; }, solve_as_quads},
-      // (Before the regions are listed: on a small input its search ends in far
-      // less time than the listing takes.)
-      {"branch and bound over every fill", small_min_max, branch_and_bound_small},
+      // (From the early rung's order on, before the regions are listed: there
+      // the listing takes far longer than the search; below, the exact DP
+      // answers first.)
+      {"branch and bound over every fill, first",
+       [](const KOrderRun& r) { return small_min_max(r) && r.k >= r.budgets.early_rung_order; }, branch_and_bound_small},
       // (One order's regions in memory at a time.)
       // (Not before the branch and bound, which needs no rung.)
       {"the lower order, first", [](const KOrderRun& r) { return ladder(r) && r.k >= r.budgets.early_rung_order && !small_min_max(r); },
@@ -49,6 +51,8 @@ const std::vector<KOrderPhase>& k_order_phases() {
       {"the exact DP", always, solve_exactly},
       {"the start", always, take_start},
       {"a min-max proof of the start", always, prove_start},
+      {"branch and bound over every fill",
+       [](const KOrderRun& r) { return small_min_max(r) && r.k < r.budgets.early_rung_order; }, branch_and_bound_small},
       {"the start listed", always, list_start},
       {"a quick reading of the fill graphs",
        [](const KOrderRun& r) {
