@@ -6,10 +6,7 @@
 import { spawnSync } from 'node:child_process';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-
-const OBJECTIVES = ['max-convex-vertices', 'minmax-edge-area-ratio', 'minmax-edge-normal-angle', 'minmax-edge-enclosing-circle',
-  'minmax-vertex-area-ratio', 'minmax-vertex-normal-angle', 'min-local-minima', 'min-local-extrema',
-  'min-total-edge-length', 'minmax-triangle-area', 'max-convex-edges', 'min-mixed-vertices', 'minmax-degree'];
+import { OBJECTIVES, hill, rng, runAlone } from './common.mjs';
 
 function volcano() {
   const v = JSON.parse(readFileSync(new URL('../node_modules/vega-datasets/data/volcano.json', import.meta.url), 'utf8'));
@@ -20,9 +17,7 @@ function volcano() {
 }
 
 function demSample(n) {
-  let s = 7;
-  const r = () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
-  const hill = (x, y) => Math.sin(3 * x) * Math.cos(2.3 * y) + 0.5 * Math.sin(7.1 * x + 5.3 * y) + 0.2 * Math.cos(13 * x * y);
+  const r = rng(7);
   const p = new Float64Array(3 * n);
   for (let i = 0; i < n; ++i) { const x = r() * 1000, y = r() * 1000; p.set([x, y, hill(x / 1000, y / 1000) * 100 + r()], 3 * i); }
   return p;
@@ -53,8 +48,7 @@ async function ownDem(hodt) {
 function sampleOf([name, xyz], n) {
   const count = xyz.length / 3;
   const index = Array.from({ length: count }, (_, i) => i);
-  let s = 11;
-  const r = () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
+  const r = rng(11);
   for (let i = 0; i < Math.min(n, count); ++i) {
     const j = i + Math.floor(r() * (count - i));
     [index[i], index[j]] = [index[j], index[i]];
@@ -128,16 +122,7 @@ export async function runOrderK({ root, tmp, hodt, log, quick, only = {} }) {
 
 // Alone, after a build: `node bench/order_k.mjs --sets=volcano,own --orders=1,2,3,4
 // --objectives=min-mixed-vertices` (each a comma list; all by default).
-if (process.argv[1] && import.meta.url === new URL(`file://${process.argv[1]}`).href) {
-  const { mkdtempSync, rmSync } = await import('node:fs');
-  const { tmpdir } = await import('node:os');
-  const { fileURLToPath } = await import('node:url');
-  const { loadHodt } = await import('../dist/index.js');
-  const arg = (name) => process.argv.find((a) => a.startsWith(`--${name}=`))?.slice(name.length + 3).split(',');
-  const tmp = mkdtempSync(join(tmpdir(), 'hodt-orderk-'));
-  await runOrderK({
-    root: fileURLToPath(new URL('..', import.meta.url)), tmp, hodt: await loadHodt(), log: console.log, quick: false,
-    only: { sets: arg('sets'), orders: arg('orders')?.map(Number), objectives: arg('objectives') },
-  });
-  rmSync(tmp, { recursive: true, force: true });
-}
+const arg = (name) => process.argv.find((a) => a.startsWith(`--${name}=`))?.slice(name.length + 3).split(',');
+await runAlone(import.meta.url, (context) => runOrderK({
+  ...context, quick: false, only: { sets: arg('sets'), orders: arg('orders')?.map(Number), objectives: arg('objectives') },
+}));

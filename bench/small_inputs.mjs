@@ -7,16 +7,8 @@
 import { spawnSync } from 'node:child_process';
 import { writeFileSync } from 'node:fs';
 import { join } from 'node:path';
+import { OBJECTIVES, hill, rng, runAlone } from './common.mjs';
 
-const OBJECTIVES = ['max-convex-vertices', 'minmax-edge-area-ratio', 'minmax-edge-normal-angle', 'minmax-edge-enclosing-circle',
-  'minmax-vertex-area-ratio', 'minmax-vertex-normal-angle', 'min-local-minima', 'min-local-extrema',
-  'min-total-edge-length', 'minmax-triangle-area', 'max-convex-edges', 'min-mixed-vertices', 'minmax-degree'];
-
-function rng(seed) {
-  let s = seed >>> 0;
-  return () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
-}
-const hill = (x, y) => Math.sin(3 * x) * Math.cos(2.3 * y) + 0.5 * Math.sin(7.1 * x + 5.3 * y) + 0.2 * Math.cos(13 * x * y);
 // Places in a 100 m square (grids: the largest square of at most n points); heights in metres.
 export const SMALL_KINDS = {
   random(n, r) {
@@ -91,16 +83,5 @@ export async function runSmallInputs({ root, tmp, hodt, log, quick, sizes = quic
 }
 
 // Alone, after a build: `node bench/small_inputs.mjs [--quick] [--sizes=60]`.
-if (process.argv[1] && import.meta.url === new URL(`file://${process.argv[1]}`).href) {
-  const { mkdtempSync, rmSync } = await import('node:fs');
-  const { tmpdir } = await import('node:os');
-  const { fileURLToPath } = await import('node:url');
-  const { loadHodt } = await import('../dist/index.js');
-  const sizes = process.argv.find((a) => a.startsWith('--sizes='))?.slice(8).split(',').map(Number);
-  const tmp = mkdtempSync(join(tmpdir(), 'hodt-small-'));
-  await runSmallInputs({
-    root: fileURLToPath(new URL('..', import.meta.url)), tmp, hodt: await loadHodt(), log: console.log,
-    quick: process.argv.includes('--quick'), ...(sizes ? { sizes } : {}),
-  });
-  rmSync(tmp, { recursive: true, force: true });
-}
+const sizes = process.argv.find((a) => a.startsWith('--sizes='))?.slice(8).split(',').map(Number);
+await runAlone(import.meta.url, (context) => runSmallInputs({ ...context, quick: process.argv.includes('--quick'), ...(sizes ? { sizes } : {}) }));

@@ -14,6 +14,7 @@ import { measureEditsInChromium } from '../bench/edit_chromium.mjs';
 import { runCliEndToEnd } from '../bench/cli_end_to_end.mjs';
 import { runOrderK } from '../bench/order_k.mjs';
 import { runSmallInputs } from '../bench/small_inputs.mjs';
+import { OBJECTIVES as EXACT, hill, rng } from '../bench/common.mjs';
 import { runUsersFiles } from '../bench/users_files.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
@@ -25,20 +26,11 @@ const log = (...a) => { if (!jsonOnly) console.log(...a); };
 const tmp = mkdtempSync(join(tmpdir(), 'hodt-bench-'));
 
 const PIPELINE_OBJECTIVE = 'minmax-edge-area-ratio';
-const EXACT = ['max-convex-vertices', 'minmax-edge-area-ratio', 'minmax-edge-normal-angle', 'minmax-edge-enclosing-circle',
-  'minmax-vertex-area-ratio', 'minmax-vertex-normal-angle', 'min-local-minima', 'min-local-extrema',
-  'min-total-edge-length', 'minmax-triangle-area', 'max-convex-edges', 'min-mixed-vertices', 'minmax-degree'];
-
-function rng(seed) {
-  let s = seed >>> 0;
-  return () => ((s = (s * 1664525 + 1013904223) >>> 0) / 4294967296);
-}
 // Point sets: uniform; DEM-like (smooth hills sampled at random places); a grid
 // (every cell cocircular) with DEM heights; and real data's two shapes: a DEM
 // raster after reprojection (a grid at a UTM offset, a cell size not round in
 // binary: no coordinate is an integer) and LiDAR-like ground points (random
 // places quantised to 1 cm at UTM offsets, duplicates dropped).
-const hill = (x, y) => Math.sin(3 * x) * Math.cos(2.3 * y) + 0.5 * Math.sin(7.1 * x + 5.3 * y) + 0.2 * Math.cos(13 * x * y);
 const KINDS = {
   uniform(n, r) { return Float64Array.from({ length: 3 * n }, r); },
   dem(n, r) {
