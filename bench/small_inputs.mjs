@@ -2,7 +2,8 @@
 // classroom terrain waits for. Terrains of 60 and 200 points of four kinds
 // (random places, DEM-like heights in whole metres, a cocircular grid, a
 // jittered grid), every objective at orders 2..8, the native CLI and the wasm
-// library side by side; per order and size the slowest case of each and how
+// library side by side; per order and size the slowest case of each, how many
+// took longer than the target (a second for 60 points, five for 200) and how
 // many were proven optimal.
 import { spawnSync } from 'node:child_process';
 import { writeFileSync } from 'node:fs';
@@ -40,6 +41,7 @@ export async function runSmallInputs({ root, tmp, hodt, log, quick, sizes = quic
   const orders = quick ? [2, 4, 8] : [2, 3, 4, 5, 6, 7, 8];
   const rows = [];
   for (const n of sizes) {
+    const targetMs = n <= 60 ? 1000 : 5000;
     const sets = Object.entries(SMALL_KINDS).map(([kind, make], s) => {
       const xyz = make(n, rng(31 + s));
       const file = join(tmp, `small-${s}-${n}.txt`);
@@ -48,9 +50,9 @@ export async function runSmallInputs({ root, tmp, hodt, log, quick, sizes = quic
       writeFileSync(file, text);
       return { kind, file, terrain: hodt.terrain(xyz) };
     });
-    log(`\nsmall inputs, ${n} points (${sets.map((s) => s.kind).join(', ')}; ${OBJECTIVES.length} objectives): per order the slowest native / wasm solve, and how many were proven optimal`);
+    log(`\nsmall inputs, ${n} points (${sets.map((s) => s.kind).join(', ')}; ${OBJECTIVES.length} objectives): per order the slowest native and wasm solves, how many took over ${targetMs / 1000} s (native / wasm), and how many were proven optimal`);
     for (const order of orders) {
-      const row = { n, order, runs: 0, proven: 0, native: { ms: 0 }, wasm: { ms: 0 }, errors: [] };
+      const row = { n, order, runs: 0, proven: 0, native: { ms: 0 }, wasm: { ms: 0 }, targetMs, over: { native: 0, wasm: 0 }, errors: [] };
       for (const { kind, file, terrain } of sets)
         for (const objective of OBJECTIVES) {
           const name = `${kind} ${objective}`;
@@ -66,6 +68,8 @@ export async function runSmallInputs({ root, tmp, hodt, log, quick, sizes = quic
           }
           const wasmMs = performance.now() - t1;
           ++row.runs;
+          row.over.native += nativeMs > targetMs;
+          row.over.wasm += wasmMs > targetMs;
           if (r.status !== 0) { row.errors.push(`${name}: ${r.stderr.trim()}`); continue; }
           const native = JSON.parse(r.stdout);
           if (native.optimal && wasm?.optimal) ++row.proven;
@@ -75,7 +79,7 @@ export async function runSmallInputs({ root, tmp, hodt, log, quick, sizes = quic
         }
       rows.push(row);
       const slow = (s) => `${s.ms.toFixed(0).padStart(6)} ms (${s.case}${s.optimal ? '' : ', not proven'})`;
-      log(`  k=${order}  native ${slow(row.native)}  wasm ${slow(row.wasm)}  proven ${row.proven}/${row.runs}${row.errors.length ? `  ERRORS: ${row.errors.join('; ')}` : ''}`);
+      log(`  k=${order}  native ${slow(row.native)}  wasm ${slow(row.wasm)}  over ${targetMs / 1000} s: ${row.over.native} / ${row.over.wasm}  proven ${row.proven}/${row.runs}${row.errors.length ? `  ERRORS: ${row.errors.join('; ')}` : ''}`);
     }
     for (const { terrain } of sets) terrain.dispose();
   }

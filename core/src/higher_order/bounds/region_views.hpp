@@ -15,15 +15,11 @@
 #include <vector>
 
 #include "higher_order/fills/fill_enumerator.hpp"
+#include "higher_order/regions/region_model.hpp"
 #include "higher_order/regions/region_terms.hpp"
 #include "tuning/budgets.hpp"
 
 namespace hodt {
-
-struct RegionView {
-  std::vector<Tri> items;                   // sorted: the items this view speaks for
-  std::vector<std::vector<Tri>> states;     // best triangulations, one per restricted signature
-};
 
 struct RegionViewLimits {
   uint64_t max_states = kBudgets.view_max_states;  // partial fills of one view's DP (tuning/budgets.hpp)

@@ -12,12 +12,18 @@
 #pragma once
 #include "hodt/objectives.hpp"
 #include "engines/state_graph.hpp"
-#include "higher_order/bounds/region_views.hpp"
 #include "higher_order/regions/regions.hpp"
 #include "higher_order/regions/vertex_term_memo.hpp"
 #include "tuning/budgets.hpp"
 
 namespace hodt {
+
+// A view of a region (bounds/region_views.hpp): the items of its signature it
+// speaks for, and its best triangulations, one per signature restricted to them.
+struct RegionView {
+  std::vector<Tri> items;                // sorted
+  std::vector<std::vector<Tri>> states;
+};
 
 struct RegionModel {
   StateGraph graph;
