@@ -15,14 +15,6 @@
 
 namespace hodt {
 
-Mesh mesh_of(const Coords& coords, const std::vector<Tri>& triangles) {
-  Mesh m;
-  m.coords = coords;
-  for (const Tri& t : triangles) m.triangles.insert(m.triangles.end(), t.begin(), t.end());
-  canonicalize(m);
-  return m;
-}
-
 bool enumerate_k_order(const Mesh& dt, uint32_t k, uint64_t max_nodes,
                        const std::function<void(const std::vector<Tri>&)>& visit, const Progress& progress) {
   const Candidates cand = k_order_candidates(dt, k, useful_edges(dt, k));

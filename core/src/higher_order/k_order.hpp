@@ -3,7 +3,7 @@
 // The fixed edges cut the hull into regions (regions.hpp); each region's k-OD
 // triangulations are listed, and the objective's terms become a state graph
 // over the regions (region_model.hpp). The solve is a table of phases
-// (phases/phase_table.hpp) over one answer (incumbent.hpp): the exact DP over a
+// (phases/phase_table.hpp) over one answer (phases/incumbent.hpp): the exact DP over a
 // tree decomposition when every region is listed whole; else searches from the
 // first order optimum and the order below, and proven bounds, until the bound
 // meets the value (`optimal`) or the phases run out (the gap is known).
@@ -18,22 +18,12 @@
 #include "hodt/skeleton.hpp"
 #include "hodt/solution.hpp"
 #include "hodt/solve.hpp"
+#include "higher_order/phases/k_order_result.hpp"
 #include "higher_order/regions/regions.hpp"
+#include "mesh/mesh_of.hpp"
 #include "tuning/budgets.hpp"
 
 namespace hodt {
-
-struct KOrderResult {
-  Mesh triangulation;
-  double value = 0;
-  double delaunay_value = 0;
-  bool optimal = false;
-  std::optional<double> bound;
-  uint64_t enumerated = 0;  // triangulations enumerated (brute force)
-  std::string method;       // "brute-force", "exact" or "heuristic"
-  std::string details;      // what ran, in a few words
-  std::vector<PhaseStep> phases;  // the phases that ran (the top order's)
-};
 
 // Brute force at order k enumerates the whole instance: at most
 // kBudgets.brute_force_max_points points.
@@ -56,7 +46,5 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
 // The same as a Solution (for the CLI and the bindings).
 Solution k_order_solution(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options);
 
-// A mesh (canonical order) from a list of counterclockwise triangles.
-Mesh mesh_of(const Coords& coords, const std::vector<Tri>& triangles);
 
 }  // namespace hodt

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "hodt/predicates.hpp"
+#include "mesh/mesh_of.hpp"
 
 namespace hodt {
 namespace {
@@ -170,6 +171,14 @@ std::string validate(const Mesh& m) {
     if (orient2d(a, b, c) < 0) return "hull is not convex and counterclockwise";
   }
   return {};
+}
+
+Mesh mesh_of(const Coords& coords, const std::vector<Tri>& triangles) {
+  Mesh m;
+  m.coords = coords;
+  for (const Tri& t : triangles) m.triangles.insert(m.triangles.end(), t.begin(), t.end());
+  canonicalize(m);
+  return m;
 }
 
 }  // namespace hodt

@@ -6,8 +6,8 @@
 #include "hodt/error.hpp"
 #include "hodt/measures.hpp"
 #include "higher_order/fills/fill_graph.hpp"
-#include "higher_order/k_order.hpp"
 #include "higher_order/regions/region_model.hpp"
+#include "mesh/mesh_of.hpp"
 
 namespace hodt {
 

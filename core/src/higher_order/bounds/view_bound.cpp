@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "engines/dual_bound.hpp"
-#include "higher_order/k_order.hpp"
+#include "mesh/mesh_of.hpp"
 
 namespace hodt {
 

@@ -5,6 +5,7 @@
 #include "higher_order/phases/phases.hpp"
 #include "higher_order/regions/glue_regions.hpp"
 #include "higher_order/regions/region_terms.hpp"
+#include "mesh/mesh_of.hpp"
 
 namespace hodt {
 

@@ -5,6 +5,7 @@
 #include "higher_order/phases/phases.hpp"
 #include "higher_order/search/fan_windows.hpp"
 #include "higher_order/search/flip_search.hpp"
+#include "mesh/mesh_of.hpp"
 
 namespace hodt {
 

@@ -12,8 +12,8 @@
 #include "hodt/predicates.hpp"
 #include "higher_order/fills/fill_dp.hpp"
 #include "higher_order/fills/fill_enumerator.hpp"
-#include "higher_order/k_order.hpp"
 #include "higher_order/regions/region_terms.hpp"
+#include "mesh/mesh_of.hpp"
 
 namespace hodt {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "hodt/domain.hpp"
-#include "higher_order/k_order.hpp"
+#include "mesh/mesh_of.hpp"
 #include "objectives/objective_terms.hpp"
 
 namespace hodt {
