@@ -8,6 +8,9 @@ import { fileURLToPath } from 'node:url';
 const root = fileURLToPath(new URL('..', import.meta.url));
 mkdirSync(`${root}/test-results`, { recursive: true });
 let passed = 0, failed = 0;
+// The failing tests' names, repeated above the closing line so that the end of
+// a long log says what failed.
+const failures = [];
 // doctest cases left out under the sanitizers: the long brute-force and
 // order-k sweeps (seconds natively, up to ten minutes there) and the three that
 // time progress and cancellation. The native run has them all.
@@ -31,11 +34,15 @@ function doctest(title, binary, report, extra = []) {
   const xml = existsSync(`${root}/test-results/${report}`) ? readFileSync(`${root}/test-results/${report}`, 'utf8') : '';
   const cases = (xml.match(/<testcase /g) ?? []).length;
   const bad = (xml.match(/<failure/g) ?? []).length;
+  for (const m of xml.matchAll(/<testcase [^>]*name="([^"]*)"[^>]*>\s*<failure/g)) failures.push(`${title}: ${m[1]}`);
   if (cases) {
     passed += cases - bad;
     failed += bad;
   } else failed += status === 0 ? 0 : 1;
-  if (status !== 0 && !bad) failed += 1;
+  if (status !== 0 && !bad) {
+    failed += 1;
+    failures.push(`${title}: exit ${status}`);
+  }
 }
 doctest('doctest (native core)', `${root}/build/native/hodt_tests`, 'doctest.xml');
 
@@ -46,8 +53,16 @@ function vitest(title, config, report) {
     const j = JSON.parse(readFileSync(file, 'utf8'));
     passed += j.numPassedTests;
     failed += j.numFailedTests;
+    for (const suite of j.testResults ?? []) {
+      const file = suite.name.replace(root, '');
+      for (const t of suite.assertionResults ?? []) if (t.status === 'failed') failures.push(`${title}: ${file}: ${t.fullName}`);
+      if (suite.status === 'failed' && !(suite.assertionResults ?? []).some((t) => t.status === 'failed')) failures.push(`${title}: ${file}: failed to load`);
+    }
     if (status !== 0 && j.numFailedTests === 0) failed += 1; // a suite failed to load
-  } else if (status !== 0) failed += 1;
+  } else if (status !== 0) {
+    failed += 1;
+    failures.push(`${title}: exit ${status}`);
+  }
 }
 vitest('vitest (library and CLI, real wasm in Node)', 'vitest.config.ts', 'vitest.json');
 vitest('browser (Playwright + Chromium)', 'tests/e2e/vitest.config.ts', 'e2e.json');
@@ -66,6 +81,7 @@ vitest('npm package (pack, offline install, Node, CLI, types, Vite + Chromium un
   } catch {
     built = false;
     failed += 1;
+    failures.push('sanitizer build');
   }
   if (built) {
     doctest('doctest (ASan + UBSan)', `${root}/build/sanitize/hodt_tests`, 'doctest-sanitize.xml', [`--test-case-exclude=${SANITIZER_SKIP.join(',')}`]);
@@ -73,10 +89,14 @@ vitest('npm package (pack, offline install, Node, CLI, types, Vite + Chromium un
       const r = fuzz(target, 20);
       console.log(`fuzz: ${target}: ${r.runs.toLocaleString('en')} inputs in 20 s, ${r.ok ? 'no findings' : 'FINDING'}`);
       if (r.ok) passed += 1;
-      else failed += 1;
+      else {
+        failed += 1;
+        failures.push(`fuzz: ${target}`);
+      }
     }
   }
 }
 
+if (failures.length) console.log(`\nfailed:\n${failures.map((f) => `  ${f}`).join('\n')}`);
 console.log(`\ntests: ${passed} passed, ${failed} failed`);
 process.exitCode = failed ? 1 : 0;
