@@ -18,11 +18,13 @@
 namespace hodt {
 
 // f(args...), called through a pointer read from a volatile, so that the body
-// of f is a function of its own that no optimiser inlines into the caller.
+// of f is a function of its own that no optimiser inlines into the caller. An
+// lvalue argument is passed by reference, a temporary by value (as a direct
+// call would pass a line's number and text).
 template <class F, class... A>
 decltype(auto) out_of_line(F& f, A&&... args) {
   using R = decltype(f(std::forward<A>(args)...));
-  R (*volatile const call)(F&, A&&...) = [](F& g, A&&... a) -> R { return g(std::forward<A>(a)...); };
+  R (*volatile const call)(F&, A...) = [](F& g, A... a) -> R { return g(std::forward<A>(a)...); };
   return call(f, std::forward<A>(args)...);
 }
 
