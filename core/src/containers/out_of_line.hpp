@@ -7,9 +7,10 @@
 // own, lets the optimised code take over after the first chunks. The call goes
 // through a function pointer the optimisers cannot see through: Binaryen
 // inlines any function called from one place (`noinline` does not stop it),
-// and the compiler would inline a direct call of the body. Natively the cost is
-// one indirect call per chunk (or per item with `out_of_line`), nothing next
-// to the work of a chunk.
+// and the compiler would inline a direct call of the body. Only a wasm build
+// takes the detour: a native build has no tiers, and there the opaque call
+// would cost optimisations (the body's captured state escapes, so a byte store
+// may alias it and it is reloaded per item), so natively the call is direct.
 #pragma once
 #include <algorithm>
 #include <cstddef>
@@ -23,9 +24,13 @@ namespace hodt {
 // call would pass a line's number and text).
 template <class F, class... A>
 decltype(auto) out_of_line(F& f, A&&... args) {
+#if defined(__wasm__)
   using R = decltype(f(std::forward<A>(args)...));
   R (*volatile const call)(F&, A...) = [](F& g, A... a) -> R { return g(std::forward<A>(a)...); };
   return call(f, std::forward<A>(args)...);
+#else
+  return f(std::forward<A>(args)...);
+#endif
 }
 
 // The items of a long loop per chunk: body(begin, end) for consecutive ranges
