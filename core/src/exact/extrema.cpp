@@ -7,6 +7,7 @@
 #include "hodt/format.hpp"
 #include "hodt/measures.hpp"
 #include "hodt/skeleton.hpp"
+#include "containers/out_of_line.hpp"
 #include "engines/term_budget.hpp"
 
 namespace hodt {
@@ -23,16 +24,17 @@ std::vector<int8_t> potential_extrema(const FirstOrder& fo, const Progress& prog
   const std::vector<uint8_t> diagonal = fo.diagonal_mask();
   const uint32_t n = m.num_vertices();
   std::vector<uint8_t> higher(n, 1), lower(n, 1);  // all fixed neighbours strictly higher / lower
-  for (uint32_t e = 0; e < m.triangles.size(); ++e) {
+  // (Out of line per chunk: containers/out_of_line.hpp.)
+  for_each_index(static_cast<uint32_t>(m.triangles.size()), [&](uint32_t e) {
     if (work.tick(8)) report(progress, e, m.triangles.size());
-    if (diagonal[e]) continue;
+    if (diagonal[e]) return;
     const uint32_t u = m.origin(e), v = m.target(e);
     // Every edge appears as a halfedge from both ends, or once on the hull: visit both ways.
     for (auto [a, b] : {std::pair{u, v}, std::pair{v, u}}) {
       if (!(z(m, b) > z(m, a))) higher[a] = 0;
       if (!(z(m, b) < z(m, a))) lower[a] = 0;
     }
-  }
+  });
   std::vector<int8_t> kind(n, 0);
   for (uint32_t v : m.hull) higher[v] = lower[v] = 0;
   if (has_domain(m))

@@ -2,6 +2,8 @@
 
 #include <fast_float/fast_float.h>
 
+#include "containers/out_of_line.hpp"
+
 namespace hodt {
 namespace {
 
@@ -10,13 +12,11 @@ namespace {
 // several times larger, and V8 runs a wasm function in its baseline tier until
 // its optimising compile, which takes time proportional to the function's size,
 // is done, so a large parse_double reads most of a file in baseline code. Called
-// through a pointer the optimisers cannot see through (Binaryen inlines any
-// function called from one place, whatever its attributes).
-fast_float::adjusted_mantissa exact_fallback(fast_float::parsed_number_string& pns, fast_float::adjusted_mantissa am) noexcept {
+// out of line (containers/out_of_line.hpp): Binaryen inlines any function called
+// from one place, whatever its attributes.
+const auto exact_fallback = [](fast_float::parsed_number_string& pns, fast_float::adjusted_mantissa am) noexcept {
   return fast_float::digit_comp<double>(pns, am);
-}
-fast_float::adjusted_mantissa (*volatile const exact_fallback_call)(fast_float::parsed_number_string&,
-                                                                    fast_float::adjusted_mantissa) noexcept = exact_fallback;
+};
 
 // fast_float::from_chars_advanced for double, step by step as fast_float writes
 // it (parse_number.h), with the fallback above out of line: the same steps in
@@ -62,7 +62,7 @@ fast_float::from_chars_result from_chars_double(const char* first, const char* l
   if (pns.too_many_digits && am.power2 >= 0) {
     if (am != compute_float<format>(pns.exponent, pns.mantissa + 1)) am = compute_error<format>(pns.exponent, pns.mantissa);
   }
-  if (am.power2 < 0) am = exact_fallback_call(pns, am);
+  if (am.power2 < 0) am = out_of_line(exact_fallback, pns, am);
   to_float(pns.negative, am, value);
   return answer;
 }

@@ -11,6 +11,7 @@
 
 #include "hodt/domain.hpp"
 #include "hodt/error.hpp"
+#include "containers/out_of_line.hpp"
 #include "io/parse_number.hpp"
 #include "io/quote_input.hpp"
 #include "io/text_encoding.hpp"
@@ -90,12 +91,8 @@ std::vector<std::string_view> split_fields(std::string_view line, char delimiter
 }
 
 // Lines end with LF (Unix), CR LF (Windows) or a lone CR (classic Mac, some exports).
-// `f` is called per line through a function pointer that the optimisers cannot
-// see through, so that it stays a function of its own in the wasm (Binaryen
-// inlines any function called from one place): V8 runs a wasm function in the
-// tier it was entered with, so the loop of a function called once stays in
-// baseline code, while a function called per line moves to the optimising tier
-// after its first lines.
+// `f` is called per line out of line (containers/out_of_line.hpp), so that V8
+// moves it to its optimising tier after the first lines.
 template <class F>
 void for_each_line(std::string_view text, F f) {
   // Without a CR anywhere every line ends at the next LF, which memchr finds
@@ -105,7 +102,6 @@ void for_each_line(std::string_view text, F f) {
   const char* const begin = text.data();
   const char* const end = begin + text.size();
   int line = 0;
-  void (*volatile const each)(F&, int, std::string_view) = [](F& g, int n, std::string_view s) { g(n, s); };
   for (const char* i = begin;;) {
     const char* j;
     if (!cr) {
@@ -115,7 +111,7 @@ void for_each_line(std::string_view text, F f) {
       j = i;
       while (j != end && *j != '\n' && *j != '\r') ++j;
     }
-    each(f, ++line, std::string_view(i, static_cast<size_t>(j - i)));
+    out_of_line(f, ++line, std::string_view(i, static_cast<size_t>(j - i)));
     if (j == end) break;
     i = j + (*j == '\r' && j + 1 != end && j[1] == '\n' ? 2 : 1);
   }

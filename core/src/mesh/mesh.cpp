@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "hodt/predicates.hpp"
+#include "containers/out_of_line.hpp"
 #include "mesh/mesh_of.hpp"
 
 namespace hodt {
@@ -89,46 +90,50 @@ void canonicalize(Mesh& m) {
   const uint32_t nt = m.num_triangles(), nv = m.num_vertices();
   // Rotate each triangle to start at its smallest vertex; remember by how much.
   std::vector<uint8_t> rotation(nt);
-  for (uint32_t t = 0; t < nt; ++t) {
+  // (Each long loop out of line: containers/out_of_line.hpp.)
+  for_each_index(nt, [&](uint32_t t) {
     uint32_t* v = &m.triangles[3 * t];
     const uint8_t r = v[1] < v[0] && v[1] < v[2] ? 1 : v[2] < v[0] && v[2] < v[1] ? 2 : 0;
     std::rotate(v, v + r, v + 3);
     rotation[t] = r;
-  }
+  });
   // Counting sort by first vertex, then by second within each bucket.
   std::vector<uint32_t> start(nv + 1, 0);
-  for (uint32_t t = 0; t < nt; ++t) ++start[m.triangles[3 * t] + 1];
+  for_each_index(nt, [&](uint32_t t) { ++start[m.triangles[3 * t] + 1]; });
   for (uint32_t v = 0; v < nv; ++v) start[v + 1] += start[v];
   std::vector<uint32_t> order(nt);
-  for (uint32_t t = 0; t < nt; ++t) order[start[m.triangles[3 * t]]++] = t;  // start[v] ends at v + 1's
+  for_each_index(nt, [&](uint32_t t) { order[start[m.triangles[3 * t]]++] = t; });  // start[v] ends at v + 1's
   for (uint32_t v = nv; v-- > 0;) start[v + 1] = start[v];
   start[0] = 0;
-  for (uint32_t v = 0; v < nv; ++v)
+  for_each_index(nv, [&](uint32_t v) {
     std::sort(order.begin() + start[v], order.begin() + start[v + 1],
               [&](uint32_t s, uint32_t t) { return m.triangles[3 * s + 1] < m.triangles[3 * t + 1]; });
+  });
   start = {};
   std::vector<uint32_t> position(nt);  // new slot of each old triangle
-  for (uint32_t k = 0; k < nt; ++k) position[order[k]] = k;
+  for_each_index(nt, [&](uint32_t k) { position[order[k]] = k; });
   order = {};
   const bool linked = m.halfedges.size() == m.triangles.size();
   if (linked) {
     // Halfedge 3t + k of old triangle t becomes 3 * position(t) + (k - rotation) mod 3:
     // renumber the twins, rotate each triangle's entries like its vertices.
     auto renumber = [&](uint32_t e) { return 3 * position[e / 3] + (e % 3 + 3 - rotation[e / 3]) % 3; };
-    for (int32_t& f : m.halfedges)
+    for_each_index(m.halfedges.size(), [&](size_t e) {
+      int32_t& f = m.halfedges[e];
       if (f >= 0) f = static_cast<int32_t>(renumber(static_cast<uint32_t>(f)));
-    for (uint32_t t = 0; t < nt; ++t) std::rotate(&m.halfedges[3 * t], &m.halfedges[3 * t + rotation[t]], &m.halfedges[3 * t + 3]);
+    });
+    for_each_index(nt, [&](uint32_t t) { std::rotate(&m.halfedges[3 * t], &m.halfedges[3 * t + rotation[t]], &m.halfedges[3 * t + 3]); });
   }
   // Gather into new arrays, one at a time (triangles, then halfedges): faster than
   // permuting in place, and at most one array's worth of extra memory.
   {
     std::vector<uint32_t> sorted(m.triangles.size());
-    for (uint32_t t = 0; t < nt; ++t) std::copy_n(&m.triangles[3 * t], 3, &sorted[3 * position[t]]);
+    for_each_index(nt, [&](uint32_t t) { std::copy_n(&m.triangles[3 * t], 3, &sorted[3 * position[t]]); });
     m.triangles.swap(sorted);
   }
   if (linked) {
     std::vector<int32_t> sorted(m.halfedges.size());
-    for (uint32_t t = 0; t < nt; ++t) std::copy_n(&m.halfedges[3 * t], 3, &sorted[3 * position[t]]);
+    for_each_index(nt, [&](uint32_t t) { std::copy_n(&m.halfedges[3 * t], 3, &sorted[3 * position[t]]); });
     m.halfedges.swap(sorted);
   }
   if (!linked) link_halfedges(m);
@@ -136,10 +141,10 @@ void canonicalize(Mesh& m) {
 
 std::vector<int32_t> vertex_halfedges(const Mesh& m) {
   std::vector<int32_t> out(m.num_vertices(), -1);
-  for (uint32_t e = 0; e < m.triangles.size(); ++e) {
+  for_each_index(static_cast<uint32_t>(m.triangles.size()), [&](uint32_t e) {
     const uint32_t v = m.triangles[e];
     if (out[v] < 0 || m.halfedges[e] < 0) out[v] = static_cast<int32_t>(e);
-  }
+  });
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include "hodt/error.hpp"
 #include "hodt/format.hpp"
 #include "hodt/predicates.hpp"
+#include "containers/out_of_line.hpp"
 #include "geometry/spatial_order.hpp"
 
 namespace hodt {
@@ -32,12 +33,14 @@ TerrainPoints validate_points(std::vector<double> xyz, Dedupe dedupe, const Poin
     throw InputError("expected x, y, z per point: " + std::to_string(xyz.size()) +
                      " numbers is not a multiple of 3");
   const size_t n = xyz.size() / 3;
-  for (size_t i = 0; i < n; ++i)
+  // (The long loops out of line per chunk: containers/out_of_line.hpp.)
+  for_each_index(n, [&](size_t i) {
     for (int k = 0; k < 3; ++k) {
       const double v = xyz[3 * i + k];
       if (!(v == 0 || (std::abs(v) >= kMinCoordinate && std::abs(v) <= kMaxCoordinate)))  // (false for NaN)
         check_coordinate(v, k, labels.describe(i));
     }
+  });
 
   // Along the spatial order equal points are consecutive, the earliest input index
   // first; the first of each run is kept. The error names the run with the
@@ -47,17 +50,19 @@ TerrainPoints validate_points(std::vector<double> xyz, Dedupe dedupe, const Poin
   size_t dropped = 0;
   const double* worst = nullptr;
   uint32_t worst_a = 0, worst_b = 0;
-  for (size_t k = 1, first = 0; k < n; ++k) {
+  size_t first = 0;
+  for_each_index(n, [&](size_t k) {
+    if (k == 0) return;
     const uint32_t a = order[first], b = order[k];
     if (compare_xy(&xyz[3 * size_t(a)], &xyz[3 * size_t(b)]) != 0) {
       first = k;
-      continue;
+      return;
     }
     if (keep[a] && dedupe == Dedupe::Error && (!worst || compare_xy(&xyz[3 * size_t(a)], worst) < 0))
       worst = &xyz[3 * size_t(a)], worst_a = a, worst_b = b;
     keep[b] = 0;
     ++dropped;
-  }
+  });
   if (worst)
     throw InputError(labels.describe(worst_a) + " and " + labels.describe(worst_b) + " have the same (x, y) = (" +
                      format_number(worst[0]) + ", " + format_number(worst[1]) +
@@ -68,11 +73,13 @@ TerrainPoints validate_points(std::vector<double> xyz, Dedupe dedupe, const Poin
   out.input_index.reserve(m);
   if (point_order == PointOrder::Spatial) {
     out.xyz.resize(3 * m);
-    for (uint32_t i : order)
+    for_each_index(n, [&](size_t k) {
+      const uint32_t i = order[k];
       if (keep[i]) {
         std::copy_n(&xyz[3 * size_t(i)], 3, &out.xyz[3 * out.input_index.size()]);
         out.input_index.push_back(i);
       }
+    });
   } else {
     for (uint32_t i = 0; i < n; ++i)
       if (keep[i]) out.input_index.push_back(i);
