@@ -84,6 +84,12 @@ function kBOf(text) {
 }
 
 const mode = process.argv[2];
+// Sizes written from a tree with uncommitted sources are not the sizes of any
+// commit: a clean clone builds another wasm, and its package test fails.
+if (mode === '--write') {
+  const dirty = execFileSync('git', ['status', '--porcelain', '--', 'core', 'wasm', 'web/src', 'CMakeLists.txt'], { cwd: repo, encoding: 'utf8' }).trim();
+  if (dirty) console.warn(`sizes.mjs: uncommitted sources; the sizes written are of this tree, not of a commit:\n${dirty}`);
+}
 if (mode === '--write' || mode === '--check') {
   const stale = updateBlocks(repo, 'tests/pack/sizes.mjs', generated, { write: mode === '--write' });
   if (mode === '--check' && stale.length) {
