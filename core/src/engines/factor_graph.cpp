@@ -4,10 +4,10 @@
 #include <bit>
 #include <cmath>
 #include <numeric>
-#include <queue>
-#include <tuple>
+#include <utility>
 
 #include "hodt/error.hpp"
+#include "engines/elimination_queue.hpp"
 #include "hodt/progress.hpp"
 #include "tuning/budgets.hpp"
 
@@ -99,27 +99,15 @@ void eliminate(Adjacency& adj, Decomposition& d, uint32_t max_width, const Progr
   }
 }
 
-// Min-degree order; ties by variable index (deterministic).
+// Min-degree order: the variable with the fewest neighbours first.
 void eliminate_min_degree(Adjacency adj, Decomposition& d, uint32_t max_width, const Progress& progress) {
   const uint32_t n = static_cast<uint32_t>(adj.size());
-  using Entry = std::pair<uint32_t, uint32_t>;  // (degree, variable)
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
-  for (uint32_t v = 0; v < n; ++v) heap.push({static_cast<uint32_t>(adj[v].size()), v});
-  std::vector<uint8_t> gone(n, 0);
-  auto pick = [&]() -> uint32_t {
-    while (!heap.empty()) {
-      const auto [deg, v] = heap.top();
-      heap.pop();
-      if (gone[v] || deg != adj[v].size()) continue;  // stale entry
-      gone[v] = 1;
-      return v;
-    }
-    return UINT32_MAX;
-  };
+  EliminationQueue<uint32_t> queue(n);
+  for (uint32_t v = 0; v < n; ++v) queue.offer(v, static_cast<uint32_t>(adj[v].size()));
   auto changed = [&](const std::vector<uint32_t>& nb) {
-    for (uint32_t a : nb) heap.push({static_cast<uint32_t>(adj[a].size()), a});
+    for (uint32_t a : nb) queue.offer(a, static_cast<uint32_t>(adj[a].size()));
   };
-  eliminate(adj, d, max_width, progress, pick, changed);
+  eliminate(adj, d, max_width, progress, [&] { return queue.next(); }, changed);
 }
 
 // Min-fill order (fewest edges added; ties by degree, then index): narrower than
@@ -138,36 +126,21 @@ bool eliminate_min_fill(Adjacency adj, Decomposition& d, uint32_t max_width, con
     spent += static_cast<double>(a.size() * a.size()) / 2 + 1;
     return f;
   };
-  struct Entry {
-    uint64_t fill;
-    uint32_t degree, v, stamp;
-    bool operator>(const Entry& o) const { return std::tie(fill, degree, v) > std::tie(o.fill, o.degree, o.v); }
-  };
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
-  std::vector<uint32_t> stamp(n, 0), seen(n, 0);
-  std::vector<uint8_t> gone(n, 0);
+  // Fewest fill-in edges, then fewest neighbours.
+  EliminationQueue<std::pair<uint64_t, uint32_t>> queue(n);
+  std::vector<uint32_t> seen(n, 0);
   uint32_t round = 0;
-  for (uint32_t v = 0; v < n; ++v) heap.push({fill_of(v), static_cast<uint32_t>(adj[v].size()), v, 0});
+  for (uint32_t v = 0; v < n; ++v) queue.offer(v, {fill_of(v), static_cast<uint32_t>(adj[v].size())});
   bool over = false;
-  auto pick = [&]() -> uint32_t {
-    if (over) return UINT32_MAX;
-    while (!heap.empty()) {
-      const Entry e = heap.top();
-      heap.pop();
-      if (gone[e.v] || e.stamp != stamp[e.v]) continue;  // stale entry
-      gone[e.v] = 1;
-      return e.v;
-    }
-    return UINT32_MAX;
-  };
+  auto pick = [&] { return over ? UINT32_MAX : queue.next(); };
   WorkCounter work;  // (a step near the end recounts thousands of fills)
   auto changed = [&](const std::vector<uint32_t>& nb) {
     ++round;
     auto recount = [&](uint32_t w) {
-      if (gone[w] || seen[w] == round) return;
+      if (queue.eliminated(w) || seen[w] == round) return;
       seen[w] = round;
       const double before = spent;
-      heap.push({fill_of(w), static_cast<uint32_t>(adj[w].size()), w, ++stamp[w]});
+      queue.offer(w, {fill_of(w), static_cast<uint32_t>(adj[w].size())});
       if (work.tick(spent - before)) report(progress, round, n);
     };
     for (uint32_t a : nb) {

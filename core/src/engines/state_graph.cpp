@@ -4,10 +4,10 @@
 #include <cmath>
 #include <deque>
 #include <map>
-#include <queue>
 #include <string>
 #include <unordered_map>
 
+#include "engines/elimination_queue.hpp"
 #include "hodt/error.hpp"
 
 namespace hodt {
@@ -238,26 +238,21 @@ Order plan_order(const StateGraph& g, double cap, bool mini, const Progress& pro
     for (const auto& p : f.project) s.map.push_back(&p);
     o.tables.push_back(std::move(s));
   }
-  std::vector<Bag> current(n);  // per variable: its bag as last pushed (the heap's stale entries skipped)
-  using Entry = std::pair<double, uint32_t>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
-  auto push = [&](uint32_t v) {
+  // The smallest table first; each variable's bag as last offered.
+  EliminationQueue<double> queue(n);
+  std::vector<Bag> current(n);
+  auto offer = [&](uint32_t v) {
     current[v] = bag_of(g, o, tables_of, v);
-    heap.push({current[v].size, v});
+    queue.offer(v, current[v].size);
   };
-  for (uint32_t v = 0; v < n; ++v) push(v);
-  std::vector<uint8_t> gone(n, 0);
-  while (!heap.empty()) {
-    const auto [c, v] = heap.top();
-    heap.pop();
-    if (gone[v] || c != current[v].size) continue;  // stale
+  for (uint32_t v = 0; v < n; ++v) offer(v);
+  for (uint32_t v; (v = queue.next()) != UINT32_MAX;) {
     if (progress && (o.steps.size() & 255) == 0 && !progress(0, 1)) throw Cancelled();
     Bag bag = std::move(current[v]);
     if (bag.size > cap && !mini) {
       o.largest = bag.size;
       return o;
     }
-    gone[v] = 1;
     for (uint32_t t : bag.tables) o.tables[t].live = false;
     std::vector<Bag> groups;
     if (bag.size > cap) groups = mini_buckets(g, o, bag, cap), o.mini_buckets = true;
@@ -276,7 +271,7 @@ Order plan_order(const StateGraph& g, double cap, bool mini, const Progress& pro
       for (uint32_t w : m.vars) tables_of[w].push_back(o.message.back());
       o.tables.push_back(std::move(m));
       for (uint32_t w : o.tables.back().vars)
-        if (!gone[w]) push(w);
+        if (!queue.eliminated(w)) offer(w);
     }
   }
   return o;
