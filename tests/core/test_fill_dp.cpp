@@ -10,7 +10,7 @@
 #include "hodt/measures.hpp"
 #include "hodt/points.hpp"
 #include "generators.hpp"
-#include "higher_order/fills/fill_dp.hpp"
+#include "higher_order/regions/fill_dp.hpp"
 #include "higher_order/fills/fill_enumerator.hpp"
 #include "higher_order/regions/region_terms.hpp"
 #include "higher_order/regions/regions.hpp"

@@ -12,7 +12,7 @@
 #include "hodt/points.hpp"
 #include "generators.hpp"
 #include "higher_order/bounds/region_dual.hpp"
-#include "higher_order/fills/fill_graph.hpp"
+#include "higher_order/regions/fill_graph.hpp"
 #include "higher_order/k_order.hpp"
 #include "higher_order/regions/glue_regions.hpp"
 #include "higher_order/regions/region_engine.hpp"

@@ -1,6 +1,7 @@
 // The core's layout as core/README.md declares it: every folder of core/src is
 // in its table, and every include names a public header (hodt/...), a header of
-// its own folder, or one of a folder the table lets it include. The public
+// its own folder, or one of a folder the table lets it include, and the table
+// has no cycle among its folders. The public
 // headers include only each other, so the front ends need no private path.
 import { readFileSync, readdirSync } from 'node:fs';
 import { join, relative, dirname } from 'node:path';
@@ -48,6 +49,23 @@ describe('core layout', () => {
       }
     }
     expect(wrong).toEqual([]);
+  });
+
+  it('the folders the table lets each include form no cycle: each folder builds on those below it', () => {
+    const cycles: string[] = [];
+    const state = new Map<string, 'open' | 'done'>();
+    const visit = (folder: string, path: string[]) => {
+      if (state.get(folder) === 'done') return;
+      if (state.get(folder) === 'open') {
+        cycles.push([...path.slice(path.indexOf(folder)), folder].join(' -> '));
+        return;
+      }
+      state.set(folder, 'open');
+      for (const next of table.get(folder) ?? []) visit(next, [...path, folder]);
+      state.set(folder, 'done');
+    };
+    for (const folder of table.keys()) visit(folder, []);
+    expect(cycles).toEqual([]);
   });
 
   it('the public headers include only public headers', () => {

@@ -5,7 +5,7 @@
 
 #include "hodt/error.hpp"
 #include "hodt/measures.hpp"
-#include "higher_order/fills/fill_graph.hpp"
+#include "higher_order/regions/fill_graph.hpp"
 #include "higher_order/regions/region_model.hpp"
 #include "mesh/mesh_of.hpp"
 

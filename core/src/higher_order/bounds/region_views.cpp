@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "higher_order/fills/fill_dp.hpp"
+#include "higher_order/regions/fill_dp.hpp"
 
 namespace hodt {
 

@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <memory>
 
-#include "higher_order/fills/fill_graph.hpp"
+#include "higher_order/regions/fill_graph.hpp"
 #include "higher_order/phases/phases.hpp"
 #include "higher_order/regions/glue_regions.hpp"
 #include "higher_order/regions/region_terms.hpp"

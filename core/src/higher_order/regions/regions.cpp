@@ -10,7 +10,7 @@
 #include "hodt/error.hpp"
 #include "hodt/higher_order.hpp"
 #include "hodt/predicates.hpp"
-#include "higher_order/fills/fill_dp.hpp"
+#include "higher_order/regions/fill_dp.hpp"
 #include "higher_order/fills/fill_enumerator.hpp"
 #include "higher_order/regions/region_terms.hpp"
 #include "mesh/mesh_of.hpp"

@@ -1,4 +1,4 @@
-#include "higher_order/fills/fill_dp.hpp"
+#include "higher_order/regions/fill_dp.hpp"
 
 #include <algorithm>
 #include <array>
@@ -9,7 +9,7 @@
 #include "hodt/error.hpp"
 #include "containers/flat_index.hpp"
 #include "containers/words_hash.hpp"
-#include "higher_order/fills/fill_graph.hpp"
+#include "higher_order/regions/fill_graph.hpp"
 #include "tuning/budgets.hpp"
 
 namespace hodt {

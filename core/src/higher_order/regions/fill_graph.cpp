@@ -1,4 +1,4 @@
-#include "higher_order/fills/fill_graph.hpp"
+#include "higher_order/regions/fill_graph.hpp"
 
 #include <algorithm>
 #include <cmath>
