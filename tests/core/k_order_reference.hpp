@@ -16,6 +16,7 @@
 #include "hodt/solve_options.hpp"
 #include "generators.hpp"
 #include "higher_order/k_order.hpp"
+#include "mesh/mesh_of.hpp"
 #include "higher_order/regions/region_engine.hpp"
 
 namespace hodt::test {

@@ -8,6 +8,7 @@
 #include "hodt/points.hpp"
 #include "generators.hpp"
 #include "higher_order/k_order.hpp"
+#include "mesh/mesh_of.hpp"
 #include "higher_order/regions/region_engine.hpp"
 #include "higher_order/search/branch_and_bound.hpp"
 

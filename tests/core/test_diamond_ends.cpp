@@ -12,6 +12,7 @@
 #include "higher_order/bounds/diamond_ends.hpp"
 #include "higher_order/bounds/fan_trees.hpp"
 #include "higher_order/k_order.hpp"
+#include "mesh/mesh_of.hpp"
 #include "k_order_reference.hpp"
 
 using namespace hodt;

@@ -20,6 +20,7 @@
 #include "generators.hpp"
 #include "higher_order/bounds/star_bound.hpp"
 #include "higher_order/k_order.hpp"
+#include "mesh/mesh_of.hpp"
 #include "higher_order/regions/region_engine.hpp"
 #include "higher_order/regions/regions.hpp"
 #include "higher_order/search/fan_windows.hpp"

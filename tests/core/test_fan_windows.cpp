@@ -11,6 +11,7 @@
 #include "hodt/points.hpp"
 #include "generators.hpp"
 #include "higher_order/k_order.hpp"
+#include "mesh/mesh_of.hpp"
 #include "higher_order/regions/region_engine.hpp"
 #include "higher_order/search/fan_windows.hpp"
 #include "k_order_reference.hpp"

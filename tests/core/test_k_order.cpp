@@ -13,6 +13,7 @@
 #include "hodt/predicates.hpp"
 #include "generators.hpp"
 #include "higher_order/k_order.hpp"
+#include "mesh/mesh_of.hpp"
 #include "higher_order/phases/phase_table.hpp"
 #include "higher_order/search/flip_search.hpp"
 #include "mesh/circle_count.hpp"

@@ -12,6 +12,7 @@
 #include "approx/baker.hpp"
 #include "generators.hpp"
 #include "higher_order/k_order.hpp"
+#include "mesh/mesh_of.hpp"
 #include "higher_order/regions/region_engine.hpp"
 #include "higher_order/search/k_order_baker.hpp"
 #include "tuning/budgets.hpp"

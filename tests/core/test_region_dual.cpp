@@ -14,6 +14,7 @@
 #include "higher_order/bounds/region_dual.hpp"
 #include "higher_order/regions/fill_graph.hpp"
 #include "higher_order/k_order.hpp"
+#include "mesh/mesh_of.hpp"
 #include "higher_order/regions/glue_regions.hpp"
 #include "higher_order/regions/region_engine.hpp"
 #include "k_order_reference.hpp"

@@ -12,6 +12,7 @@
 #include "generators.hpp"
 #include "higher_order/bounds/region_dual.hpp"
 #include "higher_order/k_order.hpp"
+#include "mesh/mesh_of.hpp"
 #include "higher_order/regions/region_engine.hpp"
 #include "higher_order/regions/region_model.hpp"
 #include "higher_order/regions/regions.hpp"

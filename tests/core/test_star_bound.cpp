@@ -13,6 +13,7 @@
 #include "higher_order/bounds/star_bound.hpp"
 #include "higher_order/bounds/star_decode.hpp"
 #include "higher_order/k_order.hpp"
+#include "mesh/mesh_of.hpp"
 #include "higher_order/regions/region_engine.hpp"
 #include "k_order_reference.hpp"
 #include "objectives/objective_terms.hpp"

@@ -87,7 +87,10 @@ const mode = process.argv[2];
 // Sizes written from a tree with uncommitted sources are not the sizes of any
 // commit: a clean clone builds another wasm, and its package test fails.
 if (mode === '--write') {
-  const dirty = execFileSync('git', ['status', '--porcelain', '--', 'core', 'wasm', 'web/src', 'CMakeLists.txt'], { cwd: repo, encoding: 'utf8' }).trim();
+  let dirty = '';
+  try {
+    dirty = execFileSync('git', ['status', '--porcelain', '--', 'core', 'wasm', 'web/src', 'CMakeLists.txt'], { cwd: repo, encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] }).trim();
+  } catch {} // (not a git checkout: nothing to compare with)
   if (dirty) console.warn(`sizes.mjs: uncommitted sources; the sizes written are of this tree, not of a commit:\n${dirty}`);
 }
 if (mode === '--write' || mode === '--check') {

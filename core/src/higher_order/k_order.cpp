@@ -10,6 +10,7 @@
 #include "hodt/solve_options.hpp"
 #include "higher_order/fills/fill_enumerator.hpp"
 #include "higher_order/phases/phase_table.hpp"
+#include "mesh/mesh_of.hpp"
 #include "objectives/pair_measures.hpp"
 #include "tuning/budgets.hpp"
 

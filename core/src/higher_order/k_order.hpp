@@ -20,7 +20,6 @@
 #include "hodt/solve.hpp"
 #include "higher_order/phases/k_order_result.hpp"
 #include "higher_order/regions/regions.hpp"
-#include "mesh/mesh_of.hpp"
 #include "tuning/budgets.hpp"
 
 namespace hodt {
@@ -45,6 +44,5 @@ KOrderResult solve_k_order(const FirstOrder& fo, Objective o, uint32_t k, const 
 
 // The same as a Solution (for the CLI and the bindings).
 Solution k_order_solution(const FirstOrder& fo, Objective o, uint32_t k, const SolveOptions& options);
-
 
 }  // namespace hodt

@@ -181,6 +181,7 @@ std::string validate(const Mesh& m) {
 Mesh mesh_of(const Coords& coords, const std::vector<Tri>& triangles) {
   Mesh m;
   m.coords = coords;
+  m.triangles.reserve(3 * triangles.size());
   for (const Tri& t : triangles) m.triangles.insert(m.triangles.end(), t.begin(), t.end());
   canonicalize(m);
   return m;

@@ -18,6 +18,11 @@ bool small_min_max(const KOrderRun& r) {
   return r.bounded && r.k >= 2 && r.dt.num_vertices() <= r.budgets.branch_and_bound_points &&
          branch_and_bound_applies(r.o, r.dt);
 }
+// The high orders (from Budgets::early_rung_order on), where listing the
+// regions costs the most and the exact engine rarely answers: the searches
+// that need no listing come before it, the quick reading of the fill graphs
+// is left out.
+bool high_order(const KOrderRun& r) { return r.k >= r.budgets.early_rung_order; }
 // Whether a rung of the ladder (the order below) gives this order its start.
 bool ladder(const KOrderRun& r) {
   return r.k >= 3 && (max_terms(r) || r.dt.num_vertices() > r.budgets.sum_ladder_points);
@@ -41,10 +46,10 @@ const std::vector<KOrderPhase>& k_order_phases() {
       // the listing takes far longer than the search; below, the exact DP
       // answers first.)
       {"branch and bound over every fill, first",
-       [](const KOrderRun& r) { return small_min_max(r) && r.k >= r.budgets.early_rung_order; }, branch_and_bound_small},
+       [](const KOrderRun& r) { return small_min_max(r) && high_order(r); }, branch_and_bound_small},
       // (One order's regions in memory at a time.)
       // (Not before the branch and bound, which needs no rung.)
-      {"the lower order, first", [](const KOrderRun& r) { return ladder(r) && r.k >= r.budgets.early_rung_order && !small_min_max(r); },
+      {"the lower order, first", [](const KOrderRun& r) { return ladder(r) && high_order(r) && !small_min_max(r); },
        solve_lower_order},
       {"listing the regions", always, build_engine},
       {"listing the regions whole", [](const KOrderRun& r) { return r.provable && incomplete(r); }, list_whole},
@@ -52,11 +57,11 @@ const std::vector<KOrderPhase>& k_order_phases() {
       {"the start", always, take_start},
       {"a min-max proof of the start", always, prove_start},
       {"branch and bound over every fill",
-       [](const KOrderRun& r) { return small_min_max(r) && r.k < r.budgets.early_rung_order; }, branch_and_bound_small},
+       [](const KOrderRun& r) { return small_min_max(r) && !high_order(r); }, branch_and_bound_small},
       {"the start listed", always, list_start},
       {"a quick reading of the fill graphs",
        [](const KOrderRun& r) {
-         return r.provable && r.k < r.budgets.early_rung_order && incomplete(r) && r.options.method != Method::Approx;
+         return r.provable && !high_order(r) && incomplete(r) && r.options.method != Method::Approx;
        },
        quick_fill_graph_proof},
       {"the lower order", [](const KOrderRun& r) { return ladder(r) && !r.lower; }, solve_lower_order},
