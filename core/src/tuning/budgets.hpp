@@ -169,6 +169,14 @@ struct Budgets {
   // behind it, a few dozen words, so this holds one for most of the nodes.
   // (Once full, the search goes on without storing more.)
   uint64_t branch_and_bound_memo_words = uint64_t{1} << 22;
+  // The threshold SAT search (min-max; threshold_sat.hpp): on inputs of at most
+  // this many points (its clauses grow with the candidates' crossings and
+  // pairs, which grow with the input and the order), within this many
+  // conflicts over all its questions. Where the branch and bound's pruning
+  // only reads the terms of placed triangles, the solver's learned clauses
+  // carry what one part of the terrain forbids to every other part.
+  uint32_t threshold_sat_points = 200;
+  uint64_t threshold_sat_conflicts = 200'000;
   // The dual over the regions' fill graphs: sweeps of its ascent. Strips side by
   // side couple along whole boundaries and the ascent climbs slowly, so the
   // bound keeps tightening long after the first hundred sweeps.

@@ -5,6 +5,7 @@
 #include "hodt/error.hpp"
 #include "higher_order/phases/phases.hpp"
 #include "higher_order/search/branch_and_bound.hpp"
+#include "higher_order/search/threshold_sat.hpp"
 
 namespace hodt {
 
@@ -17,6 +18,11 @@ bool incomplete(const KOrderRun& run) { return run.engine->R.incomplete; }
 bool small_min_max(const KOrderRun& r) {
   return r.bounded && r.k >= 2 && r.dt.num_vertices() <= r.budgets.branch_and_bound_points &&
          branch_and_bound_applies(r.o, r.dt);
+}
+// A small input and a min-max objective: the threshold SAT search's.
+bool small_sat(const KOrderRun& r) {
+  return r.bounded && r.k >= 2 && r.dt.num_vertices() <= r.budgets.threshold_sat_points &&
+         threshold_sat_applies(r.o, r.dt);
 }
 // The high orders (from Budgets::early_rung_order on), where listing the
 // regions costs the most and the exact engine rarely answers: the searches
@@ -42,6 +48,10 @@ const std::vector<KOrderPhase>& k_order_phases() {
       {"finding the regions", always, find_regions},
       // (Order 1 stays on the region engine: solve() takes the first order paths itself.)
       {"a diagonal per quad", [](const KOrderRun& r) { return r.k >= 2; }, solve_as_quads},
+      // (Before everything that lists: its questions need only the candidates,
+      // and on a small input it answers in milliseconds what the rest takes
+      // seconds to prove, or never does.)
+      {"the threshold SAT search", small_sat, refute_by_sat},
       // (From the early rung's order on, before the regions are listed: there
       // the listing takes far longer than the search; below, the exact DP
       // answers first.)

@@ -18,6 +18,9 @@ void solve_as_quads(KOrderRun& run);
 // Min-max on small inputs: branch and bound over every k-OD triangulation of
 // the instance, within a node budget (branch_and_bound.hpp).
 void branch_and_bound_small(KOrderRun& run);
+// Min-max: "is any k-OD triangulation better than the answer?" as SAT, asked
+// until the answer is no (threshold_sat.hpp), within a conflict budget.
+void refute_by_sat(KOrderRun& run);
 
 // --- The regions and their engine (regions_phases.cpp) ---
 // The useful edges of every order up to k, and the regions the fixed ones cut.

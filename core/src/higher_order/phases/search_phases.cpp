@@ -3,6 +3,7 @@
 #include "higher_order/search/branch_and_bound.hpp"
 #include "higher_order/search/flip_search.hpp"
 #include "higher_order/search/k_order_baker.hpp"
+#include "higher_order/search/threshold_sat.hpp"
 
 namespace hodt {
 
@@ -69,6 +70,27 @@ void branch_and_bound_small(KOrderRun& run) {
   if (b.complete)
     run.answer.prove("branch and bound over every k-OD triangulation (" + std::to_string(b.nodes) +
                      " search nodes) found none better");
+}
+
+// From the best value in hand (the first order optimum when none): each better
+// triangulation the solver finds lowers the threshold, and its "no" proves the
+// last one optimal.
+void refute_by_sat(KOrderRun& run) {
+  if (!run.structure) run.structure.emplace(run.dt, run.k, std::move(run.useful), run.finding);
+  if (!run.answer.has()) {
+    const Mesh& start = run.shared.first_order.get();  // (computes the value too)
+    run.answer.offer(start, run.shared.first_order.value, "the first order optimum");
+  }
+  const ThresholdSat s = threshold_sat(run.dt, run.o, run.structure->candidates, run.answer.value(),
+                                       run.budgets.threshold_sat_conflicts, run.exactly);
+  if (s.found) run.answer.offer(*s.found, s.value, "the threshold SAT search");
+  const std::string asked = std::to_string(s.questions) + (s.questions == 1 ? " question, " : " questions, ") +
+                            std::to_string(s.conflicts) + " conflicts";
+  if (s.complete)
+    run.answer.prove("no k-OD triangulation has every term below its value (CDCL over every candidate triangle: " +
+                     asked + ")");
+  else
+    run.answer.note(" (threshold SAT: " + asked + ", no answer within its budget)");
 }
 
 }  // namespace hodt
