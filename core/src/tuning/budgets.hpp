@@ -204,6 +204,11 @@ struct Budgets {
   uint64_t list_whole_states_per_region = 100'000;
   uint64_t list_whole_states_per_region_dp = 500'000;
   uint64_t list_whole_total_states = 1'500'000;
+  // Not at high order (early_rung_order on) on inputs of at most this many
+  // points: there a region over the first budgets is one region of most of the
+  // input, which the wider listing does not make whole either, and the dual
+  // proof and the stars prove the counts from the first listing.
+  uint32_t list_whole_high_order_points = 200;
   // The dual proof over a whole model: clusterings of these many table entries,
   // tried in turn (the larger, the tighter relaxation). Each ascent stops at a
   // fixed point of its own, and a proof turns on the bound passing an integer,

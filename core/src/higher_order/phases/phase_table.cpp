@@ -1,6 +1,7 @@
 #include "higher_order/phases/phase_table.hpp"
 
 #include <chrono>
+#include <cstdio>
 
 #include "hodt/error.hpp"
 #include "higher_order/phases/phases.hpp"
@@ -62,7 +63,12 @@ const std::vector<KOrderPhase>& k_order_phases() {
       {"the lower order, first", [](const KOrderRun& r) { return ladder(r) && high_order(r) && !small_min_max(r); },
        solve_lower_order},
       {"listing the regions", always, build_engine},
-      {"listing the regions whole", [](const KOrderRun& r) { return r.provable && incomplete(r); }, list_whole},
+      {"listing the regions whole",
+       [](const KOrderRun& r) {
+         return r.provable && incomplete(r) &&
+                !(high_order(r) && r.dt.num_vertices() <= r.budgets.list_whole_high_order_points);
+       },
+       list_whole},
       {"the exact DP", always, solve_exactly},
       {"the start", always, take_start},
       {"a min-max proof of the start", always, prove_start},
