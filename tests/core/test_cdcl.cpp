@@ -182,6 +182,14 @@ TEST_CASE("cdcl: pigeonhole") {
   CHECK(s.solve(1) == SatAnswer::Unknown);
   CHECK(s.conflicts() == 2);
   CHECK(s.solve(kNoLimit) == SatAnswer::Unsatisfiable);
+  // The work budget: a few hundred watches visited, then Unknown, resumed to
+  // the same answer.
+  Cdcl w;
+  add_all(w, pigeonhole(8, 7));
+  const uint64_t before = w.work();
+  CHECK(w.solve(kNoLimit, {}, 300) == SatAnswer::Unknown);
+  CHECK(w.work() - before < 300 + 2000);  // (checked between propagations: a propagation may overrun it)
+  CHECK(w.solve(kNoLimit) == SatAnswer::Unsatisfiable);
 }
 
 TEST_CASE("cdcl: a chain of 100000 implications") {

@@ -63,7 +63,7 @@ TEST_CASE("threshold SAT equals exhaustive enumeration (min-max, orders 2 to 5, 
         const double best = exhaustive_optimum(dt, k, o);
         for (const double known : {double{INFINITY}, evaluate(o, dt), std::nextafter(best, double{INFINITY}), best}) {
           CAPTURE(known);
-          const ThresholdSat s = threshold_sat(dt, o, structure.candidates, known, 10'000'000);
+          const ThresholdSat s = threshold_sat(dt, o, structure.candidates, known, 10'000'000, UINT64_MAX);
           REQUIRE(s.complete);
           CHECK(s.value == best);
           REQUIRE(s.found.has_value() == (best < known));
@@ -79,12 +79,15 @@ TEST_CASE("threshold SAT equals exhaustive enumeration (min-max, orders 2 to 5, 
   CHECK(searched == 30 * 4 * 7 * 4);
 }
 
-// Out of budget: nothing proven, and what was found is still a k-OD
+// Out of either budget: nothing proven, and what was found is still a k-OD
 // triangulation of its value.
-TEST_CASE("threshold SAT out of its conflict budget proves nothing") {
+TEST_CASE("threshold SAT out of its conflicts or its work proves nothing") {
   const Mesh dt = delaunay(validate_points(uniform_points(60, 7)).xyz);
   const KOrderStructure structure(dt, 6, {});
-  const ThresholdSat s = threshold_sat(dt, Objective::MinmaxVertexNormalAngle, structure.candidates, INFINITY, 1);
+  const ThresholdSat s = threshold_sat(dt, Objective::MinmaxVertexNormalAngle, structure.candidates, INFINITY, 1, UINT64_MAX);
   CHECK(!s.complete);
+  const ThresholdSat w = threshold_sat(dt, Objective::MinmaxVertexNormalAngle, structure.candidates, INFINITY, UINT64_MAX, 100);
   if (s.found) CHECK(is_k_order(*s.found, dt, 6));
+  CHECK(!w.complete);
+  if (w.found) CHECK(is_k_order(*w.found, dt, 6));
 }

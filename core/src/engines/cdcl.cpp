@@ -390,7 +390,7 @@ uint32_t Cdcl::heap_pop() {
   return v;
 }
 
-SatAnswer Cdcl::solve(uint64_t max_conflicts, const Progress& progress) {
+SatAnswer Cdcl::solve(uint64_t max_conflicts, const Progress& progress, uint64_t max_work) {
   backtrack(0);
   if (unsat_ || propagate() != kNone) {
     unsat_ = true;
@@ -402,12 +402,15 @@ SatAnswer Cdcl::solve(uint64_t max_conflicts, const Progress& progress) {
   WorkCounter work;
   work.every = 65536;  // a unit: a watch or implication visited
   uint64_t reported = work_;
+  const uint64_t work_at_start = work_;
   report(progress, 0, total);
   for (;;) {
-    // Progress (and a possible Cancelled) only here, where the state is whole:
-    // propagation done or still to do from qhead_, no conflict pending.
+    // Progress (and a possible Cancelled, or the end of the work budget) only
+    // here, where the state is whole: propagation done or still to do from
+    // qhead_, no conflict pending.
     if (work.tick(static_cast<double>(work_ - reported) + 1)) report(progress, static_cast<double>(done), total);
     reported = work_;
+    if (work_ - work_at_start > max_work) return SatAnswer::Unknown;
     const uint32_t conflict = propagate();
     if (conflict != kNone) {
       ++conflicts_, ++done, ++since_restart;

@@ -49,11 +49,15 @@ class Cdcl {
   // Unknown; a later call resumes, keeping the learned clauses; an answer found
   // before the first conflict comes even with a budget of 0). progress is
   // called with (conflicts so far in this call, max_conflicts); cancelling it
-  // throws Cancelled (the solver stays usable).
-  SatAnswer solve(uint64_t max_conflicts, const Progress& progress = {});
+  // throws Cancelled (the solver stays usable). max_work: Unknown as well once
+  // the call has visited this many watches and implications (a conflict's
+  // cost grows with the instance: this bounds the time, where the conflicts
+  // bound the search).
+  SatAnswer solve(uint64_t max_conflicts, const Progress& progress = {}, uint64_t max_work = UINT64_MAX);
   // After Satisfiable: the model's value of v (false for a variable added since).
   bool value(uint32_t v) const { return v < model_.size() && model_[v] != 0; }
   uint64_t conflicts() const { return conflicts_; }  // total, over every call
+  uint64_t work() const { return work_; }            // watches and implications visited, over every call
   size_t num_clauses() const { return num_original_; }  // original clauses of 2+ literals kept
 
  private:

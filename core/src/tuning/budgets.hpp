@@ -177,6 +177,17 @@ struct Budgets {
   // carry what one part of the terrain forbids to every other part.
   uint32_t threshold_sat_points = 200;
   uint64_t threshold_sat_conflicts = 200'000;
+  // Its work (the solver's watches and implications visited, a few 10^7 a
+  // second): a conflict's cost grows with the input, which the conflicts alone
+  // do not bound. About two seconds: what it proves, it proves in milliseconds.
+  uint64_t threshold_sat_work = 50'000'000;
+  // On larger inputs it runs late, only where the answer still has a gap
+  // after the cheap bounds (before the regions' views, the costliest): the
+  // solver needs a full triangulation per answer, so a question costs more
+  // the larger the input, and on most inputs the bounds prove the answer
+  // first. Up to this many points, within this much work.
+  uint32_t threshold_sat_gap_points = 20'000;
+  uint64_t threshold_sat_gap_work = 125'000'000;
   // The dual over the regions' fill graphs: sweeps of its ascent. Strips side by
   // side couple along whole boundaries and the ascent climbs slowly, so the
   // bound keeps tightening long after the first hundred sweeps.

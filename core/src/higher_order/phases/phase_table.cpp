@@ -25,6 +25,12 @@ bool small_sat(const KOrderRun& r) {
   return r.bounded && r.k >= 2 && r.dt.num_vertices() <= r.budgets.threshold_sat_points &&
          threshold_sat_applies(r.o, r.dt);
 }
+// A larger input (up to Budgets::threshold_sat_gap_points), min-max: the
+// threshold SAT search's where the cheap bounds left a gap.
+bool larger_sat(const KOrderRun& r) {
+  return r.bounded && r.k >= 2 && r.dt.num_vertices() > r.budgets.threshold_sat_points &&
+         r.dt.num_vertices() <= r.budgets.threshold_sat_gap_points && threshold_sat_applies(r.o, r.dt);
+}
 // The high orders (from Budgets::early_rung_order on), where listing the
 // regions costs the most and the exact engine rarely answers: the searches
 // that need no listing come before it, the quick reading of the fill graphs
@@ -97,6 +103,7 @@ const std::vector<KOrderPhase>& k_order_phases() {
        refute_thresholds},
       {"the vertices' fans", [](const KOrderRun& r) { return r.bounded && max_terms(r); }, floor_fans},
       {"the vertices' stars", [](const KOrderRun& r) { return r.bounded && !max_terms(r); }, search_stars},
+      {"the threshold SAT search, for the gap", larger_sat, refute_gap_by_sat},
       {"the regions' views", [](const KOrderRun& r) { return r.bounded; }, view_regions},
       {"the fill graphs glued", [](const KOrderRun& r) { return r.bounded && r.unglued.has_value(); }, glue_fill_graphs},
   };

@@ -21,6 +21,8 @@ void branch_and_bound_small(KOrderRun& run);
 // Min-max: "is any k-OD triangulation better than the answer?" as SAT, asked
 // until the answer is no (threshold_sat.hpp), within a conflict budget.
 void refute_by_sat(KOrderRun& run);
+// The same on a larger input, where a gap is left, within its own work budget.
+void refute_gap_by_sat(KOrderRun& run);
 
 // --- The regions and their engine (regions_phases.cpp) ---
 // The useful edges of every order up to k, and the regions the fixed ones cut.

@@ -72,17 +72,20 @@ void branch_and_bound_small(KOrderRun& run) {
                      " search nodes) found none better");
 }
 
+namespace {
+
 // From the best value in hand (the first order optimum when none): each better
 // triangulation the solver finds lowers the threshold, and its "no" proves the
-// last one optimal.
-void refute_by_sat(KOrderRun& run) {
+// last one optimal. The solver's decisions start from the answer's triangles.
+void ask_sat(KOrderRun& run, uint64_t max_work) {
   if (!run.structure) run.structure.emplace(run.dt, run.k, std::move(run.useful), run.finding);
   if (!run.answer.has()) {
     const Mesh& start = run.shared.first_order.get();  // (computes the value too)
     run.answer.offer(start, run.shared.first_order.value, "the first order optimum");
   }
   const ThresholdSat s = threshold_sat(run.dt, run.o, run.structure->candidates, run.answer.value(),
-                                       run.budgets.threshold_sat_conflicts, run.exactly);
+                                       run.budgets.threshold_sat_conflicts, max_work, run.exactly,
+                                       &run.answer.triangulation());
   if (s.found) run.answer.offer(*s.found, s.value, "the threshold SAT search");
   const std::string asked = std::to_string(s.questions) + (s.questions == 1 ? " question, " : " questions, ") +
                             std::to_string(s.conflicts) + " conflicts";
@@ -92,5 +95,10 @@ void refute_by_sat(KOrderRun& run) {
   else
     run.answer.note(" (threshold SAT: " + asked + ", no answer within its budget)");
 }
+
+}  // namespace
+
+void refute_by_sat(KOrderRun& run) { ask_sat(run, run.budgets.threshold_sat_work); }
+void refute_gap_by_sat(KOrderRun& run) { ask_sat(run, run.budgets.threshold_sat_gap_work); }
 
 }  // namespace hodt

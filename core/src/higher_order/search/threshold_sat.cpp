@@ -71,6 +71,22 @@ class Encoding {
 
   bool valid() const { return valid_; }
 
+  // The solver's decisions try m's triangles and edges first (those of m
+  // that are not candidates are not variables).
+  void prefer(const Mesh& m) {
+    for (uint32_t t = 0; t < m.num_triangles(); ++t) {
+      const uint32_t* c = &m.triangles[3 * size_t(t)];
+      const uint64_t key = canonical(c[0], c[1], c[2]);
+      const uint32_t i = index_of(keys_, key);
+      if (i == keys_.size() || keys_[i] != key) continue;
+      sat_.prefer(i, true);
+      for (uint32_t j = 0; j < 3; ++j) {
+        const uint64_t e = undirected(c[j], c[(j + 1) % 3]);
+        sat_.prefer(static_cast<uint32_t>(tris_.size()) + index_of(edges_, e), true);
+      }
+    }
+  }
+
   // Adds the clauses of every term above `below` (the largest double under the
   // threshold): each pending triangle, pair or degree is measured once more,
   // and stays pending while below it (thresholds only go down).
@@ -93,8 +109,9 @@ class Encoding {
     if (d_.site == TermSite::Vertex) limit_degrees(below);
   }
 
-  SatAnswer ask(uint64_t max_conflicts) { return sat_.solve(max_conflicts, progress_); }
+  SatAnswer ask(uint64_t max_conflicts, uint64_t max_work) { return sat_.solve(max_conflicts, progress_, max_work); }
   uint64_t conflicts() const { return sat_.conflicts(); }
+  uint64_t work() const { return sat_.work(); }
   size_t clauses() const { return sat_.num_clauses(); }
 
   // The model's triangles.
@@ -244,16 +261,17 @@ class Encoding {
 }  // namespace
 
 ThresholdSat threshold_sat(const Mesh& dt, Objective o, const Candidates& cand, double known, uint64_t max_conflicts,
-                           const Progress& progress) {
+                           uint64_t max_work, const Progress& progress, const Mesh* start) {
   ThresholdSat r;
   r.value = known;
   if (dt.num_vertices() > (uint32_t{1} << 21)) return r;  // (a triangle's key packs its corners)
   Encoding enc(dt, objective_terms(o, dt), cand, progress);
   if (!enc.valid()) return r;
-  while (enc.conflicts() < max_conflicts) {
+  if (start) enc.prefer(*start);
+  while (enc.conflicts() < max_conflicts && enc.work() < max_work) {
     enc.tighten(std::nextafter(r.value, -INFINITY));
     ++r.questions;
-    const SatAnswer a = enc.ask(max_conflicts - enc.conflicts());
+    const SatAnswer a = enc.ask(max_conflicts - enc.conflicts(), max_work - enc.work());
     r.clauses = enc.clauses();
     if (a == SatAnswer::Unsatisfiable) r.complete = true;
     if (a != SatAnswer::Satisfiable) break;
@@ -265,6 +283,7 @@ ThresholdSat threshold_sat(const Mesh& dt, Objective o, const Candidates& cand, 
     r.found = std::move(m), r.value = v;
   }
   r.conflicts = enc.conflicts();
+  r.work = enc.work();
   return r;
 }
 

@@ -43,6 +43,7 @@ struct ThresholdSat {
   bool complete = false;      // the last question was answered no: value is the optimum
   uint32_t questions = 0;     // questions asked (answered or not)
   uint64_t conflicts = 0;     // the solver's, over every question
+  uint64_t work = 0;          // the solver's watches and implications visited, over every question
   size_t clauses = 0;         // the encoding's, at the last question
 };
 
@@ -50,9 +51,13 @@ struct ThresholdSat {
 // domain, terms of triangles, of pairs of triangles or of a vertex's degree).
 bool threshold_sat_applies(Objective o, const Mesh& delaunay);
 
-// known: the value of a triangulation in hand. max_conflicts: the solver's
-// budget over every question (then complete is false).
+// known: the value of a triangulation in hand; start (optional): one to try
+// first, the solver's decisions preferring its triangles and edges (a better
+// triangulation is most often a few changes away from a good one).
+// max_conflicts, max_work: the solver's budgets over every question
+// (Cdcl::solve; when one runs out, complete is false).
 ThresholdSat threshold_sat(const Mesh& delaunay, Objective o, const Candidates& candidates, double known,
-                           uint64_t max_conflicts, const Progress& progress = {});
+                           uint64_t max_conflicts, uint64_t max_work, const Progress& progress = {},
+                           const Mesh* start = nullptr);
 
 }  // namespace hodt
