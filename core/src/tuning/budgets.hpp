@@ -138,6 +138,10 @@ struct Budgets {
   // vertex, and those looked ahead at each step.
   uint64_t star_decode_steps_per_vertex = 64;
   uint32_t star_decode_lookahead = 4;
+  // On inputs of at most this many points the stars come before the dual
+  // proof: there they take milliseconds, and prove the counts the dual's
+  // ascent leaves with a gap after most of a second.
+  uint32_t stars_first_points = 200;
 
   // ---- Windows of fans (local search over tiles of vertices) ----------------
   uint32_t fan_window_vertices = 25;

@@ -36,6 +36,10 @@ bool larger_sat(const KOrderRun& r) {
 // that need no listing come before it, the quick reading of the fill graphs
 // is left out.
 bool high_order(const KOrderRun& r) { return r.k >= r.budgets.early_rung_order; }
+// Sums whose stars come before the dual proof (a small input).
+bool stars_first(const KOrderRun& r) {
+  return r.bounded && !max_terms(r) && r.dt.num_vertices() <= r.budgets.stars_first_points;
+}
 // Whether a rung of the ladder (the order below) gives this order its start.
 bool ladder(const KOrderRun& r) {
   return r.k >= 3 && (max_terms(r) || r.dt.num_vertices() > r.budgets.sum_ladder_points);
@@ -97,12 +101,14 @@ const std::vector<KOrderPhase>& k_order_phases() {
        descend_fill_graphs},
       {"the relaxation", [](const KOrderRun& r) { return r.bounded && !r.dual_first; }, relax},
       {"the terms' floor", [](const KOrderRun& r) { return r.bounded && max_terms(r); }, floor_terms},
+      {"the vertices' stars, first", stars_first, search_stars},
       {"the dual proof", [](const KOrderRun& r) { return r.provable; }, prove_by_dual},
       {"the relaxation, after the dual", [](const KOrderRun& r) { return r.dual_first; }, relax},
       {"thresholds over the fill graphs", [](const KOrderRun& r) { return r.bounded && max_terms(r) && incomplete(r); },
        refute_thresholds},
       {"the vertices' fans", [](const KOrderRun& r) { return r.bounded && max_terms(r); }, floor_fans},
-      {"the vertices' stars", [](const KOrderRun& r) { return r.bounded && !max_terms(r); }, search_stars},
+      {"the vertices' stars", [](const KOrderRun& r) { return r.bounded && !max_terms(r) && !stars_first(r); },
+       search_stars},
       {"the threshold SAT search, for the gap", larger_sat, refute_gap_by_sat},
       {"the regions' views", [](const KOrderRun& r) { return r.bounded; }, view_regions},
       {"the fill graphs glued", [](const KOrderRun& r) { return r.bounded && r.unglued.has_value(); }, glue_fill_graphs},
