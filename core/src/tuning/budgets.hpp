@@ -179,7 +179,7 @@ struct Budgets {
   // conflicts over all its questions. Where the branch and bound's pruning
   // only reads the terms of placed triangles, the solver's learned clauses
   // carry what one part of the terrain forbids to every other part.
-  uint32_t threshold_sat_points = 200;
+  uint32_t threshold_sat_points = 1000;
   uint64_t threshold_sat_conflicts = 200'000;
   // Its work (the solver's watches and implications visited, a few 10^7 a
   // second): a conflict's cost grows with the input, which the conflicts alone
