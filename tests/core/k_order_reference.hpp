@@ -96,4 +96,34 @@ inline std::vector<double> medium_instance(uint64_t seed) {
   }
 }
 
+// The min-max objectives: those the searches over every fill (the branch and
+// bound, the threshold SAT search) read the terms of.
+inline constexpr Objective kMinmaxObjectives[] = {
+    Objective::MinmaxEdgeAreaRatio,   Objective::MinmaxEdgeNormalAngle,   Objective::MinmaxEdgeEnclosingCircle,
+    Objective::MinmaxVertexAreaRatio, Objective::MinmaxVertexNormalAngle, Objective::MinmaxTriangleArea,
+    Objective::MinmaxDegree};
+
+// The optimum of o over every k-OD triangulation of dt's points, by plain
+// enumeration; NaN when listing them takes more than max_nodes search nodes.
+inline double k_order_optimum(const Mesh& dt, uint32_t k, Objective o, uint64_t max_nodes = 5'000'000) {
+  double best = INFINITY;
+  const bool complete = enumerate_k_order(dt, k, max_nodes, [&](const std::vector<Tri>& tris) {
+    best = std::min(best, evaluate(o, mesh_of(dt.coords, tris)));
+  });
+  return complete ? best : NAN;
+}
+
+// An instance of 10 to 15 points for the searches over every fill, ties
+// included: integer-height grids, uniform, cocircular, near-collinear points.
+inline std::vector<double> fill_search_instance(uint64_t seed) {
+  switch (seed % 6) {
+    case 0: return grid_points(seed % 4 ? 3 : 4, 4, seed, true);
+    case 1: return uniform_points(10 + static_cast<int>(seed % 4), seed);
+    case 2: return cocircular_points(10 + static_cast<int>(seed % 3), seed);
+    case 3: return grid_points(3, 5, seed, true);
+    case 4: return near_collinear_points(12, seed);
+    default: return uniform_points(12, seed);
+  }
+}
+
 }  // namespace hodt::test

@@ -8,6 +8,7 @@
 #include "hodt/higher_order.hpp"
 #include "hodt/points.hpp"
 #include "generators.hpp"
+#include "k_order_reference.hpp"
 #include "higher_order/k_order.hpp"
 #include "higher_order/search/threshold_sat.hpp"
 #include "mesh/mesh_of.hpp"
@@ -15,23 +16,6 @@
 
 using namespace hodt;
 using namespace hodt::test;
-
-namespace {
-
-const Objective kMinmax[] = {Objective::MinmaxEdgeAreaRatio,       Objective::MinmaxEdgeNormalAngle,
-                             Objective::MinmaxEdgeEnclosingCircle, Objective::MinmaxVertexAreaRatio,
-                             Objective::MinmaxVertexNormalAngle,   Objective::MinmaxTriangleArea,
-                             Objective::MinmaxDegree};
-
-double exhaustive_optimum(const Mesh& dt, uint32_t k, Objective o) {
-  double best = INFINITY;
-  REQUIRE(enumerate_k_order(dt, k, 5'000'000, [&](const std::vector<Tri>& tris) {
-    best = std::min(best, evaluate(o, mesh_of(dt.coords, tris)));
-  }));
-  return best;
-}
-
-}  // namespace
 
 // The clauses must admit every triangulation (else "no" is a false proof) and
 // admit nothing else (else a model is no triangulation): instances with ties
@@ -42,25 +26,17 @@ double exhaustive_optimum(const Mesh& dt, uint32_t k, Objective o) {
 TEST_CASE("threshold SAT equals exhaustive enumeration (min-max, orders 2 to 5, ties included)") {
   int searched = 0;
   for (uint64_t seed = 1; seed <= 30; ++seed) {
-    std::vector<double> xyz;
-    switch (seed % 6) {
-      case 0: xyz = grid_points(seed % 4 ? 3 : 4, 4, seed, true); break;
-      case 1: xyz = uniform_points(10 + static_cast<int>(seed % 4), seed); break;
-      case 2: xyz = cocircular_points(10 + static_cast<int>(seed % 3), seed); break;
-      case 3: xyz = grid_points(3, 5, seed, true); break;
-      case 4: xyz = near_collinear_points(12, seed); break;
-      default: xyz = uniform_points(12, seed); break;
-    }
-    const Mesh dt = delaunay(validate_points(xyz).xyz);
+    const Mesh dt = delaunay(validate_points(fill_search_instance(seed)).xyz);
     for (uint32_t k = 2; k <= 5; ++k) {
       const KOrderStructure structure(dt, k, {});
-      for (Objective o : kMinmax) {
+      for (Objective o : kMinmaxObjectives) {
         const std::string id = info(o).id;
         CAPTURE(seed);
         CAPTURE(k);
         CAPTURE(id);
         REQUIRE(threshold_sat_applies(o, dt));
-        const double best = exhaustive_optimum(dt, k, o);
+        const double best = k_order_optimum(dt, k, o);
+        REQUIRE(!std::isnan(best));
         for (const double known : {double{INFINITY}, evaluate(o, dt), std::nextafter(best, double{INFINITY}), best}) {
           CAPTURE(known);
           const ThresholdSat s = threshold_sat(dt, o, structure.candidates, known, 10'000'000, UINT64_MAX);
