@@ -6,7 +6,10 @@
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
+#include <string>
 #include <vector>
+
+#include <doctest/doctest.h>
 
 #include "hodt/delaunay.hpp"
 #include "hodt/first_order.hpp"
@@ -124,6 +127,36 @@ inline std::vector<double> fill_search_instance(uint64_t seed) {
     case 4: return near_collinear_points(12, seed);
     default: return uniform_points(12, seed);
   }
+}
+
+// f(dt, k, structure, o, best, known) for the searches over every fill: 30
+// instances of fill_search_instance at orders 2 to 5, each min-max objective
+// with its enumerated optimum, from four values in hand: none at all (the best
+// improves all along), the Delaunay value, just above the optimum (only the
+// optimum is better) and the optimum itself (nothing is). Returns the calls.
+template <class F>
+int for_fill_search_cases(const F& f) {
+  int calls = 0;
+  for (uint64_t seed = 1; seed <= 30; ++seed) {
+    const Mesh dt = delaunay(validate_points(fill_search_instance(seed)).xyz);
+    for (uint32_t k = 2; k <= 5; ++k) {
+      const KOrderStructure structure(dt, k, {});
+      for (Objective o : kMinmaxObjectives) {
+        const std::string id = info(o).id;
+        CAPTURE(seed);
+        CAPTURE(k);
+        CAPTURE(id);
+        const double best = k_order_optimum(dt, k, o);
+        REQUIRE(!std::isnan(best));
+        for (const double known : {double{INFINITY}, evaluate(o, dt), std::nextafter(best, double{INFINITY}), best}) {
+          CAPTURE(known);
+          f(dt, k, structure, o, best, known);
+          ++calls;
+        }
+      }
+    }
+  }
+  return calls;
 }
 
 }  // namespace hodt::test

@@ -24,34 +24,18 @@ using namespace hodt::test;
 // descent), from the Delaunay value, from just above the optimum (only the
 // optimum is better) and from the optimum itself (nothing is).
 TEST_CASE("threshold SAT equals exhaustive enumeration (min-max, orders 2 to 5, ties included)") {
-  int searched = 0;
-  for (uint64_t seed = 1; seed <= 30; ++seed) {
-    const Mesh dt = delaunay(validate_points(fill_search_instance(seed)).xyz);
-    for (uint32_t k = 2; k <= 5; ++k) {
-      const KOrderStructure structure(dt, k, {});
-      for (Objective o : kMinmaxObjectives) {
-        const std::string id = info(o).id;
-        CAPTURE(seed);
-        CAPTURE(k);
-        CAPTURE(id);
-        REQUIRE(threshold_sat_applies(o, dt));
-        const double best = k_order_optimum(dt, k, o);
-        REQUIRE(!std::isnan(best));
-        for (const double known : {double{INFINITY}, evaluate(o, dt), std::nextafter(best, double{INFINITY}), best}) {
-          CAPTURE(known);
-          const ThresholdSat s = threshold_sat(dt, o, structure.candidates, known, 10'000'000, UINT64_MAX);
-          REQUIRE(s.complete);
-          CHECK(s.value == best);
-          REQUIRE(s.found.has_value() == (best < known));
-          if (s.found) {
-            CHECK(is_k_order(*s.found, dt, k));
-            CHECK(evaluate(o, *s.found) == s.value);
-          }
-          ++searched;
-        }
-      }
+  const int searched = for_fill_search_cases([](const Mesh& dt, uint32_t k, const KOrderStructure& structure,
+                                                  Objective o, double best, double known) {
+    REQUIRE(threshold_sat_applies(o, dt));
+    const ThresholdSat s = threshold_sat(dt, o, structure.candidates, known, 10'000'000, UINT64_MAX);
+    REQUIRE(s.complete);
+    CHECK(s.value == best);
+    REQUIRE(s.found.has_value() == (best < known));
+    if (s.found) {
+      CHECK(is_k_order(*s.found, dt, k));
+      CHECK(evaluate(o, *s.found) == s.value);
     }
-  }
+  });
   CHECK(searched == 30 * 4 * 7 * 4);
 }
 
