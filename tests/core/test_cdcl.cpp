@@ -261,6 +261,8 @@ TEST_CASE("cdcl: empty clause, duplicate literals, tautologies, no variables") {
     CHECK(s.solve(kNoLimit) == SatAnswer::Unsatisfiable);
     s.add_clause({Cdcl::lit(s.add_var(), true)});
     CHECK(s.solve(kNoLimit) == SatAnswer::Unsatisfiable);
+    s.add_clause({Cdcl::lit(5, true), Cdcl::lit(6, false)});  // (its variables exist, even now)
+    CHECK(s.num_vars() == 7);
   }
   {
     Cdcl s;

@@ -51,3 +51,34 @@ TEST_CASE("threshold SAT out of its conflicts or its work proves nothing") {
   CHECK(!w.complete);
   if (w.found) CHECK(is_k_order(*w.found, dt, 6));
 }
+
+// The work budget holds over every question: the clauses a question adds
+// propagate too, and the next question gets only what is left (a budget that
+// wrapped around would run it unbounded). So: budgets just above where each
+// question starts (found by bisection on how many questions a budget asks),
+// where the new clauses' propagation alone reaches the budget.
+TEST_CASE("threshold SAT keeps to its work budget across questions") {
+  const Mesh dt = delaunay(validate_points(uniform_points(300, 7)).xyz);
+  const KOrderStructure structure(dt, 5, {});
+  const auto search = [&](uint64_t max_work) {
+    return threshold_sat(dt, Objective::MinmaxTriangleArea, structure.candidates, INFINITY, UINT64_MAX, max_work);
+  };
+  const ThresholdSat whole = search(UINT64_MAX);
+  REQUIRE(whole.complete);
+  REQUIRE(whole.questions > 2);
+  uint64_t worst = 0;
+  for (uint32_t j = 2; j <= whole.questions; ++j) {
+    uint64_t lo = 1, hi = whole.work;  // the least budget with question j attempted
+    while (lo < hi) {
+      const uint64_t mid = lo + (hi - lo) / 2;
+      if (search(mid).questions >= j) hi = mid;
+      else lo = mid + 1;
+    }
+    for (uint64_t budget = lo > 16 ? lo - 16 : 1; budget <= lo + 16; ++budget) {
+      const ThresholdSat s = search(budget);
+      worst = std::max(worst, s.work > budget ? s.work - budget : 0);
+    }
+  }
+  MESSAGE("worst overrun " << worst << " of a whole search's " << whole.work);
+  CHECK(worst < whole.work / 32);
+}

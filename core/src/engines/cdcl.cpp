@@ -67,14 +67,14 @@ void Cdcl::assign(uint32_t l, uint32_t reason) {
 // unassigned literals to watch, or is a unit to assign, or empty.
 void Cdcl::add_clause(const uint32_t* lits, size_t n) {
   backtrack(0);
+  for (size_t i = 0; i < n; ++i)
+    while ((lits[i] >> 1) >= num_vars()) add_var();
   if (unsat_) return;
   if (propagate() != kNone) {
     unsat_ = true;
     return;
   }
   clause_buf_.assign(lits, lits + n);
-  for (uint32_t l : clause_buf_)
-    while ((l >> 1) >= num_vars()) add_var();
   std::sort(clause_buf_.begin(), clause_buf_.end());
   clause_buf_.erase(std::unique(clause_buf_.begin(), clause_buf_.end()), clause_buf_.end());
   size_t k = 0;

@@ -62,7 +62,9 @@ class Cdcl {
 
  private:
   // A reason or conflict: a long clause (its offset in the arena), a binary
-  // clause (kBinary | the other literal, false), or none.
+  // clause (kBinary | the other literal, false), or none. (kNone has the
+  // kBinary bit too: every test of that bit comes after a test for kNone.
+  // Offsets and literals stay below 2^31: an arena of 8 GiB.)
   static constexpr uint32_t kNone = UINT32_MAX;
   static constexpr uint32_t kBinary = 0x80000000u;
   // Long clause header in the arena: size, flags (learned, deleted, glue << 2),

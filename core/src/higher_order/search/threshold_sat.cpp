@@ -64,9 +64,11 @@ class Encoding {
     if (d_.site == TermSite::VertexPair) list_vertex_pairs();
     if (d_.site == TermSite::Triangle)
       for (uint32_t t = 0; t < tris_.size(); ++t) pending_tris_.push_back(t);
-    if (d_.site == TermSite::Vertex) at_vertex_.resize(dt.num_vertices());
-    for (uint32_t e = 0; e < edges_.size() && d_.site == TermSite::Vertex; ++e)
-      at_vertex_[edges_[e] >> 32].push_back(e), at_vertex_[static_cast<uint32_t>(edges_[e])].push_back(e);
+    if (d_.site == TermSite::Vertex) {
+      at_vertex_.resize(dt.num_vertices());
+      for (uint32_t e = 0; e < edges_.size(); ++e)
+        at_vertex_[edges_[e] >> 32].push_back(e), at_vertex_[static_cast<uint32_t>(edges_[e])].push_back(e);
+    }
   }
 
   bool valid() const { return valid_; }
@@ -270,6 +272,7 @@ ThresholdSat threshold_sat(const Mesh& dt, Objective o, const Candidates& cand, 
   if (start) enc.prefer(*start);
   while (enc.conflicts() < max_conflicts && enc.work() < max_work) {
     enc.tighten(std::nextafter(r.value, -INFINITY));
+    if (enc.work() >= max_work) break;  // (the new clauses' propagation spent it)
     ++r.questions;
     const SatAnswer a = enc.ask(max_conflicts - enc.conflicts(), max_work - enc.work());
     r.clauses = enc.clauses();
