@@ -72,6 +72,11 @@ struct KOrderRun {
   std::vector<std::pair<uint32_t, uint32_t>> useful;  // (moved into the structure)
   Regions skeleton;                                   // (moved into the engine)
   std::optional<KOrderStructure> structure;
+  // The structure (the useful edges moved into it), built by the first phase that needs it.
+  KOrderStructure& built_structure() {
+    if (!structure) structure.emplace(dt, k, std::move(useful), finding);
+    return *structure;
+  }
   std::unique_ptr<RegionEngine> engine;
   std::optional<KOrderResult> lower;  // the ladder's rung below
   uint32_t lower_order() const { return k <= budgets.rung_step_max_order ? k - 1 : k / 2; }

@@ -1,7 +1,6 @@
 #include "higher_order/phases/phase_table.hpp"
 
 #include <chrono>
-#include <cstdio>
 
 #include "hodt/error.hpp"
 #include "higher_order/phases/phases.hpp"

@@ -19,7 +19,7 @@ void solve_as_quads(KOrderRun& run);
 // the instance, within a node budget (branch_and_bound.hpp).
 void branch_and_bound_small(KOrderRun& run);
 // Min-max: "is any k-OD triangulation better than the answer?" as SAT, asked
-// until the answer is no (threshold_sat.hpp), within a conflict budget.
+// until the answer is no (threshold_sat.hpp), within budgets of conflicts and work.
 void refute_by_sat(KOrderRun& run);
 // The same on a larger input, where a gap is left, within its own work budget.
 void refute_gap_by_sat(KOrderRun& run);

@@ -14,8 +14,7 @@ void find_regions(KOrderRun& run) {
 }
 
 void build_engine(KOrderRun& run) {
-  if (!run.structure) run.structure.emplace(run.dt, run.k, std::move(run.useful), run.finding);
-  run.engine = std::make_unique<RegionEngine>(run.dt, run.o, *run.structure, std::move(run.skeleton), run.shared.region_limits,
+  run.engine = std::make_unique<RegionEngine>(run.dt, run.o, run.built_structure(), std::move(run.skeleton), run.shared.region_limits,
                                               run.finding, run.shared.memo);
   run.refused = run.engine->exact_refusal().value_or("");
   const StateGraph& graph = run.engine->model.graph;

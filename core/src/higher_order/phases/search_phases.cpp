@@ -59,10 +59,9 @@ void descend_fill_graphs(KOrderRun& run) {
 // From the first order optimum: its value is the first cut, and each better
 // fill found cuts deeper.
 void branch_and_bound_small(KOrderRun& run) {
-  if (!run.structure) run.structure.emplace(run.dt, run.k, std::move(run.useful), run.finding);
   const Mesh& start = run.shared.first_order.get();
   const double known = run.shared.first_order.value;
-  const BranchAndBound b = branch_and_bound(run.dt, run.o, run.structure->candidates, known,
+  const BranchAndBound b = branch_and_bound(run.dt, run.o, run.built_structure().candidates, known,
                                             run.budgets.branch_and_bound_nodes, run.budgets.branch_and_bound_memo_words,
                                             run.exactly);
   if (b.found) run.answer.offer(*b.found, b.value, "branch and bound over every fill");
@@ -78,12 +77,11 @@ namespace {
 // triangulation the solver finds lowers the threshold, and its "no" proves the
 // last one optimal. The solver's decisions start from the answer's triangles.
 void ask_sat(KOrderRun& run, uint64_t max_work) {
-  if (!run.structure) run.structure.emplace(run.dt, run.k, std::move(run.useful), run.finding);
   if (!run.answer.has()) {
     const Mesh& start = run.shared.first_order.get();  // (computes the value too)
     run.answer.offer(start, run.shared.first_order.value, "the first order optimum");
   }
-  const ThresholdSat s = threshold_sat(run.dt, run.o, run.structure->candidates, run.answer.value(),
+  const ThresholdSat s = threshold_sat(run.dt, run.o, run.built_structure().candidates, run.answer.value(),
                                        run.budgets.threshold_sat_conflicts, max_work, run.exactly,
                                        &run.answer.triangulation());
   if (s.found) run.answer.offer(*s.found, s.value, "the threshold SAT search");
