@@ -82,6 +82,38 @@ TEST_CASE("LF, CR LF and lone CR line endings, mixed too, count lines the same")
   CHECK(read_points("0 0 1\r1 0 2\r\n0 1 3\n", "mixed.txt").lines == std::vector<int>{1, 2, 3});
 }
 
+TEST_CASE("line ends found a word at a time: every ending at every offset in a word") {
+  // Lines of every length from 5 to 40 characters (numbers padded with blanks or
+  // zeros), each ending in LF, CR LF or CR, some blank or a comment, so that an
+  // ending falls at each of the eight places in a word and next to another.
+  const char* eols[3] = {"\n", "\r\n", "\r"};
+  std::string text;
+  std::vector<double> want;
+  std::vector<int> lines;
+  int line = 0;
+  for (int len = 5; len <= 40; ++len)
+    for (int k = 0; k < 3; ++k) {
+      ++line;
+      if ((len + k) % 7 == 0) {
+        text += std::string(static_cast<size_t>(len % 3), ' ') + (len % 2 ? "# note" : "") + eols[k];
+        continue;
+      }
+      const std::string x = std::to_string(line), body = x + " 0" + std::string(static_cast<size_t>(len), '0') + " 2";
+      text += body + std::string(static_cast<size_t>(len % 5), '\t') + eols[k];
+      want.insert(want.end(), {static_cast<double>(line), 0, 2});
+      lines.push_back(line);
+    }
+  const ParsedPoints p = read_points(text, "ends.txt");
+  CHECK(p.xyz == want);
+  CHECK(p.lines == lines);
+  // The last line without an ending, of each length.
+  for (int len = 1; len <= 17; ++len) {
+    CAPTURE(len);
+    const std::string last = "3 4 " + std::string(static_cast<size_t>(len), '5');
+    CHECK(read_points("1 2 3\r\n" + last, "end.txt").lines == std::vector<int>{1, 2});
+  }
+}
+
 TEST_CASE("long decimals are read correctly rounded") {
   // Exactly the double 0.06699443374662295, with zeros up to 36 characters.
   CHECK(xyz_of("0.0669944337466229500000000000000000 1 2\n1 0 0\n0 1 0\n")[0] == 0.06699443374662295);

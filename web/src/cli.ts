@@ -4,7 +4,7 @@
 // hodt/loaders) and to write --output files (the mesh formats with hodt/export's
 // writers), and stderr for progress. `hodt demo` serves the teaching demo.
 import { closeSync, openSync, readFileSync, writeFileSync, writeSync } from 'node:fs';
-import { exportMeshParts, type MeshData, type MeshFormat } from './export.js';
+import type { MeshData, MeshFormat } from './export.js';
 import { loadHodt } from './index.js';
 
 // The core puts an Error's Node code (ENOENT, ...) in the same words as the native CLI.
@@ -18,9 +18,15 @@ const attempt = (write: () => void): Error | undefined => {
   }
 };
 
+const args = process.argv.slice(2);
+// The mesh writers load only for a run that names an --output file (the core asks
+// for one synchronously, so they load before it runs).
+const exporters = args.includes('--output') ? await import('./export.js') : undefined;
+
 // Part by part: a large TIN as GeoJSON is longer than any JavaScript string.
 function writeMesh(path: string, format: MeshFormat, mesh: MeshData): void {
-  const parts = exportMeshParts(format, mesh); // checks the mesh before the file is made
+  if (!exporters) throw new Error('the mesh writers were not loaded: no --output was given');
+  const parts = exporters.exportMeshParts(format, mesh); // checks the mesh before the file is made
   const fd = openSync(path, 'w');
   try {
     for (const part of parts) {
@@ -32,7 +38,6 @@ function writeMesh(path: string, format: MeshFormat, mesh: MeshData): void {
   }
 }
 
-const args = process.argv.slice(2);
 // `hodt demo`: the teaching demo shipped in the package, served by Node alone.
 if (args[0] === 'demo') {
   const { DEMO_HELP, demoOptions, serveDemo } = await import('./demoServer.js');

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -90,27 +92,35 @@ std::vector<std::string_view> split_fields(std::string_view line, char delimiter
   return out;
 }
 
+// The first LF or CR in [i, end), or end: eight bytes per step. For a word w and
+// a byte c, (x - ones) & ~x & highs with x = w ^ (c * ones) sets the high bit of
+// every byte of w equal to c and may set more only above such a byte (a borrow
+// runs upwards), so its lowest set bit is exact.
+inline const char* find_line_end(const char* i, const char* end) {
+  if constexpr (std::endian::native == std::endian::little) {
+    constexpr uint64_t ones = 0x0101010101010101u, highs = 0x8080808080808080u;
+    for (; end - i >= 8; i += 8) {
+      uint64_t w;
+      std::memcpy(&w, i, 8);
+      const uint64_t lf = w ^ (ones * '\n'), cr = w ^ (ones * '\r');
+      const uint64_t hit = (((lf - ones) & ~lf) | ((cr - ones) & ~cr)) & highs;
+      if (hit) return i + std::countr_zero(hit) / 8;
+    }
+  }
+  while (i != end && *i != '\n' && *i != '\r') ++i;
+  return i;
+}
+
 // Lines end with LF (Unix), CR LF (Windows) or a lone CR (classic Mac, some exports).
 // `f` is called per line out of line (containers/out_of_line.hpp), so that V8
 // moves it to its optimising tier after the first lines.
 template <class F>
 void for_each_line(std::string_view text, F f) {
-  // Without a CR anywhere every line ends at the next LF, which memchr finds
-  // fastest; otherwise each character is tested for both.
   if (text.empty()) return f(1, text);
-  const bool cr = std::memchr(text.data(), '\r', text.size()) != nullptr;
-  const char* const begin = text.data();
-  const char* const end = begin + text.size();
+  const char* const end = text.data() + text.size();
   int line = 0;
-  for (const char* i = begin;;) {
-    const char* j;
-    if (!cr) {
-      j = static_cast<const char*>(std::memchr(i, '\n', static_cast<size_t>(end - i)));
-      if (!j) j = end;
-    } else {
-      j = i;
-      while (j != end && *j != '\n' && *j != '\r') ++j;
-    }
+  for (const char* i = text.data();;) {
+    const char* const j = find_line_end(i, end);
     out_of_line(f, ++line, std::string_view(i, static_cast<size_t>(j - i)));
     if (j == end) break;
     i = j + (*j == '\r' && j + 1 != end && j[1] == '\n' ? 2 : 1);
@@ -118,8 +128,9 @@ void for_each_line(std::string_view text, F f) {
 }
 
 bool blank_or_comment(std::string_view s) {
-  size_t k = s.find_first_not_of(" \t\r");
-  return k == std::string_view::npos || s[k] == '#';
+  for (const char c : s)
+    if (!blank(c)) return c == '#';
+  return true;
 }
 
 void check_finite(const Reader& r, int line, const char* axis, double v, std::string_view tok) {
@@ -180,7 +191,15 @@ std::optional<std::array<int, 3>> named_columns(const std::vector<std::string_vi
 // One coordinate: with the file's decimal mark, decided by the first number that
 // has one (a ',' in a field of a ',' file was quoted: a decimal comma too).
 double text_number(const Reader& r, TextLayout& layout, int line, const char* axis, std::string_view tok) {
-  const bool comma = tok.find(',') != std::string_view::npos, point = tok.find('.') != std::string_view::npos;
+  // The first ',' and whether a '.' appears, in one pass (a token is short: a
+  // loop costs less than a call of memchr per character sought).
+  size_t c = std::string_view::npos;
+  bool point = false;
+  for (size_t k = 0; k < tok.size(); ++k) {
+    if (tok[k] == ',' && c == std::string_view::npos) c = k;
+    point |= tok[k] == '.';
+  }
+  const bool comma = c != std::string_view::npos;
   char mark = layout.decimal_mark ? layout.decimal_mark : '.';
   if (comma != point) {
     mark = comma ? ',' : '.';
@@ -193,7 +212,6 @@ double text_number(const Reader& r, TextLayout& layout, int line, const char* ax
   }
   double v;
   // A decimal comma sits between digits: "1," or ",5" next to a blank is a delimiter misplaced.
-  const size_t c = tok.find(',');
   const bool digits_around =
       !comma || (c > 0 && c + 1 < tok.size() && std::isdigit(static_cast<unsigned char>(tok[c - 1])) &&
                  std::isdigit(static_cast<unsigned char>(tok[c + 1])));

@@ -6,6 +6,7 @@
 
 #include "hodt/domain.hpp"
 #include "hodt/predicates.hpp"
+#include "containers/out_of_line.hpp"
 #include "containers/recent_values.hpp"
 #include "geometry/kernel.hpp"
 #include "geometry/portable_math.hpp"
@@ -156,17 +157,17 @@ Stars build_stars(const Mesh& m, const Progress& progress) {
   s.neighbor.reserve(m.triangles.size() + m.hull.size());
   s.triangle.reserve(m.triangles.size());
   WorkCounter work;
-  for (uint32_t v = 0; v < n; ++v) {
+  for_each_index(n, [&](uint32_t v) {  // (in chunks: see out_of_line.hpp)
     if (work.tick(64)) report(progress, v, n);
     s.offset[v] = static_cast<uint32_t>(s.neighbor.size());
     s.tri_offset[v] = static_cast<uint32_t>(s.triangle.size());
-    if (start[v] < 0) continue;
+    if (start[v] < 0) return;
     s.on_hull[v] = m.halfedges[static_cast<uint32_t>(start[v])] < 0;
     walk_star(m, static_cast<uint32_t>(start[v]), [&](uint32_t w, uint32_t t) {
       s.neighbor.push_back(w);
       if (t != UINT32_MAX) s.triangle.push_back(t);
     });
-  }
+  });
   s.offset[n] = static_cast<uint32_t>(s.neighbor.size());
   s.tri_offset[n] = static_cast<uint32_t>(s.triangle.size());
   return s;
