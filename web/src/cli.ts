@@ -5,7 +5,20 @@
 // writers), and stderr for progress. `hodt demo` serves the teaching demo.
 import { closeSync, openSync, readFileSync, writeFileSync, writeSync } from 'node:fs';
 import type { MeshData, MeshFormat } from './export.js';
-import { loadHodt } from './index.js';
+
+const args = process.argv.slice(2);
+
+// hodt.wasm compiles in V8's background threads while Node loads the library's
+// modules (imported below, not at the top, so that they load after this starts).
+// A file that cannot be read or compiled is left to loadHodt, which says why.
+function compileWasm(): Promise<WebAssembly.Module | undefined> {
+  try {
+    return WebAssembly.compile(readFileSync(new URL('./wasm/hodt.wasm', import.meta.url))).catch(() => undefined);
+  } catch {
+    return Promise.resolve(undefined);
+  }
+}
+const compiling = args[0] === 'demo' ? undefined : compileWasm();
 
 // The core puts an Error's Node code (ENOENT, ...) in the same words as the native CLI.
 const failure = (e: unknown): Error => (e instanceof Error ? e : new Error(String(e)));
@@ -18,7 +31,6 @@ const attempt = (write: () => void): Error | undefined => {
   }
 };
 
-const args = process.argv.slice(2);
 // The mesh writers load only for a run that names an --output file (the core asks
 // for one synchronously, so they load before it runs).
 const exporters = args.includes('--output') ? await import('./export.js') : undefined;
@@ -59,7 +71,13 @@ if (args[0] === 'demo') {
     process.exit(1);
   }
 }
-const hodt = await loadHodt();
+const { loadHodt } = await import('./index.js');
+const wasmModule = await compiling;
+const hodt = await loadHodt(wasmModule ? { wasmModule } : {}).catch((e: unknown) => {
+  // (an install without its wasm: one line, not a stack)
+  process.stderr.write(`hodt: ${failure(e).message}\n`);
+  process.exit(1);
+});
 const read = (path: string): Uint8Array | Error => {
   try {
     return readFileSync(path === '-' ? 0 : path); // bytes: the core decodes text itself
