@@ -28,10 +28,14 @@ struct Reader {
   }
   // The same with the message made by `message()`, out of line: the checks on
   // every number and line then stay small (the wasm build's baseline code runs
-  // a function until its optimising compile, whose time grows with its size, is done).
+  // a function until its optimising compile, whose time grows with its size, is
+  // done). Through out_of_line, since Binaryen inlines a function called from
+  // one place whatever its attributes.
   template <class Message>
   [[noreturn, gnu::noinline, gnu::cold]] void fail_with(int line, Message message) const {
-    fail(line, message());
+    const auto raise = [](const Reader& r, int at, Message& m) { r.fail(at, m()); };
+    out_of_line(raise, *this, line, message);
+    __builtin_unreachable();
   }
 };
 
@@ -236,25 +240,31 @@ ParsedPoints read_text(std::string_view text, const Reader& r) {
   bool first = true;
   size_t want = 3;
   std::vector<std::string_view> fields;
+  // The first line read decides the layout; true if it is a header (out of line
+  // below: it runs once, and inlined it would make the function every line runs
+  // larger).
+  const auto header_line = [&](int line, std::string_view s) {
+    // A header: its first field is not a number (whatever the delimiter and decimal mark).
+    double v0;
+    const std::string_view s0 = trim_blanks(s);
+    const size_t close = s0.substr(0, 1) == "\"" ? s0.find('"', 1) : std::string_view::npos;
+    const std::string_view f0 = close != std::string_view::npos ? s0.substr(1, close - 1) : s0.substr(0, s0.find_first_of(",; \t"));
+    const bool header = !parse_double(f0, v0) && !parse_double(f0, v0, ',');
+    layout.choose(s, line, header);
+    if (header) {
+      named = named_columns(split_fields(s, layout.delimiter));
+      if (named) {
+        cols = *named;
+        want = static_cast<size_t>(*std::max_element(cols.begin(), cols.end())) + 1;
+      }
+    }
+    return header;
+  };
   for_each_line(text, [&](int line, std::string_view s) {
     if (blank_or_comment(s)) return;
     if (first) {
       first = false;
-      // A header: its first field is not a number (whatever the delimiter and decimal mark).
-      double v0;
-      const std::string_view s0 = trim_blanks(s);
-      const size_t close = s0.substr(0, 1) == "\"" ? s0.find('"', 1) : std::string_view::npos;
-      const std::string_view f0 = close != std::string_view::npos ? s0.substr(1, close - 1) : s0.substr(0, s0.find_first_of(",; \t"));
-      const bool header = !parse_double(f0, v0) && !parse_double(f0, v0, ',');
-      layout.choose(s, line, header);
-      if (header) {
-        named = named_columns(split_fields(s, layout.delimiter));
-        if (named) {
-          cols = *named;
-          want = static_cast<size_t>(*std::max_element(cols.begin(), cols.end())) + 1;
-        }
-        return;
-      }
+      if (out_of_line(header_line, line, s)) return;
     }
     split_fields(s, layout.delimiter, fields);
     if (fields.size() < want) r.fail_with(line, [&] {
